@@ -1,0 +1,78 @@
+// Mutations (ShapeGenetics §5): grow, cut and alter, each two sweeps over the chromosome at most.
+#include "genome/operators.hpp"
+
+namespace shapevo {
+
+bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits) {
+    if (c.empty()) {
+        if (g.mandatoryGenes[g.start] > limits.maxGenes) return false;
+        plantRoot(g, c, rng);
+        return true;
+    }
+    // Sweep 1: total weight of every non-expressed child position.
+    double total = 0;
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords())
+        for (const Slot& s : g.rules[c.rule(pos)].slots)
+            for (std::uint32_t k = 0; k < s.maxCount; ++k)
+                if (c.child(pos, s.firstChild + k) == kNotExpressed) total += s.probability;
+    if (total <= 0) return false;
+    // Sweep 2: find the chosen one.
+    double r = rng.uniform() * total;
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) {
+        for (const Slot& s : g.rules[c.rule(pos)].slots) {
+            for (std::uint32_t k = 0; k < s.maxCount; ++k) {
+                if (c.child(pos, s.firstChild + k) != kNotExpressed || s.probability <= 0) continue;
+                r -= s.probability;
+                if (r >= 0) continue;
+                const std::uint16_t rule = pickAlternative(s, rng);
+                if (c.genes + g.mandatoryGenes[rule] > limits.maxGenes) return false;
+                const std::uint32_t added = appendGene(g, c, rule, pos, s.firstChild + k, rng);
+                completeMandatory(g, c, added, rng);
+                return true;
+            }
+        }
+    }
+    return false;  // only reachable through rounding at the very end of the range
+}
+
+bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {
+    double total = 0;
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords())
+        for (const Slot& s : g.rules[c.rule(pos)].slots)
+            for (std::uint32_t k = 0; k < s.maxCount; ++k)
+                if (c.child(pos, s.firstChild + k) > 0) total += 1.0 - s.probability;
+    if (total <= 0) return false;
+    double r = rng.uniform() * total;
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) {
+        for (const Slot& s : g.rules[c.rule(pos)].slots) {
+            if (s.mandatory()) continue;
+            for (std::uint32_t k = 0; k < s.maxCount; ++k) {
+                const std::int32_t off = c.child(pos, s.firstChild + k);
+                if (off <= 0) continue;
+                r -= 1.0 - s.probability;
+                if (r >= 0) continue;
+                removeSubtree(g, c, pos + std::uint32_t(off), 0, scratch);
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+bool alter(const Grammar& g, Chromosome& c, Rng& rng) {
+    std::uint32_t candidates = 0;
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords())
+        if (g.rules[c.rule(pos)].paramFloats > 0) ++candidates;
+    if (candidates == 0) return false;
+    std::uint32_t pick = rng.below(candidates);
+    for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) {
+        if (g.rules[c.rule(pos)].paramFloats == 0) continue;
+        if (pick-- == 0) {
+            drawParams(g, c, pos, rng);
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace shapevo

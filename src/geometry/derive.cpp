@@ -1,0 +1,86 @@
+// derive: an explicit stack over (gene, statement, scope); `child` pushes the expressed children
+// with the current scope, `mirror` pushes the rest of the rule again with one axis flipped.
+#include "geometry/derive.hpp"
+
+#include <cmath>
+
+#include "grammar/expression.hpp"
+
+namespace shapevo {
+
+namespace {
+glm::mat3 axisRotation(int axis, float degrees) {
+    const float r = degrees * float(M_PI / 180.0), c = std::cos(r), s = std::sin(r);
+    switch (axis) {
+    case 0: return glm::mat3(1, 0, 0, 0, c, s, 0, -s, c);
+    case 1: return glm::mat3(c, 0, -s, 0, 1, 0, s, 0, c);
+    default: return glm::mat3(c, s, 0, -s, c, 0, 0, 0, 1);
+    }
+}
+}  // namespace
+
+bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
+    out.clear();
+    if (c.empty()) return true;
+    auto& stack = scratch.stack;
+    stack.clear();
+    scratch.params.resize(256);
+    float* params = scratch.params.data();
+    float evalStack[kMaxExpressionStack];
+    bool complete = true;
+    stack.push_back({0, 0, Scope{}, Scope{}});
+    while (!stack.empty()) {
+        const DeriveScratch::Task task = stack.back();
+        stack.pop_back();
+        const Rule& r = g.rules[c.rule(task.gene)];
+        for (std::uint32_t i = 0; i < r.paramFloats; ++i) params[i] = c.param(task.gene, r, i);
+        Scope s = task.scope;
+        const float* parentSize = &task.parent.size.x;
+        auto eval = [&](ExprRef e) { return evaluate(g, e, params, &s.size.x, parentSize, evalStack); };
+        for (std::uint32_t i = task.statement; i < r.statements.size(); ++i) {
+            const Statement& st = r.statements[i];
+            switch (st.kind) {
+            case StatementKind::Scale: {
+                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
+                s.size *= v;
+                break;
+            }
+            case StatementKind::Size: {
+                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
+                s.size = v;
+                break;
+            }
+            case StatementKind::Translate: {
+                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
+                s.origin += s.axes * v;
+                break;
+            }
+            case StatementKind::Rotate: s.axes = s.axes * axisRotation(st.axis, eval(st.expr[0])); break;
+            case StatementKind::Mirror: {
+                DeriveScratch::Task mirrored{task.gene, i + 1, s, task.parent};
+                mirrored.scope.axes[st.axis] = -mirrored.scope.axes[st.axis];
+                stack.push_back(mirrored);
+                break;
+            }
+            case StatementKind::Box:
+                if (out.primitives.size() >= maxPrimitives) {
+                    complete = false;
+                } else {
+                    out.primitives.push_back({PrimitiveKind::Box, s.origin, s.axes, glm::abs(s.size) * 0.5f});
+                }
+                break;
+            case StatementKind::Child: {
+                const Slot& slot = r.slots[st.slot];
+                for (std::uint32_t k = slot.maxCount; k-- > 0;) {
+                    const std::int32_t off = c.child(task.gene, slot.firstChild + k);
+                    if (off > 0) stack.push_back({task.gene + std::uint32_t(off), 0, s, s});
+                }
+                break;
+            }
+            }
+        }
+    }
+    return complete;
+}
+
+}  // namespace shapevo

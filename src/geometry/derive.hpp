@@ -1,0 +1,35 @@
+// derive: run the grammar's statements along a chromosome's derivation tree and collect the
+// primitives. Pure and deterministic: the same chromosome always gives the same geometry.
+#pragma once
+#include <vector>
+
+#include "genome/chromosome.hpp"
+#include "geometry/primitive.hpp"
+
+namespace shapevo {
+
+/// A scope: the oriented frame statements act on (CGA style), centred on `origin`.
+struct Scope {
+    glm::vec3 origin{0.0f};
+    glm::mat3 axes{1.0f};
+    glm::vec3 size{1.0f};
+};
+
+/// Reusable work space for derive (no allocation once warm).
+struct DeriveScratch {
+    struct Task {
+        std::uint32_t gene;
+        std::uint32_t statement;  ///< first statement to run
+        Scope scope;              ///< current scope when the task starts
+        Scope parent;             ///< scope the gene received from its parent
+    };
+    std::vector<Task> stack;
+    std::vector<float> params;
+};
+
+/// Derive `c` into `out` (cleared first). Models with more than `maxPrimitives` primitives are
+/// truncated to that many (mirrors can multiply a subtree); returns false if that happened.
+bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch,
+            std::size_t maxPrimitives = 1u << 20);
+
+}  // namespace shapevo

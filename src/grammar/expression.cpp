@@ -1,0 +1,295 @@
+// Expression compiler and evaluator: text -> typed tree -> per-component stack programs.
+#include "grammar/expression.hpp"
+
+#include <cmath>
+
+namespace shapevo {
+
+namespace {
+struct Function {
+    const char* name;
+    char id;
+    int arity;
+    OpCode op;
+};
+constexpr Function kFunctions[] = {
+    {"min", 'm', 2, OpCode::Min}, {"max", 'M', 2, OpCode::Max},   {"abs", 'a', 1, OpCode::Abs},
+    {"sin", 's', 1, OpCode::Sin}, {"cos", 'c', 1, OpCode::Cos},   {"sqrt", 'q', 1, OpCode::Sqrt},
+    {"floor", 'f', 1, OpCode::Floor},
+};
+const Function* findFunction(const std::string& name) {
+    for (const auto& f : kFunctions)
+        if (name == f.name) return &f;
+    return nullptr;
+}
+const Function* functionById(char id) {
+    for (const auto& f : kFunctions)
+        if (f.id == id) return &f;
+    return nullptr;
+}
+int axisOf(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1; }
+}  // namespace
+
+bool isReservedName(const std::string& name) {
+    return name == "scope" || name == "parent" || name == "pi" || findFunction(name) != nullptr;
+}
+
+int ExpressionCompiler::add(Node n) {
+    if (int(nodes_.size()) >= kMaxExpressionNodes)
+        tokens_.fail(start_, "expression is too long (more than " + std::to_string(kMaxExpressionNodes) +
+                                 " numbers, names and operators)");
+    nodes_.push_back(n);
+    return int(nodes_.size()) - 1;
+}
+
+void ExpressionCompiler::enter(const SourceLocation& at) {
+    if (++depth_ > kMaxExpressionNesting)
+        tokens_.fail(at, "expression is nested too deeply (more than " + std::to_string(kMaxExpressionNesting) +
+                             " levels of parentheses, function calls or unary minus)");
+}
+
+void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::vector<Instr>& code, ExprRef out[3],
+                                 int& maxStack) {
+    ctx_ = &ctx;
+    nodes_.clear();
+    depth_ = 0;
+    const SourceLocation at = tokens_.peek().where;
+    start_ = at;
+    const int root = parseSum();
+    if (nodes_[root].dims == 3 && dims == 1)
+        tokens_.fail(at, "expected a scalar expression here, but this expression is a 3-vector (use .x, .y or .z)");
+    for (int c = 0; c < dims; ++c) {
+        out[c].begin = std::uint32_t(code.size());
+        emit(root, c, code);
+        out[c].end = std::uint32_t(code.size());
+        int depth = 0, deepest = 0;
+        for (std::uint32_t i = out[c].begin; i < out[c].end; ++i) {
+            switch (code[i].op) {
+            case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
+            case OpCode::Add: case OpCode::Sub: case OpCode::Mul: case OpCode::Div: case OpCode::Min: case OpCode::Max:
+                --depth;
+                break;
+            default: break;
+            }
+            deepest = std::max(deepest, depth);
+        }
+        if (deepest > kMaxExpressionStack)
+            tokens_.fail(at, "expression is too deeply nested (needs a stack of " + std::to_string(deepest) +
+                                 ", the limit is " + std::to_string(kMaxExpressionStack) + ")");
+        maxStack = std::max(maxStack, deepest);
+    }
+}
+
+int ExpressionCompiler::parseSum() {
+    int left = parseProduct();
+    while (tokens_.peek().is('+') || tokens_.peek().is('-')) {
+        Token op = tokens_.take();
+        int right = parseProduct();
+        Node n{Node::Binary};
+        n.op = op.text[0];
+        n.child[0] = left;
+        n.child[1] = right;
+        n.dims = std::max(nodes_[left].dims, nodes_[right].dims);
+        n.where = op.where;
+        left = add(n);
+    }
+    return left;
+}
+
+int ExpressionCompiler::parseProduct() {
+    int left = parseUnary();
+    while (tokens_.peek().is('*') || tokens_.peek().is('/')) {
+        Token op = tokens_.take();
+        int right = parseUnary();
+        Node n{Node::Binary};
+        n.op = op.text[0];
+        n.child[0] = left;
+        n.child[1] = right;
+        n.dims = std::max(nodes_[left].dims, nodes_[right].dims);
+        n.where = op.where;
+        left = add(n);
+    }
+    return left;
+}
+
+int ExpressionCompiler::parseUnary() {
+    if (tokens_.peek().is('-')) {
+        Token op = tokens_.take();
+        enter(op.where);
+        int inner = parseUnary();
+        --depth_;
+        Node n{Node::Negate};
+        n.child[0] = inner;
+        n.dims = nodes_[inner].dims;
+        n.where = op.where;
+        return add(n);
+    }
+    return parsePostfix();
+}
+
+int ExpressionCompiler::parsePostfix() {
+    int node = parsePrimary();
+    while (tokens_.peek().is('.')) {
+        tokens_.take();
+        const SourceLocation at = tokens_.peek().where;
+        const std::string comp = tokens_.expectIdentifier("a component x, y or z after '.'");
+        const int axis = axisOf(comp);
+        if (axis < 0) tokens_.fail(at, "expected a component x, y or z after '.', found '" + comp + "'");
+        if (nodes_[node].dims != 3) tokens_.fail(at, "'." + comp + "' applies to a 3-vector, but this is a scalar");
+        Node n{Node::Swizzle};
+        n.first = axis;
+        n.child[0] = node;
+        n.where = at;
+        node = add(n);
+    }
+    return node;
+}
+
+int ExpressionCompiler::parsePrimary() {
+    const Token& t = tokens_.peek();
+    if (t.kind == TokenKind::Number) {
+        Node n{Node::Number};
+        n.value = float(t.number);
+        n.where = t.where;
+        tokens_.take();
+        return add(n);
+    }
+    if (t.is('(')) {
+        const SourceLocation at = tokens_.take().where;
+        enter(at);
+        int first = parseSum();
+        if (tokens_.peek().is(',')) {
+            Node v{Node::Vector};
+            v.dims = 3;
+            v.where = at;
+            v.child[0] = first;
+            for (int c = 1; c < 3; ++c) {
+                tokens_.expect(',', "between the components of a vector (x, y, z)");
+                v.child[c] = parseSum();
+            }
+            for (int c = 0; c < 3; ++c)
+                if (nodes_[v.child[c]].dims != 1)
+                    tokens_.fail(nodes_[v.child[c]].where, "a vector component must be a scalar");
+            tokens_.expect(')', "to close the vector");
+            --depth_;
+            return add(v);
+        }
+        tokens_.expect(')', "to close the parenthesis");
+        --depth_;
+        return first;
+    }
+    if (t.kind == TokenKind::Identifier) {
+        Token id = tokens_.take();
+        return parseIdentifier(id);
+    }
+    tokens_.expected("an expression (a number, a parameter, scope.size, parent.size, a function or '(')");
+}
+
+int ExpressionCompiler::parseIdentifier(const Token& t) {
+    if (const Function* f = findFunction(t.text)) {
+        enter(t.where);
+        tokens_.expect('(', "after function " + t.text);
+        Node n{Node::Call};
+        n.op = f->id;
+        n.where = t.where;
+        for (int a = 0; a < f->arity; ++a) {
+            if (a > 0) tokens_.expect(',', "between the arguments of " + t.text);
+            n.child[a] = parseSum();
+            n.dims = std::max(n.dims, nodes_[n.child[a]].dims);
+        }
+        tokens_.expect(')', "after the " + std::to_string(f->arity) + " argument(s) of " + t.text);
+        --depth_;
+        return add(n);
+    }
+    if (t.text == "scope" || t.text == "parent") {
+        tokens_.expect('.', "after '" + t.text + "' (only " + t.text + ".size is available)");
+        const SourceLocation at = tokens_.peek().where;
+        const std::string field = tokens_.expectIdentifier("'size' after '" + t.text + ".'");
+        if (field != "size") tokens_.fail(at, "expected 'size' after '" + t.text + ".', found '" + field + "'");
+        Node n{t.text == "scope" ? Node::ScopeSize : Node::ParentSize};
+        n.dims = 3;
+        n.where = t.where;
+        return add(n);
+    }
+    if (t.text == "pi") {
+        Node n{Node::Number};
+        n.value = float(M_PI);
+        n.where = t.where;
+        return add(n);
+    }
+    for (const Param& p : *ctx_->params) {
+        if (p.name == t.text) {
+            Node n{Node::ParamRef};
+            n.first = p.first;
+            n.dims = p.dims;
+            n.where = t.where;
+            return add(n);
+        }
+    }
+    if (auto it = ctx_->attrs->find(t.text); it != ctx_->attrs->end()) {
+        Node n{Node::Number};
+        n.value = float(it->second);
+        n.where = t.where;
+        return add(n);
+    }
+    tokens_.fail(t.where, "unknown name '" + t.text +
+                              "': expected a parameter declared above in this rule, an attr, scope.size, "
+                              "parent.size, pi, or a function (min max abs sin cos sqrt floor)");
+}
+
+void ExpressionCompiler::emit(int index, int c, std::vector<Instr>& code) const {
+    const Node& n = nodes_[index];
+    const int comp = n.dims == 3 ? c : 0;
+    switch (n.kind) {
+    case Node::Number: code.push_back({OpCode::Const, 0, 0, n.value}); break;
+    case Node::ParamRef: code.push_back({OpCode::Param, 0, std::uint16_t(n.first + comp), 0}); break;
+    case Node::ScopeSize: code.push_back({OpCode::ScopeSize, std::uint8_t(comp), 0, 0}); break;
+    case Node::ParentSize: code.push_back({OpCode::ParentSize, std::uint8_t(comp), 0, 0}); break;
+    case Node::Vector: emit(n.child[comp], 0, code); break;
+    case Node::Swizzle: emit(n.child[0], n.first, code); break;
+    case Node::Negate:
+        emit(n.child[0], comp, code);
+        code.push_back({OpCode::Neg});
+        break;
+    case Node::Binary:
+        emit(n.child[0], comp, code);
+        emit(n.child[1], comp, code);
+        code.push_back({n.op == '+' ? OpCode::Add : n.op == '-' ? OpCode::Sub : n.op == '*' ? OpCode::Mul : OpCode::Div});
+        break;
+    case Node::Call: {
+        const Function* f = functionById(n.op);
+        for (int a = 0; a < f->arity; ++a) emit(n.child[a], comp, code);
+        code.push_back({f->op});
+        break;
+    }
+    }
+}
+
+float evaluate(const Grammar& g, ExprRef e, const float* params, const float* scopeSize, const float* parentSize,
+               float* stack) {
+    int top = -1;
+    for (std::uint32_t i = e.begin; i < e.end; ++i) {
+        const Instr& in = g.code[i];
+        switch (in.op) {
+        case OpCode::Const: stack[++top] = in.value; break;
+        case OpCode::Param: stack[++top] = params[in.index]; break;
+        case OpCode::ScopeSize: stack[++top] = scopeSize[in.component]; break;
+        case OpCode::ParentSize: stack[++top] = parentSize[in.component]; break;
+        case OpCode::Add: stack[top - 1] += stack[top]; --top; break;
+        case OpCode::Sub: stack[top - 1] -= stack[top]; --top; break;
+        case OpCode::Mul: stack[top - 1] *= stack[top]; --top; break;
+        case OpCode::Div: stack[top - 1] /= stack[top]; --top; break;
+        case OpCode::Min: stack[top - 1] = std::min(stack[top - 1], stack[top]); --top; break;
+        case OpCode::Max: stack[top - 1] = std::max(stack[top - 1], stack[top]); --top; break;
+        case OpCode::Neg: stack[top] = -stack[top]; break;
+        case OpCode::Abs: stack[top] = std::fabs(stack[top]); break;
+        case OpCode::Sin: stack[top] = std::sin(stack[top]); break;
+        case OpCode::Cos: stack[top] = std::cos(stack[top]); break;
+        case OpCode::Sqrt: stack[top] = std::sqrt(stack[top]); break;
+        case OpCode::Floor: stack[top] = std::floor(stack[top]); break;
+        }
+    }
+    return stack[0];
+}
+
+}  // namespace shapevo

@@ -1,0 +1,73 @@
+// Expression compiler: parses an arithmetic expression over parameters, attrs and the scope,
+// type-checks it (scalar or 3-vector) and emits one stack program per component.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "grammar/grammar.hpp"
+#include "grammar/lexer.hpp"
+
+namespace shapevo {
+
+/// What an expression may refer to besides numbers and the scope.
+struct ExpressionContext {
+    const std::vector<Param>* params = nullptr;            ///< the current rule's parameters
+    const std::map<std::string, double>* attrs = nullptr;  ///< grammar-wide constants
+};
+
+/// Largest evaluation stack an expression may need; deeper expressions are a located error.
+inline constexpr int kMaxExpressionStack = 32;
+/// Deepest nesting of parentheses, function calls and unary minus the parser accepts (bounds
+/// its recursion, so hostile input cannot overflow the C++ stack).
+inline constexpr int kMaxExpressionNesting = 64;
+/// Most nodes (numbers, names, operators, calls) one expression may have.
+inline constexpr int kMaxExpressionNodes = 4096;
+
+/// True for names an expression gives a meaning of its own (scope, parent, pi and the
+/// functions), which therefore cannot name a parameter or an attr.
+bool isReservedName(const std::string& name);
+
+class ExpressionCompiler {
+public:
+    explicit ExpressionCompiler(TokenStream& tokens) : tokens_(tokens) {}
+
+    /// Parse one expression and append its program(s) to `code`. `dims` is 1 or 3; a scalar
+    /// expression is broadcast where 3 components are wanted, a vector where 1 is wanted is an error.
+    void compile(const ExpressionContext& ctx, int dims, std::vector<Instr>& code, ExprRef out[3], int& maxStack);
+
+private:
+    struct Node {
+        enum Kind { Number, ParamRef, ScopeSize, ParentSize, Vector, Negate, Binary, Call, Swizzle } kind;
+        explicit Node(Kind k) : kind(k) {}
+        int dims = 1;
+        float value = 0;
+        int first = 0;  ///< ParamRef: first float; Swizzle: component
+        char op = 0;    ///< Binary: + - * / ; Call: function letter
+        int child[3] = {-1, -1, -1};
+        SourceLocation where;
+    };
+    int parseSum();
+    int parseProduct();
+    int parseUnary();
+    int parsePostfix();
+    int parsePrimary();
+    int parseIdentifier(const Token& t);
+    int add(Node n);
+    /// Enter one nesting level at `at` (fails beyond kMaxExpressionNesting); leave with --depth_.
+    void enter(const SourceLocation& at);
+    void emit(int node, int component, std::vector<Instr>& code) const;
+
+    TokenStream& tokens_;
+    const ExpressionContext* ctx_ = nullptr;
+    std::vector<Node> nodes_;
+    int depth_ = 0;
+    SourceLocation start_;
+};
+
+/// Evaluate a compiled scalar expression. `params` is the gene's parameter block; `stack` must
+/// hold kMaxExpressionStack floats.
+float evaluate(const Grammar& g, ExprRef e, const float* params, const float* scopeSize, const float* parentSize,
+               float* stack);
+
+}  // namespace shapevo

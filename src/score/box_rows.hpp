@@ -1,0 +1,114 @@
+// BoxFrame: an oriented box in double precision, the voxel-centre inside test that defines
+// "covered", and the exact per-row x-interval of covered voxel centres.
+//
+// Exactness: along a row (fixed y, z) slab k's test is |a*(x - cx) + b| <= h with b fixed, and
+// x_i = origin + (i + 0.5) * voxel. Every step is a monotone floating-point function of i, so
+// the covered indices form one interval per slab; the closed-form bounds are used where they are
+// provably far from an integer, and the test itself decides the rest. So the interval always
+// equals what the brute-force test gives voxel by voxel, bit for bit.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "geometry/primitive.hpp"
+#include "score/volume_target.hpp"
+
+namespace shapevo {
+
+struct BoxFrame {
+    double c[3];
+    double a[3][3];  ///< a[k] = unit axis k
+    double h[3];
+
+    static BoxFrame from(const Primitive& p) {
+        BoxFrame b{};
+        for (int j = 0; j < 3; ++j) {
+            b.c[j] = p.centre[j];
+            b.h[j] = p.half[j];
+            for (int k = 0; k < 3; ++k) b.a[j][k] = p.axes[j][k];
+        }
+        return b;
+    }
+    /// The y/z part of slab k's signed distance (the same expression the full test uses).
+    double rowTerm(int k, double y, double z) const { return a[k][1] * (y - c[1]) + a[k][2] * (z - c[2]); }
+    bool inSlab(int k, double x, double rowTermK) const { return std::fabs(a[k][0] * (x - c[0]) + rowTermK) <= h[k]; }
+    /// The voxel-centre test: is point (x, y, z) inside the closed box?
+    bool contains(double x, double y, double z) const {
+        for (int k = 0; k < 3; ++k)
+            if (!inSlab(k, x, rowTerm(k, y, z))) return false;
+        return true;
+    }
+    /// World-space half extent of the box's bounding box along axis j.
+    double reach(int j) const {
+        return std::fabs(a[0][j]) * h[0] + std::fabs(a[1][j]) * h[1] + std::fabs(a[2][j]) * h[2];
+    }
+    bool finite() const {
+        for (int j = 0; j < 3; ++j) {
+            if (!std::isfinite(c[j]) || !std::isfinite(h[j])) return false;
+            for (int k = 0; k < 3; ++k)
+                if (!std::isfinite(a[j][k])) return false;
+        }
+        return true;
+    }
+};
+
+/// Indices i in [lo, hi] of one row whose centres pass slab k; returns false if none.
+/// Only i in [first, last] are considered.
+inline bool slabInterval(const BoxFrame& b, int k, double rowTermK, const GridSpec& grid, long first, long last,
+                         long& lo, long& hi) {
+    const double a = b.a[k][0];
+    auto test = [&](long i) { return b.inSlab(k, grid.centre(0, i), rowTermK); };
+    if (a == 0.0) {  // the test does not depend on x at all (0 * finite + t == t exactly)
+        if (!(std::fabs(rowTermK) <= b.h[k])) return false;
+        lo = first;
+        hi = last;
+        return true;
+    }
+    constexpr double kReliableSlope = 1e-3, kMargin = 1e-4;
+    if (std::fabs(a) >= kReliableSlope) {
+        const double base = (b.c[0] - grid.origin[0]) / grid.voxelSize - 0.5;
+        const double t1 = base + (-b.h[k] - rowTermK) / a / grid.voxelSize;
+        const double t2 = base + (b.h[k] - rowTermK) / a / grid.voxelSize;
+        const double tl = std::min(t1, t2), th = std::max(t1, t2);
+        if (!(th >= double(first) - 1.0 && tl <= double(last) + 1.0)) return false;
+        lo = std::max(first, long(std::ceil(std::max(tl, double(first) - 1.0))));
+        hi = std::min(last, long(std::floor(std::min(th, double(last) + 1.0))));
+        if (std::fabs(tl - std::nearbyint(tl)) < kMargin) {
+            while (lo > first && test(lo - 1)) --lo;
+            while (lo <= hi && !test(lo)) ++lo;
+        }
+        if (std::fabs(th - std::nearbyint(th)) < kMargin) {
+            while (hi < last && test(hi + 1)) ++hi;
+            while (hi >= lo && !test(hi)) --hi;
+        }
+        return lo <= hi;
+    }
+    // Nearly perpendicular to x: bisect on the monotone signed distance, using the test itself.
+    const bool increasing = a > 0;
+    auto above = [&](long i) {  // signed distance >= -h (increasing) or <= h (decreasing)
+        const double d = a * (grid.centre(0, i) - b.c[0]) + rowTermK;
+        return increasing ? d >= -b.h[k] : d <= b.h[k];
+    };
+    auto below = [&](long i) {
+        const double d = a * (grid.centre(0, i) - b.c[0]) + rowTermK;
+        return increasing ? d <= b.h[k] : d >= -b.h[k];
+    };
+    // first index where above() holds
+    long l = first, r = last + 1;
+    while (l < r) {
+        const long m = l + (r - l) / 2;
+        if (above(m)) r = m; else l = m + 1;
+    }
+    lo = l;
+    // last index where below() holds
+    l = first - 1;
+    r = last;
+    while (l < r) {
+        const long m = l + (r - l + 1) / 2;
+        if (below(m)) l = m; else r = m - 1;
+    }
+    hi = l;
+    return lo <= hi;
+}
+
+}  // namespace shapevo

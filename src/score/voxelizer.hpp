@@ -1,0 +1,47 @@
+// Voxelizer: turns a model's primitives into bit rows over the target grid and counts them
+// against the target. For each voxel row a primitive crosses, the covered x-interval is computed
+// directly (box_rows.hpp) and OR-ed in as word masks; a voxel covered twice sets its overlap bit.
+// Voxel centres outside the grid (within a halo of one grid extent on every side) count as
+// "outside", once per primitive that covers them.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "geometry/primitive.hpp"
+#include "score/volume_target.hpp"
+
+namespace shapevo {
+
+struct VoxelCounts {
+    std::uint64_t occupied = 0;  ///< grid voxels covered by the model
+    std::uint64_t inside = 0;    ///< covered and in the fill target
+    std::uint64_t avoided = 0;   ///< covered and in an avoid target
+    std::uint64_t overlap = 0;   ///< grid voxels covered by two or more primitives
+    std::uint64_t outside = 0;   ///< covered voxel centres outside the grid (per primitive)
+    std::uint64_t rows = 0;      ///< voxel rows visited (work measure for benchmarks)
+    bool operator==(const VoxelCounts&) const = default;
+};
+
+class Voxelizer {
+public:
+    explicit Voxelizer(const GridSpec& grid);
+    /// Voxelize all primitives and count them against `target` (same grid); leaves the
+    /// voxelizer empty for the next model.
+    VoxelCounts score(const std::vector<Primitive>& primitives, const VolumeTarget& target);
+    /// Voxelize without counting; `occupancy()` then holds the model's bit rows until clear().
+    void add(const Primitive& p, VoxelCounts& counts);
+    const std::vector<std::uint64_t>& occupancy() const { return occupied_; }
+    void clear();
+    const GridSpec& grid() const { return grid_; }
+
+private:
+    void markRow(std::size_t row, long lo, long hi);
+
+    GridSpec grid_;
+    int words_;
+    std::vector<std::uint64_t> occupied_, overlap_;
+    std::vector<std::uint32_t> touched_;  ///< rows with any bit set, in first-touch order
+    std::vector<std::uint8_t> rowTouched_;
+};
+
+}  // namespace shapevo
