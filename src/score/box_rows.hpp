@@ -52,11 +52,22 @@ struct BoxFrame {
     }
 };
 
+/// Per-box constants of slab k along x, computed once per primitive.
+struct SlabAlongX {
+    double a;         ///< the slab normal's x component
+    double base;      ///< index coordinate of the box centre: (cx - origin) / voxel - 0.5
+    double perIndex;  ///< 1 / (a * voxel): index units per unit of signed distance
+    static SlabAlongX of(const BoxFrame& b, int k, const GridSpec& grid) {
+        const double a = b.a[k][0];
+        return {a, (b.c[0] - grid.origin[0]) / grid.voxelSize - 0.5, a != 0.0 ? 1.0 / (a * grid.voxelSize) : 0.0};
+    }
+};
+
 /// Indices i in [lo, hi] of one row whose centres pass slab k; returns false if none.
 /// Only i in [first, last] are considered.
-inline bool slabInterval(const BoxFrame& b, int k, double rowTermK, const GridSpec& grid, long first, long last,
-                         long& lo, long& hi) {
-    const double a = b.a[k][0];
+inline bool slabInterval(const BoxFrame& b, int k, const SlabAlongX& s, double rowTermK, const GridSpec& grid,
+                         long first, long last, long& lo, long& hi) {
+    const double a = s.a;
     auto test = [&](long i) { return b.inSlab(k, grid.centre(0, i), rowTermK); };
     if (a == 0.0) {  // the test does not depend on x at all (0 * finite + t == t exactly)
         if (!(std::fabs(rowTermK) <= b.h[k])) return false;
@@ -66,18 +77,19 @@ inline bool slabInterval(const BoxFrame& b, int k, double rowTermK, const GridSp
     }
     constexpr double kReliableSlope = 1e-3, kMargin = 1e-4;
     if (std::fabs(a) >= kReliableSlope) {
-        const double base = (b.c[0] - grid.origin[0]) / grid.voxelSize - 0.5;
-        const double t1 = base + (-b.h[k] - rowTermK) / a / grid.voxelSize;
-        const double t2 = base + (b.h[k] - rowTermK) / a / grid.voxelSize;
-        const double tl = std::min(t1, t2), th = std::max(t1, t2);
-        if (!(th >= double(first) - 1.0 && tl <= double(last) + 1.0)) return false;
-        lo = std::max(first, long(std::ceil(std::max(tl, double(first) - 1.0))));
-        hi = std::min(last, long(std::floor(std::min(th, double(last) + 1.0))));
-        if (std::fabs(tl - std::nearbyint(tl)) < kMargin) {
+        const double t1 = s.base + (-b.h[k] - rowTermK) * s.perIndex;
+        const double t2 = s.base + (b.h[k] - rowTermK) * s.perIndex;
+        const double tl0 = std::min(t1, t2), th0 = std::max(t1, t2);
+        if (!(th0 >= double(first) - 1.0 && tl0 <= double(last) + 1.0)) return false;
+        const double tl = std::max(tl0, double(first) - 1.0), th = std::min(th0, double(last) + 1.0);
+        const double cl = std::ceil(tl), fh = std::floor(th);
+        lo = std::max(first, long(cl));
+        hi = std::min(last, long(fh));
+        if (cl - tl < kMargin || tl - (cl - 1.0) < kMargin) {  // close to an integer: let the test decide
             while (lo > first && test(lo - 1)) --lo;
             while (lo <= hi && !test(lo)) ++lo;
         }
-        if (std::fabs(th - std::nearbyint(th)) < kMargin) {
+        if (th - fh < kMargin || (fh + 1.0) - th < kMargin) {
             while (hi < last && test(hi + 1)) ++hi;
             while (hi >= lo && !test(hi)) --hi;
         }

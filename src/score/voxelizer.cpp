@@ -32,6 +32,35 @@ void Voxelizer::markRow(std::size_t row, long lo, long hi) {
     }
 }
 
+namespace {
+/// True if every box axis is a grid axis (the common case: unrotated grammars, mirrors).
+bool axisAligned(const BoxFrame& b) {
+    for (int k = 0; k < 3; ++k) {
+        int nonzero = 0;
+        for (int j = 0; j < 3; ++j) nonzero += b.a[k][j] != 0.0;
+        if (nonzero != 1) return false;
+    }
+    return true;
+}
+}  // namespace
+
+void Voxelizer::addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
+    const long nx = grid_.nx;
+    if (z < 0 || z >= grid_.nz || y < 0 || y >= grid_.ny) {
+        counts.outside += std::uint64_t(hi - lo + 1);
+        return;
+    }
+    if (lo < 0) {
+        counts.outside += std::uint64_t(std::min(hi, -1L) - lo + 1);
+        lo = 0;
+    }
+    if (hi >= nx) {
+        counts.outside += std::uint64_t(hi - std::max(lo, nx) + 1);
+        hi = nx - 1;
+    }
+    if (lo <= hi) markRow(std::size_t(z) * std::size_t(grid_.ny) + std::size_t(y), lo, hi);
+}
+
 void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
     const BoxFrame b = BoxFrame::from(p);
     if (!b.finite()) return;
@@ -46,34 +75,54 @@ void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
         last[j] = long(std::min(std::ceil(t1) + 1.0, double(2 * n[j] - 1)));
         if (first[j] > last[j]) return;
     }
+    const SlabAlongX slab[3] = {SlabAlongX::of(b, 0, grid_), SlabAlongX::of(b, 1, grid_), SlabAlongX::of(b, 2, grid_)};
+    auto rowInterval = [&](double cy, double cz, long& lo, long& hi) {
+        lo = first[0];
+        hi = last[0];
+        for (int k = 0; k < 3; ++k) {
+            long l, h;
+            if (!slabInterval(b, k, slab[k], b.rowTerm(k, cy, cz), grid_, lo, hi, l, h)) return false;
+            lo = l;
+            hi = h;
+        }
+        return true;
+    };
+    if (axisAligned(b)) {
+        // Each slab depends on one grid axis only (the other products are exact zeros), so the
+        // x-interval is the same on every row, and a row passes or fails by its y and z alone.
+        int governs[3];  // governs[j] = the slab whose normal is grid axis j
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j)
+                if (b.a[k][j] != 0.0) governs[j] = k;
+        const double y0 = grid_.centre(1, first[1]), z0 = grid_.centre(2, first[2]);
+        long lo, hi;
+        const int kx = governs[0];
+        if (!slabInterval(b, kx, slab[kx], b.rowTerm(kx, y0, z0), grid_, first[0], last[0], lo, hi)) return;
+        long range[3][2];  // passing index range along y (1) and z (2)
+        for (int j = 1; j < 3; ++j) {
+            const int k = governs[j];
+            range[j][0] = last[j] + 1;
+            range[j][1] = last[j];
+            for (long i = first[j]; i <= last[j]; ++i) {
+                const double cy = j == 1 ? grid_.centre(1, i) : y0, cz = j == 2 ? grid_.centre(2, i) : z0;
+                if (!b.inSlab(k, grid_.centre(0, lo), b.rowTerm(k, cy, cz))) continue;
+                range[j][0] = std::min(range[j][0], i);
+                range[j][1] = i;
+            }
+        }
+        for (long z = range[2][0]; z <= range[2][1]; ++z)
+            for (long y = range[1][0]; y <= range[1][1]; ++y) {
+                ++counts.rows;
+                addRow(y, z, lo, hi, counts);
+            }
+        return;
+    }
     for (long z = first[2]; z <= last[2]; ++z) {
         const double cz = grid_.centre(2, z);
-        const bool zInside = z >= 0 && z < n[2];
         for (long y = first[1]; y <= last[1]; ++y) {
-            const double cy = grid_.centre(1, y);
-            long lo = first[0], hi = last[0];
-            bool any = true;
-            for (int k = 0; k < 3 && any; ++k) {
-                long l, h;
-                any = slabInterval(b, k, b.rowTerm(k, cy, cz), grid_, lo, hi, l, h);
-                lo = l;
-                hi = h;
-            }
             ++counts.rows;
-            if (!any) continue;
-            if (!zInside || y < 0 || y >= n[1]) {
-                counts.outside += std::uint64_t(hi - lo + 1);
-                continue;
-            }
-            if (lo < 0) {
-                counts.outside += std::uint64_t(std::min(hi, -1L) - lo + 1);
-                lo = 0;
-            }
-            if (hi >= n[0]) {
-                counts.outside += std::uint64_t(hi - std::max(lo, n[0]) + 1);
-                hi = n[0] - 1;
-            }
-            if (lo <= hi) markRow(std::size_t(z) * std::size_t(n[1]) + std::size_t(y), lo, hi);
+            long lo, hi;
+            if (rowInterval(grid_.centre(1, y), cz, lo, hi)) addRow(y, z, lo, hi, counts);
         }
     }
 }

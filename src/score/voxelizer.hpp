@@ -36,6 +36,8 @@ public:
 
 private:
     void markRow(std::size_t row, long lo, long hi);
+    /// Cover [lo, hi] of row (y, z), counting what falls outside the grid.
+    void addRow(long y, long z, long lo, long hi, VoxelCounts& counts);
 
     GridSpec grid_;
     int words_;

@@ -1,0 +1,71 @@
+// Genome files: write raw words behind a small header; read with every check.
+#include "io/genome_file.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "genome/validate.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+constexpr char kMagic[8] = {'S', 'V', 'G', 'E', 'N', 'O', 'M', 'E'};
+struct Header {
+    char magic[8];
+    std::uint32_t version, genes, words, reserved;
+    std::uint64_t grammarHash;
+};
+static_assert(sizeof(Header) == 32);
+}  // namespace
+
+std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t h) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+    return h;
+}
+
+void writeGenome(const Grammar& g, const Chromosome& c, const std::string& path) {
+    Header h{};
+    std::memcpy(h.magic, kMagic, 8);
+    h.version = 1;
+    h.genes = c.genes;
+    h.words = c.size();
+    h.grammarHash = fnv1a(g.source.data(), g.source.size());
+    const std::string temp = path + ".tmp";
+    {
+        std::ofstream out(temp, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(&h), sizeof h);
+        out.write(reinterpret_cast<const char*>(c.words.data()), std::streamsize(c.words.size() * 4));
+        if (!out) throw std::runtime_error("cannot write " + path);
+    }
+    std::filesystem::rename(temp, path);
+}
+
+Chromosome readGenome(const Grammar& g, const GenomeLimits& limits, const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open genome file");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    Header h{};
+    if (bytes.size() < sizeof h) throw InputError(path, "byte 0", "too short for a genome file header");
+    std::memcpy(&h, bytes.data(), sizeof h);
+    if (std::memcmp(h.magic, kMagic, 8) != 0) throw InputError(path, "byte 0", "not a shapevo genome file (bad magic)");
+    if (h.version != 1) throw InputError(path, "byte 8", "unsupported genome file version " + std::to_string(h.version));
+    if (bytes.size() != sizeof h + std::size_t(h.words) * 4)
+        throw InputError(path, "byte 32", "expected " + std::to_string(h.words) + " words, file holds " +
+                                              std::to_string((bytes.size() - sizeof h) / 4));
+    if (h.grammarHash != fnv1a(g.source.data(), g.source.size()))
+        throw InputError(path, "", "genome was made with a different grammar than " + g.path);
+    Chromosome c;
+    c.genes = h.genes;
+    c.words.resize(h.words);
+    std::memcpy(c.words.data(), bytes.data() + sizeof h, std::size_t(h.words) * 4);
+    const std::string problem = validateChromosome(g, c, limits);
+    if (!problem.empty()) throw InputError(path, "", "invalid chromosome: " + problem);
+    return c;
+}
+
+}  // namespace shapevo

@@ -1,0 +1,31 @@
+// Run reports: the fitness curve (curve.csv) and the run summary (summary.json).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "search/genetic_algorithm.hpp"
+
+namespace shapevo {
+
+struct RunSummary {
+    std::string name, config, grammar;
+    std::uint64_t seed = 0;
+    std::uint32_t generations = 0;
+    std::uint64_t evaluations = 0;
+    double wallSeconds = 0;
+    double bestFitness = 0;
+    double voxelIoU = 0;
+    std::uint32_t bestGenes = 0;
+    std::size_t bestPrimitives = 0;
+    std::uint64_t targetHash = 0;
+    int threads = 0;
+};
+
+/// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).
+void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path);
+void writeSummaryJson(const RunSummary& s, const std::string& path);
+/// Doubles in reports: shortest text that reads back to the same value.
+std::string formatDouble(double v);
+
+}  // namespace shapevo

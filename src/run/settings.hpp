@@ -1,0 +1,43 @@
+// RunSettings: everything a run needs, read from a TOML config (io/config_file.hpp) with
+// defaults from the papers. Paths are already resolved relative to the config file.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "genome/chromosome.hpp"
+#include "io/vdb_target_file.hpp"
+#include "score/volume_fitness.hpp"
+
+namespace shapevo {
+
+struct GaSettings {
+    std::uint32_t population = 200;
+    std::uint32_t generations = 50;
+    std::uint32_t elitism = 30;
+    std::uint32_t tournament = 10;
+    double mutation = 0.30;                             ///< probability that a pair is mutated, not crossed
+    double growWeight = 1.0, cutWeight = 1.0, alterWeight = 1.0;  ///< split of the mutations
+    int crossoverRetries = 3;
+    std::uint32_t initialGenesMin = 2, initialGenesMax = 40;  ///< initial length drawn uniformly in between
+};
+
+struct RunSettings {
+    std::string configPath;   ///< the file it came from
+    std::string configText;   ///< its text, with --set overrides applied, as stored in outputs
+    std::string name = "run";
+    std::uint64_t seed = 1;
+    int threads = 0;          ///< 0 = all hardware threads
+    std::string out;          ///< output folder; empty = runs/<name>[-N]
+
+    std::string grammarPath;
+    std::vector<TargetVolumeSpec> targets;
+    std::optional<GridOverride> grid;
+
+    VolumeFitnessSettings fitness;
+    GenomeLimits limits;
+    GaSettings ga;
+};
+
+}  // namespace shapevo

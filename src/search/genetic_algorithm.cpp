@@ -1,0 +1,93 @@
+// GeneticAlgorithm implementation; buffers are reused between generations (no allocation once
+// every chromosome has reached its largest size).
+#include "search/genetic_algorithm.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shapevo {
+
+GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits,
+                                   std::uint64_t seed)
+    : grammar_(g), settings_(settings), limits_(limits), rng_(seed) {
+    pop_.individuals.resize(settings.population);
+    next_.individuals.resize(settings.population);
+    next_.fitness.resize(settings.population);
+    order_.resize(settings.population);
+}
+
+void GeneticAlgorithm::initialize(Evaluator& evaluator) {
+    const std::uint32_t lo = std::min(settings_.initialGenesMin, limits_.maxGenes);
+    const std::uint32_t hi = std::min(settings_.initialGenesMax, limits_.maxGenes);
+    for (Chromosome& c : pop_.individuals) {
+        c.clear();
+        const std::uint32_t length = lo + rng_.below(hi - lo + 1);
+        while (c.genes < length && grow(grammar_, c, rng_, limits_)) {
+        }
+    }
+    evaluator.evaluate(pop_);
+    evaluations_ += pop_.size();
+    generation_ = 1;
+}
+
+void GeneticAlgorithm::mutate(Chromosome& c) {
+    const double total = settings_.growWeight + settings_.cutWeight + settings_.alterWeight;
+    const double r = rng_.uniform() * total;
+    const int first = r < settings_.growWeight ? 0 : r < settings_.growWeight + settings_.cutWeight ? 1 : 2;
+    // If the chosen mutation cannot apply (nothing to cut, chromosome full), try the next one.
+    for (int k = 0; k < 3; ++k) {
+        switch ((first + k) % 3) {
+        case 0: if (settings_.growWeight > 0 && grow(grammar_, c, rng_, limits_)) return; break;
+        case 1: if (settings_.cutWeight > 0 && cut(grammar_, c, rng_, scratch_)) return; break;
+        default: if (settings_.alterWeight > 0 && alter(grammar_, c, rng_)) return; break;
+        }
+    }
+}
+
+void GeneticAlgorithm::step(Evaluator& evaluator) {
+    const std::size_t n = pop_.size(), elite = settings_.elitism;
+    for (std::size_t i = 0; i < n; ++i) order_[i] = i;
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return pop_.fitness[a] > pop_.fitness[b]; });
+    for (std::size_t k = 0; k < elite; ++k) {
+        next_.individuals[k] = pop_.individuals[order_[k]];
+        next_.fitness[k] = pop_.fitness[order_[k]];
+    }
+    wheel_.prepare(pop_.fitness);
+    for (std::size_t k = elite; k < n; k += 2) {
+        const std::size_t p1 = tournamentSelect(pop_.fitness, settings_.tournament, rng_);
+        const std::size_t p2 = wheel_.select(rng_);
+        Chromosome& c1 = next_.individuals[k];
+        const bool pair = k + 1 < n;
+        Chromosome& c2 = pair ? next_.individuals[k + 1] : scratchChild_;
+        if (rng_.uniform() < settings_.mutation) {
+            c1 = pop_.individuals[p1];
+            c2 = pop_.individuals[p2];
+            mutate(c1);
+            if (pair) mutate(c2);
+        } else {
+            crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_,
+                      settings_.crossoverRetries, scratch_);
+        }
+    }
+    std::swap(pop_, next_);
+    evaluator.evaluate(pop_, elite);
+    evaluations_ += n - elite;
+    ++generation_;
+}
+
+GenerationStats GeneticAlgorithm::stats() const {
+    GenerationStats s;
+    s.generation = generation_;
+    s.evaluations = evaluations_;
+    const auto& f = pop_.fitness;
+    s.best = *std::max_element(f.begin(), f.end());
+    double sum = 0;
+    for (double v : f) sum += v;
+    s.mean = sum / double(f.size());
+    double var = 0;
+    for (double v : f) var += (v - s.mean) * (v - s.mean);
+    s.std = std::sqrt(var / double(f.size()));
+    return s;
+}
+
+}  // namespace shapevo
