@@ -30,3 +30,45 @@ private:
 };
 
 }  // namespace shapevo::test
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+namespace shapevo::test {
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Run the shapevo binary with `args` (a shell-quoted string) and capture what it prints.
+inline CommandResult runShapevo(const std::string& args) {
+    const std::string cmd = std::string(SHAPEVO_BIN) + " " + args + " 2>&1";
+    CommandResult r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buf;
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline std::string readFile(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return {};
+    std::string s;
+    std::array<char, 4096> buf;
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), f)) s.append(buf.data(), n);
+    std::fclose(f);
+    return s;
+}
+
+inline void writeFile(const std::string& path, const std::string& text) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+}
+
+}  // namespace shapevo::test

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -186,7 +187,7 @@ private:
                 if (kind == "normal") {
                     pr.mu = float(a[c]);
                     pr.sigma = float(b[c]);
-                    if (!(b[c] > 0)) tokens_.fail(priorAt, "normal(mu, sigma) needs sigma > 0");
+                    if (!(b[c] > 0)) tokens_.fail(priorAt, "normal(mu, sigma) needs sigma > 0, got " + show(b[c]));
                 } else {
                     pr.lo = float(a[c]);
                     pr.hi = float(b[c]);
@@ -213,7 +214,8 @@ private:
                 for (int c = 0; c < 3; ++c) {
                     p.prior[c].lo = float(lo[c]);
                     p.prior[c].hi = float(hi[c]);
-                    if (!(lo[c] <= hi[c])) tokens_.fail(priorAt, "normal(...) in [lo, hi] needs lo <= hi");
+                    if (!(lo[c] <= hi[c]))
+                        tokens_.fail(priorAt, "normal(...) in [lo, hi] needs lo <= hi, got " + show(lo[c]) + " > " + show(hi[c]));
                 }
             }
         } else {  // choice
@@ -252,10 +254,17 @@ private:
             }
             const SourceLocation at = tokens_.peek().where;
             const std::string name = tokens_.expectIdentifier("a rule name after 'child'");
+            if ((name == "prob" || name == "max") && tokens_.peek().kind == TokenKind::Number)
+                tokens_.fail(at, "expected a rule name after 'child', found '" + name + "' (" + name +
+                                     " comes after the rule names: child A " + name + " N)");
             pendingRefs_.push_back({name, at, std::size_t(&rule - g_.rules.data()), rule.slots.size(), slot.rules.size()});
             slot.rules.push_back(0);
             slot.weights.push_back(weight);
         } while (tokens_.peek().is('|'));
+        float totalWeight = 0;
+        for (float w : slot.weights) totalWeight += w;
+        if (!std::isfinite(totalWeight))
+            tokens_.fail(childAt, "the weights of this child slot add up to more than a 32-bit float can hold");
         bool seenProb = false, seenMax = false;
         while (tokens_.peek().isWord("prob") || tokens_.peek().isWord("max")) {
             const Token key = tokens_.take();
@@ -326,6 +335,8 @@ private:
 Grammar parseGrammar(const std::string& text, const std::string& path) { return Parser(text, path).run(); }
 
 Grammar loadGrammar(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a grammar file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot open grammar file");
     std::ostringstream ss;

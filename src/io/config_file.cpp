@@ -92,8 +92,10 @@ public:
             if (it == known_.end()) fail(v, "unknown section [" + name + "] (expected one of: " + list(known_) + ")");
             for (const auto& [kk, vv] : *v.as_table()) {
                 if (!it->second.count(std::string(kk.str())))
-                    fail(vv, "unknown key '" + std::string(kk.str()) + "' in [" + name + "] (expected one of: " +
+                    throw InputError(path_, std::to_string(kk.source().begin.line) + ":" + std::to_string(kk.source().begin.column),
+                                     "unknown key '" + std::string(kk.str()) + "' in [" + name + "] (expected one of: " +
                                  join(it->second) + ")");
+                (void)vv;
             }
         }
     }

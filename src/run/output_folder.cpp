@@ -22,7 +22,12 @@ std::string claimOutputFolder(const std::string& requested, const std::string& n
     }
     fs::create_directories("runs", ec);
     for (int n = 1; n < 100000; ++n) {
-        const std::string candidate = "runs/" + name + (n == 1 ? "" : "-" + std::to_string(n));
+        std::string candidate = "runs/";
+        candidate += name;
+        if (n > 1) {
+            candidate += '-';
+            candidate += std::to_string(n);
+        }
         if (fs::create_directory(candidate, ec)) return candidate;
         if (ec) throw InputError(candidate, "", "cannot create output folder: " + ec.message());
     }

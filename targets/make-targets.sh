@@ -1,0 +1,16 @@
+#!/bin/sh
+# Rebuild the shipped volume targets from their sources with shapevo's own commands.
+# usage: targets/make-targets.sh [path/to/shapevo]      (default: build/shapevo)
+set -eu
+cd "$(dirname "$0")/.."
+BIN=${1:-build/shapevo}
+rm -f targets/spaceship-reachable.obj targets/spaceship-reachable.genome targets/spaceship-reachable.vdb \
+      targets/spaceship-paper.vdb
+
+# A reachable target: one fixed derivation of the spaceship grammar (seed 7, 14 genes).
+"$BIN" sample grammars/spaceship.grammar --seed 7 --min-genes 14 --max-genes 18 \
+    -o targets/spaceship-reachable.obj --genome targets/spaceship-reachable.genome
+"$BIN" target targets/spaceship-reachable.obj --voxel-size 0.1 -o targets/spaceship-reachable.vdb
+
+# The papers' spaceship target mesh (crest01/ShapeGenetics, MIT licence: targets/shapegenetics/LICENSE).
+"$BIN" target targets/shapegenetics/spaceship_target.obj --voxel-size 0.1 -o targets/spaceship-paper.vdb

@@ -1,0 +1,78 @@
+// End-to-end runs: the run folder holds every promised file, and a seeded run is repeatable
+// byte for byte (best genome; curve except its wall-clock column) with 1 or 2 threads.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "../test_support.hpp"
+
+namespace shapevo {
+namespace {
+
+using test::readFile;
+using test::runShapevo;
+using test::sourcePath;
+using test::TempDir;
+
+const std::string kSmall = " --set ga.population=40 --set ga.generations=8 --set ga.elitism=6 -q";
+
+/// curve.csv without the seconds column.
+std::string curveWithoutTime(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        const auto a = line.find(','), b = line.find(',', a + 1);
+        out += line.substr(0, a) + line.substr(b) + "\n";
+    }
+    return out;
+}
+
+TEST(Run, WritesEveryOutputFile) {
+    TempDir dir;
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* f : {"best.obj", "best.ply", "best.genome", "curve.csv", "summary.json", "config.toml", "spaceship.grammar"})
+        EXPECT_TRUE(std::filesystem::exists(dir.file("run/") + f)) << f;
+    const std::string summary = readFile(dir.file("run/summary.json"));
+    for (const char* key : {"\"seed\"", "\"generations\": 8", "\"evaluations\": 278", "\"wall_seconds\"", "\"best_fitness\"", "\"voxel_iou\""})
+        EXPECT_NE(summary.find(key), std::string::npos) << key << " in " << summary;
+    const std::string curve = readFile(dir.file("run/curve.csv"));
+    EXPECT_EQ(curve.rfind("generation,seconds,evaluations,best,mean,std\n", 0), 0u);
+    EXPECT_EQ(std::count(curve.begin(), curve.end(), '\n'), 9);
+}
+
+TEST(Run, ProgressLinePerGeneration) {
+    TempDir dir;
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") +
+                              " --set ga.population=20 --set ga.generations=3 --set ga.elitism=2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* g : {"gen 1/3", "gen 2/3", "gen 3/3"}) EXPECT_NE(r.output.find(g), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("evals/s"), std::string::npos);
+    EXPECT_NE(r.output.find("ETA"), std::string::npos);
+}
+
+TEST(Determinism, SameSeedGivesIdenticalGenomeAndCurveWithOneOrTwoThreads) {
+    TempDir dir;
+    const std::string cfg = sourcePath("configs/spaceship.toml");
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 1 --out " + dir.file("a") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 2 --out " + dir.file("b") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 43 --threads 2 --out " + dir.file("c") + kSmall).exitCode, 0);
+    EXPECT_EQ(readFile(dir.file("a/best.genome")), readFile(dir.file("b/best.genome")));
+    EXPECT_EQ(readFile(dir.file("a/best.obj")), readFile(dir.file("b/best.obj")));
+    EXPECT_EQ(curveWithoutTime(readFile(dir.file("a/curve.csv"))), curveWithoutTime(readFile(dir.file("b/curve.csv"))));
+    // and the seed matters
+    EXPECT_NE(curveWithoutTime(readFile(dir.file("a/curve.csv"))), curveWithoutTime(readFile(dir.file("c/curve.csv"))));
+}
+
+TEST(Evaluate, ScoresTheReachableTargetsOwnDerivationNearTheOptimum) {
+    const auto r = runShapevo("evaluate " + sourcePath("configs/spaceship.toml") + " " +
+                              sourcePath("targets/spaceship-reachable.genome"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const double fitness = std::stod(r.output.substr(r.output.find("fitness ") + 8));
+    EXPECT_GT(fitness, 0.99);
+    EXPECT_LE(fitness, 1.0);
+}
+
+}  // namespace
+}  // namespace shapevo
