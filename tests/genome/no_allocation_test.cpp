@@ -1,0 +1,70 @@
+// Hot paths allocate nothing once warm: derive, voxelize + score and every genetic operator are
+// run many times on reused buffers while a replaced global operator new counts allocations.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "../test_support.hpp"
+#include "genome/operators.hpp"
+#include "grammar/parser.hpp"
+#include "io/vdb_target_file.hpp"
+#include "score/volume_scorer.hpp"
+
+#if !defined(__SANITIZE_ADDRESS__)
+namespace {
+std::atomic<long> gAllocations{0};
+}
+void* operator new(std::size_t n) {
+    ++gAllocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace shapevo {
+namespace {
+
+TEST(NoAllocation, DeriveScoreAndOperatorsAllocateNothingOnceWarm) {
+    const Grammar g = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
+    const VolumeTarget target = loadVolumeTarget({{test::sourcePath("targets/spaceship-reachable.vdb"), false}});
+    const VolumeScorer scorer(g, target, VolumeFitnessSettings{});
+    auto ws = scorer.makeWorkspace();
+    const GenomeLimits limits{100};
+    Rng rng(17);
+    GenomeScratch scratch;
+    std::vector<Chromosome> pop(16), next(16);
+    // Warm every buffer to its largest size: full-length chromosomes and a first round of work.
+    for (auto& c : pop) {
+        c.words.reserve(100 * 16);
+        while (grow(g, c, rng, limits)) {
+        }
+    }
+    for (auto& c : next) c.words.reserve(100 * 16);
+    scratch.newPos.reserve(100 * 16);
+    ws->derive.stack.reserve(4096);
+    ws->geometry.primitives.reserve(4096);
+    double sink = 0;
+    auto round = [&] {
+        for (std::size_t i = 0; i < pop.size(); ++i) {
+            sink += scorer.fitness(pop[i], *ws);
+            const std::size_t j = (i + 5) % pop.size();
+            crossover(g, pop[i], pop[j], next[i], next[j], rng, limits, 3, scratch);
+            cut(g, next[i], rng, scratch);
+            grow(g, next[i], rng, limits);
+            alter(g, next[j], rng);
+        }
+        std::swap(pop, next);
+    };
+    for (int warm = 0; warm < 20; ++warm) round();
+    const long before = gAllocations.load();
+    for (int r = 0; r < 200; ++r) round();
+    EXPECT_EQ(gAllocations.load() - before, 0) << "allocations in 200 rounds of 16 evaluations and operators";
+    EXPECT_NE(sink, 0.0);
+}
+
+}  // namespace
+}  // namespace shapevo
+#endif
