@@ -1,0 +1,186 @@
+// Every malformed grammar is rejected with an InputError that names file:line:column of the
+// offending token and says specifically what is wrong (and, where it helps, what was expected).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "grammar/expression.hpp"
+#include "grammar/parser.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+namespace {
+
+struct Malformed {
+    const char* name;      ///< test name suffix: what is wrong
+    std::string text;      ///< the grammar
+    std::string where;     ///< expected "bad.grammar:LINE:COL"
+    std::string fragment;  ///< a distinctive part of the expected message
+};
+
+std::ostream& operator<<(std::ostream& os, const Malformed& m) { return os << m.name; }
+
+// A one-rule grammar "start A / rule A {" whose body starts on line 3, column 3.
+std::string body(const std::string& lines) { return "start A\nrule A {\n" + lines + "\n}\n"; }
+
+// n right-leaning additions "1 + (1 + (...))": needs an evaluation stack of n + 1.
+std::string rightNested(int n) {
+    std::string s = "1";
+    for (int i = 0; i < n; ++i) s = "1 + (" + s + ")";
+    return s;
+}
+
+const std::vector<Malformed>& cases() {
+    static const std::vector<Malformed> all = {
+        // --- lexical ---------------------------------------------------------------------
+        {"UnexpectedCharacter", "start A\nrule A { box @ }\n", "bad.grammar:2:14", "unexpected character '@'"},
+        {"UnexpectedControlByte", "start A\nrule A {\x01}\n", "bad.grammar:2:9", "unexpected character 'byte 1'"},
+        {"UnclosedString", body("  child \"oops"), "bad.grammar:3:9", "string is not closed before the end of the line"},
+        {"MalformedNumber", body("  size 1.2.3"), "bad.grammar:3:8", "malformed number '1.2.3'"},
+        {"NumberOutOfFloatRange", body("  size 1e39"), "bad.grammar:3:8", "number '1e39' is out of range"},
+        {"NumberOutOfDoubleRange", body("  param p = uniform(0, 1e999)"), "bad.grammar:3:24", "number '1e999' is out of range"},
+        // --- top level -------------------------------------------------------------------
+        {"EmptyGrammar", "", "bad.grammar:1:1", "the grammar has no rules"},
+        {"OnlyComments", "# nothing here\n", "bad.grammar:2:1", "the grammar has no rules"},
+        {"MissingStart", "rule A { box }\n", "bad.grammar:1:1", "the grammar has no 'start NAME' line"},
+        {"StartRuleUndefined", "start Main\nrule A { box }\n", "bad.grammar:1:7", "start rule 'Main' is not defined"},
+        {"StartGivenTwice", "start A\nstart A\nrule A { }\n", "bad.grammar:2:1", "'start' is given twice"},
+        {"StartWithoutName", "start 5\n", "bad.grammar:1:7", "expected the name of the start rule after 'start', found number 5"},
+        {"UnknownTopLevelItem", "start A\nbox\n", "bad.grammar:2:1", "expected 'start', 'attr' or 'rule' at the top level, found 'box'"},
+        {"DuplicateRule", "start A\nrule A { box }\nrule A { box }\n", "bad.grammar:3:6", "rule 'A' is defined twice (first at line 2)"},
+        {"RuleWithoutBrace", "start A\nrule A box\n", "bad.grammar:2:8", "expected '{' to open the body of rule A, found 'box'"},
+        {"MissingCloseBraceAtEof", "start A\nrule A {\n  box\n", "bad.grammar:4:1",
+         "expected '}' to close rule A (opened at line 2), found end of file"},
+        {"DuplicateAttr", "attr h = 1\nattr h = 2\nstart A\nrule A { }\n", "bad.grammar:2:6", "attr 'h' is defined twice"},
+        {"AttrWithoutNumber", "attr h = wide\nstart A\nrule A { }\n", "bad.grammar:1:10", "expected a number as the value of attr h, found 'wide'"},
+        {"AttrWithReservedName", "attr scope = 1\nstart A\nrule A { }\n", "bad.grammar:1:6", "'scope' is a reserved name"},
+        // --- statements ------------------------------------------------------------------
+        {"UnknownStatement", body("  extrude 2"), "bad.grammar:3:3", "unknown statement 'extrude'"},
+        {"StatementIsANumber", body("  5"), "bad.grammar:3:3", "expected a statement (param, scale, size, translate, rotate, mirror, box, child), found number 5"},
+        {"RotateBadAxis", body("  rotate w 30"), "bad.grammar:3:10", "expected an axis x, y or z after 'rotate', found 'w'"},
+        {"MirrorBadAxis", body("  mirror xy"), "bad.grammar:3:10", "expected an axis x, y or z after 'mirror', found 'xy'"},
+        {"MirrorWithoutAxis", body("  mirror"), "bad.grammar:4:1", "expected an axis x, y or z after 'mirror', found '}'"},
+        // --- params and priors -----------------------------------------------------------
+        {"DuplicateParam", body("  param s = uniform(0, 1)\n  param s = uniform(0, 2)"), "bad.grammar:4:9",
+         "parameter 's' is declared twice in rule A"},
+        {"ReservedParamNamePi", body("  param pi = uniform(0, 1)"), "bad.grammar:3:9", "parameter name 'pi' is reserved"},
+        {"ReservedParamNameFunction", body("  param sin = uniform(0, 1)"), "bad.grammar:3:9", "parameter name 'sin' is reserved"},
+        {"ParamNameIsAnAttr", "attr h = 1\n" + body("  param h = uniform(0, 1)"), "bad.grammar:4:9", "parameter name 'h' is already an attr"},
+        {"UnknownPrior", body("  param s = gauss(0, 1)"), "bad.grammar:3:13", "unknown prior 'gauss': expected uniform, normal, int or choice"},
+        {"UniformLowAboveHigh", body("  param s = uniform(2, 1)"), "bad.grammar:3:13", "uniform(a, b) needs a <= b, got 2 > 1"},
+        {"UniformVectorComponentLowAboveHigh", body("  param s = uniform((0, 5, 0), (1, 1, 1))"), "bad.grammar:3:13",
+         "uniform(a, b) needs a <= b, got 5 > 1"},
+        {"UniformMissingSecondArgument", body("  param s = uniform(1)"), "bad.grammar:3:22",
+         "expected ',' between the two arguments of uniform, found ')'"},
+        {"NormalWithoutBounds", body("  param s = normal(0, 1)\n  box"), "bad.grammar:4:3",
+         "expected 'in [lo, hi]' after normal(mu, sigma): its support must be bounded, found 'box'"},
+        {"NormalSigmaZero", body("  param s = normal(0, 0) in [0, 1]"), "bad.grammar:3:13", "normal(mu, sigma) needs sigma > 0, got 0"},
+        {"NormalSigmaNegative", body("  param s = normal(0, -1) in [0, 1]"), "bad.grammar:3:13", "needs sigma > 0, got -1"},
+        {"NormalBoundsReversed", body("  param s = normal(0, 1) in [1, -1]"), "bad.grammar:3:13", "needs lo <= hi, got 1 > -1"},
+        {"IntWithVectors", body("  param n = int((1, 1, 1), (2, 2, 2))"), "bad.grammar:3:13", "int(a, b) takes two numbers, not vectors"},
+        {"IntWithoutWholeNumber", body("  param n = int(0.2, 0.8)"), "bad.grammar:3:13", "int(0.2, 0.8) contains no whole number"},
+        {"IntBoundTooLarge", body("  param n = int(0, 1e9)"), "bad.grammar:3:13", "int(a, b) bounds must lie within"},
+        {"ChoiceOfAName", body("  param c = choice(1, big)"), "bad.grammar:3:23", "expected a number in choice(...), found 'big'"},
+        {"ChoiceEmpty", body("  param c = choice()"), "bad.grammar:3:20", "expected a number in choice(...), found ')'"},
+        {"VectorConstantMissingComma", body("  param s = uniform((1, 2 3), 4)"), "bad.grammar:3:27",
+         "expected ',' between vector components, found number 3"},
+        // --- child slots -----------------------------------------------------------------
+        {"ProbAboveOne", body("  child B prob 1.5") + "rule B { }\n", "bad.grammar:3:16", "prob must be in [0, 1], got 1.5"},
+        {"ProbNegative", body("  child B prob -0.5") + "rule B { }\n", "bad.grammar:3:16", "prob must be in [0, 1], got -0.5"},
+        {"ProbGivenTwice", body("  child B prob 0.5 prob 0.3") + "rule B { }\n", "bad.grammar:3:20", "'prob' is given twice for this child slot"},
+        {"MaxZero", body("  child B max 0") + "rule B { }\n", "bad.grammar:3:15", "max must be a whole number from 1 to 64, got 0"},
+        {"MaxNotWhole", body("  child B max 2.5") + "rule B { }\n", "bad.grammar:3:15", "max must be a whole number from 1 to 64, got 2.5"},
+        {"MaxTooLarge", body("  child B max 65") + "rule B { }\n", "bad.grammar:3:15", "max must be a whole number from 1 to 64, got 65"},
+        {"TooManyChildPositions", body("  child B max 64 prob 0.5\n  child B prob 0.5") + "rule B { }\n", "bad.grammar:4:3",
+         "rule A has more than 64 child positions"},
+        {"UndefinedChildRule", body("  child Wing prob 0.5"), "bad.grammar:3:9", "rule 'Wing' is not defined"},
+        {"UndefinedAlternative", body("  child [1] A | [2] Wing prob 0.5"), "bad.grammar:3:21", "rule 'Wing' is not defined"},
+        {"WeightZero", body("  child [0] B | [1] C prob 0.5") + "rule B { }\nrule C { }\n", "bad.grammar:3:10",
+         "an alternative's weight must be > 0, got 0"},
+        {"WeightNegative", body("  child [-2] B prob 0.5") + "rule B { }\n", "bad.grammar:3:10", "an alternative's weight must be > 0, got -2"},
+        {"WeightsSumOverflows", body("  child [3e38] B | [3e38] B prob 0.5") + "rule B { }\n", "bad.grammar:3:3",
+         "the weights of this child slot add up to more than"},
+        {"WeightNotClosed", body("  child [2 B") + "rule B { }\n", "bad.grammar:3:12", "expected ']' after the weight, found 'B'"},
+        {"ChildWithoutRule", body("  child prob 0.5"), "bad.grammar:3:9", "expected a rule name after 'child', found 'prob'"},
+        {"RecursionNeverEnds", "start A\nrule A { child B }\nrule B { child A }\n", "bad.grammar:2:6",
+         "recursion never ends: A -> B -> A are all probability-1 children"},
+        {"SelfRecursionNeverEnds", "start A\nrule A { box child A }\n", "bad.grammar:2:6", "recursion never ends: A -> A"},
+        {"RecursionThroughAnAlternative", "start A\nrule A { child [1] B | [1] A }\nrule B { }\n", "bad.grammar:2:6",
+         "recursion never ends: A -> A"},
+        {"RecursionInAnUnreachableRule", "start A\nrule A { }\nrule X { child Y }\nrule Y { child Y max 2 }\n",
+         "bad.grammar:4:6", "recursion never ends: Y -> Y"},
+        {"MandatorySubtreeTooLarge",
+         "start A\nrule A { child B max 64 }\nrule B { child C max 64 }\nrule C { child D max 64 }\nrule D { child E max 64 }\nrule E { }\n",
+         "bad.grammar:2:6", "rule A always derives more than 1,000,000 genes"},
+        // --- expressions -----------------------------------------------------------------
+        {"UnknownName", body("  translate (0, heigth, 0)"), "bad.grammar:3:17", "unknown name 'heigth'"},
+        {"ParamUsedBeforeDeclared", body("  rotate x p\n  param p = uniform(0, 1)"), "bad.grammar:3:12", "unknown name 'p'"},
+        {"VectorWhereScalarWanted", body("  rotate x scope.size"), "bad.grammar:3:12",
+         "expected a scalar expression here, but this expression is a 3-vector"},
+        {"SwizzleOnScalar", body("  param a = uniform(0, 1)\n  rotate x a.y"), "bad.grammar:4:14", "'.y' applies to a 3-vector, but this is a scalar"},
+        {"SwizzleTwice", body("  rotate x scope.size.x.y"), "bad.grammar:3:25", "'.y' applies to a 3-vector, but this is a scalar"},
+        {"BadComponentName", body("  rotate x scope.size.w"), "bad.grammar:3:23", "expected a component x, y or z after '.', found 'w'"},
+        {"ScopeWithoutSize", body("  rotate x scope.origin.x"), "bad.grammar:3:18", "expected 'size' after 'scope.', found 'origin'"},
+        {"ParentWithoutDot", body("  size parent"), "bad.grammar:4:1", "expected '.' after 'parent' (only parent.size is available), found '}'"},
+        {"VectorMissingComma", body("  size (1, 2 3)"), "bad.grammar:3:14",
+         "expected ',' between the components of a vector (x, y, z), found number 3"},
+        {"VectorWithTwoComponents", body("  size (1, 2)"), "bad.grammar:3:13",
+         "expected ',' between the components of a vector (x, y, z), found ')'"},
+        {"VectorComponentIsAVector", body("  size ((1, 2, 3), 1, 1)"), "bad.grammar:3:9", "a vector component must be a scalar"},
+        {"UnclosedParenthesis", body("  rotate x (1 + 2"), "bad.grammar:4:1", "expected ')' to close the parenthesis, found '}'"},
+        {"MissingOperand", body("  rotate x 1 +"), "bad.grammar:4:1", "expected an expression (a number, a parameter"},
+        {"DanglingOperator", body("  size * 2"), "bad.grammar:3:8", "expected an expression"},
+        {"FunctionWithoutParenthesis", body("  rotate x sin 30"), "bad.grammar:3:16", "expected '(' after function sin, found number 30"},
+        {"FunctionTooFewArguments", body("  rotate x min(1)"), "bad.grammar:3:17", "expected ',' between the arguments of min, found ')'"},
+        {"FunctionTooManyArguments", body("  rotate x abs(1, 2)"), "bad.grammar:3:17",
+         "expected ')' after the 1 argument(s) of abs, found ','"},
+        {"ExpressionStackTooDeep", body("  rotate x " + rightNested(kMaxExpressionStack)), "bad.grammar:3:12",
+         "expression is too deeply nested (needs a stack of 33, the limit is 32)"},
+        {"ExpressionNestingTooDeep", body("  rotate x " + std::string(100, '(') + "1" + std::string(100, ')')), "bad.grammar:3:76",
+         "expression is nested too deeply (more than 64 levels"},
+        {"UnaryMinusNestingTooDeep", body("  rotate x " + std::string(100, '-') + "1"), "bad.grammar:3:76", "expression is nested too deeply"},
+        {"FunctionNestingTooDeep", body("  rotate x " + [] {
+             std::string s;
+             for (int i = 0; i < 70; ++i) s += "abs(";
+             return s + "1" + std::string(70, ')');
+         }()),
+         "bad.grammar:3:268", "expression is nested too deeply"},
+        {"ExpressionTooLong", body("  rotate x 0" + [] {
+             std::string s;
+             for (int i = 0; i < 3000; ++i) s += "+1";
+             return s;
+         }()),
+         "bad.grammar:3:12", "expression is too long (more than 4096"},
+    };
+    return all;
+}
+
+class GrammarMalformed : public ::testing::TestWithParam<Malformed> {};
+
+TEST_P(GrammarMalformed, IsRejectedWithLocationAndMessage) {
+    const Malformed& m = GetParam();
+    try {
+        parseGrammar(m.text, "bad.grammar");
+        FAIL() << "expected InputError for:\n" << m.text;
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind(m.where + ": ", 0), 0u) << "expected location " << m.where << ", got: " << what;
+        EXPECT_NE(what.find(m.fragment), std::string::npos) << "expected message fragment \"" << m.fragment << "\", got: " << what;
+        EXPECT_EQ(e.file(), "bad.grammar");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(GrammarCases, GrammarMalformed, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Malformed>& info) { return std::string(info.param.name); });
+
+TEST(GrammarMalformedCases, AtLeastTwentyDistinctCases) {
+    EXPECT_GE(cases().size(), 20u);
+    std::vector<std::string> names;
+    for (const Malformed& m : cases()) names.push_back(m.name);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "case names must be unique";
+}
+
+}  // namespace
+}  // namespace shapevo
