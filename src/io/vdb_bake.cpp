@@ -49,9 +49,11 @@ void bakeInside(const openvdb::FloatGrid& grid, const GridSpec& spec, std::vecto
     openvdb::BBoxd box = activeWorldBounds(grid);
     const double margin = grid.transform().voxelSize().length();
     box.expand(margin);
-    const auto [x0, x1] = centreRange(spec, 0, spec.nx, box.min()[0], box.max()[0]);
-    const auto [y0, y1] = centreRange(spec, 1, spec.ny, box.min()[1], box.max()[1]);
-    const auto [z0, z1] = centreRange(spec, 2, spec.nz, box.min()[2], box.max()[2]);
+    // plain variables, not structured bindings: lambdas may capture them in C++20 with every compiler
+    const auto xr = centreRange(spec, 0, spec.nx, box.min()[0], box.max()[0]);
+    const auto yr = centreRange(spec, 1, spec.ny, box.min()[1], box.max()[1]);
+    const auto zr = centreRange(spec, 2, spec.nz, box.min()[2], box.max()[2]);
+    const long x0 = xr.first, x1 = xr.second, y0 = yr.first, y1 = yr.second, z0 = zr.first, z1 = zr.second;
     if (x0 >= x1 || y0 >= y1 || z0 >= z1) return;
     const std::size_t wordsPerRow = std::size_t(spec.wordsPerRow());
 

@@ -131,6 +131,7 @@ VoxelCounts Voxelizer::score(const std::vector<Primitive>& primitives, const Vol
     VoxelCounts counts;
     for (const Primitive& p : primitives) add(p, counts);
     const bool hasAvoid = target.avoidCount > 0;
+    // Count and clear in one pass over the touched rows only.
     for (std::uint32_t row : touched_) {
         const std::size_t base = std::size_t(row) * std::size_t(words_);
         for (int w = 0; w < words_; ++w) {
@@ -139,17 +140,19 @@ VoxelCounts Voxelizer::score(const std::vector<Primitive>& primitives, const Vol
             counts.inside += std::uint64_t(std::popcount(o & target.fill[base + w]));
             if (hasAvoid) counts.avoided += std::uint64_t(std::popcount(o & target.avoid[base + w]));
             counts.overlap += std::uint64_t(std::popcount(overlap_[base + w]));
+            occupied_[base + w] = 0;
+            overlap_[base + w] = 0;
         }
+        rowTouched_[row] = 0;
     }
-    clear();
+    touched_.clear();
     return counts;
 }
 
 void Voxelizer::clear() {
     for (std::uint32_t row : touched_) {
         const std::size_t base = std::size_t(row) * std::size_t(words_);
-        std::fill_n(&occupied_[base], words_, 0);
-        std::fill_n(&overlap_[base], words_, 0);
+        for (int w = 0; w < words_; ++w) occupied_[base + w] = overlap_[base + w] = 0;
         rowTouched_[row] = 0;
     }
     touched_.clear();
