@@ -52,33 +52,37 @@ struct BoxFrame {
     }
 };
 
-/// Per-box constants of slab k along x, computed once per primitive.
-struct SlabAlongX {
-    double a;         ///< the slab normal's x component
-    double base;      ///< index coordinate of the box centre: (cx - origin) / voxel - 0.5
+/// Slab k of a box seen along one grid axis: the test at index i is
+/// |a * (centre(axis, i) - c) + t| <= h, with t the part of the distance that does not depend on i.
+struct SlabLine {
+    int axis;
+    double a, c, h;
+    double base;      ///< index coordinate of the box centre: (c - origin) / voxel - 0.5
     double perIndex;  ///< 1 / (a * voxel): index units per unit of signed distance
-    static SlabAlongX of(const BoxFrame& b, int k, const GridSpec& grid) {
-        const double a = b.a[k][0];
-        return {a, (b.c[0] - grid.origin[0]) / grid.voxelSize - 0.5, a != 0.0 ? 1.0 / (a * grid.voxelSize) : 0.0};
+    static SlabLine of(const BoxFrame& b, int k, int axis, const GridSpec& grid) {
+        const double a = b.a[k][axis];
+        return {axis, a, b.c[axis], b.h[k], (b.c[axis] - grid.origin[axis]) / grid.voxelSize - 0.5,
+                a != 0.0 ? 1.0 / (a * grid.voxelSize) : 0.0};
+    }
+    bool test(const GridSpec& grid, long i, double t) const {
+        return std::fabs(a * (grid.centre(axis, i) - c) + t) <= h;
     }
 };
 
-/// Indices i in [lo, hi] of one row whose centres pass slab k; returns false if none.
-/// Only i in [first, last] are considered.
-inline bool slabInterval(const BoxFrame& b, int k, const SlabAlongX& s, double rowTermK, const GridSpec& grid,
-                         long first, long last, long& lo, long& hi) {
+/// Indices i in [lo, hi] within [first, last] that pass the slab test with offset t; false if none.
+/// Exact: equals testing every index, because the signed distance is monotone in i.
+inline bool slabInterval(const SlabLine& s, double t, const GridSpec& grid, long first, long last, long& lo, long& hi) {
     const double a = s.a;
-    auto test = [&](long i) { return b.inSlab(k, grid.centre(0, i), rowTermK); };
-    if (a == 0.0) {  // the test does not depend on x at all (0 * finite + t == t exactly)
-        if (!(std::fabs(rowTermK) <= b.h[k])) return false;
+    if (a == 0.0) {  // the test does not depend on i at all (0 * finite + t == t exactly)
+        if (!(std::fabs(t) <= s.h)) return false;
         lo = first;
         hi = last;
         return true;
     }
     constexpr double kReliableSlope = 1e-3, kMargin = 1e-4;
     if (std::fabs(a) >= kReliableSlope) {
-        const double t1 = s.base + (-b.h[k] - rowTermK) * s.perIndex;
-        const double t2 = s.base + (b.h[k] - rowTermK) * s.perIndex;
+        const double t1 = s.base + (-s.h - t) * s.perIndex;
+        const double t2 = s.base + (s.h - t) * s.perIndex;
         const double tl0 = std::min(t1, t2), th0 = std::max(t1, t2);
         if (!(th0 >= double(first) - 1.0 && tl0 <= double(last) + 1.0)) return false;
         const double tl = std::max(tl0, double(first) - 1.0), th = std::min(th0, double(last) + 1.0);
@@ -86,34 +90,27 @@ inline bool slabInterval(const BoxFrame& b, int k, const SlabAlongX& s, double r
         lo = std::max(first, long(cl));
         hi = std::min(last, long(fh));
         if (cl - tl < kMargin || tl - (cl - 1.0) < kMargin) {  // close to an integer: let the test decide
-            while (lo > first && test(lo - 1)) --lo;
-            while (lo <= hi && !test(lo)) ++lo;
+            while (lo > first && s.test(grid, lo - 1, t)) --lo;
+            while (lo <= hi && !s.test(grid, lo, t)) ++lo;
         }
         if (th - fh < kMargin || (fh + 1.0) - th < kMargin) {
-            while (hi < last && test(hi + 1)) ++hi;
-            while (hi >= lo && !test(hi)) --hi;
+            while (hi < last && s.test(grid, hi + 1, t)) ++hi;
+            while (hi >= lo && !s.test(grid, hi, t)) --hi;
         }
         return lo <= hi;
     }
-    // Nearly perpendicular to x: bisect on the monotone signed distance, using the test itself.
+    // Nearly perpendicular to the axis: bisect on the monotone signed distance.
     const bool increasing = a > 0;
-    auto above = [&](long i) {  // signed distance >= -h (increasing) or <= h (decreasing)
-        const double d = a * (grid.centre(0, i) - b.c[0]) + rowTermK;
-        return increasing ? d >= -b.h[k] : d <= b.h[k];
-    };
-    auto below = [&](long i) {
-        const double d = a * (grid.centre(0, i) - b.c[0]) + rowTermK;
-        return increasing ? d <= b.h[k] : d >= -b.h[k];
-    };
-    // first index where above() holds
-    long l = first, r = last + 1;
+    auto distance = [&](long i) { return a * (grid.centre(s.axis, i) - s.c) + t; };
+    auto above = [&](long i) { return increasing ? distance(i) >= -s.h : distance(i) <= s.h; };
+    auto below = [&](long i) { return increasing ? distance(i) <= s.h : distance(i) >= -s.h; };
+    long l = first, r = last + 1;  // first index where above() holds
     while (l < r) {
         const long m = l + (r - l) / 2;
         if (above(m)) r = m; else l = m + 1;
     }
     lo = l;
-    // last index where below() holds
-    l = first - 1;
+    l = first - 1;  // last index where below() holds
     r = last;
     while (l < r) {
         const long m = l + (r - l + 1) / 2;

@@ -11,34 +11,49 @@ namespace shapevo {
 
 Voxelizer::Voxelizer(const GridSpec& grid)
     : grid_(grid), words_(grid.wordsPerRow()), occupied_(grid.words(), 0), overlap_(grid.words(), 0),
-      rowTouched_(grid.rows(), 0) {
-    touched_.reserve(grid.rows());
+      yMin_(std::size_t(grid.nz), INT32_MAX), yMax_(std::size_t(grid.nz), -1) {
+    slices_.reserve(std::size_t(grid.nz));
 }
 
-void Voxelizer::markRow(std::size_t row, long lo, long hi) {
-    std::uint64_t* occ = &occupied_[row * std::size_t(words_)];
-    std::uint64_t* ovl = &overlap_[row * std::size_t(words_)];
-    if (!rowTouched_[row]) {
-        rowTouched_[row] = 1;
-        touched_.push_back(std::uint32_t(row));
-    }
+void Voxelizer::markRows(long z, long y0, long y1, long lo, long hi) {
+    if (yMin_[z] > yMax_[z]) slices_.push_back(std::uint32_t(z));
+    yMin_[z] = std::min<std::int32_t>(yMin_[z], std::int32_t(y0));
+    yMax_[z] = std::max<std::int32_t>(yMax_[z], std::int32_t(y1));
     const long w0 = lo >> 6, w1 = hi >> 6;
-    for (long w = w0; w <= w1; ++w) {
-        std::uint64_t mask = ~0ULL;
-        if (w == w0) mask &= ~0ULL << (lo & 63);
-        if (w == w1) mask &= ~0ULL >> (63 - (hi & 63));
-        ovl[w] |= occ[w] & mask;
-        occ[w] |= mask;
+    const std::uint64_t first = ~0ULL << (lo & 63), last = ~0ULL >> (63 - (hi & 63));
+    const std::size_t W = std::size_t(words_);
+    std::uint64_t* occ = &occupied_[(std::size_t(z) * std::size_t(grid_.ny) + std::size_t(y0)) * W];
+    std::uint64_t* ovl = &overlap_[(std::size_t(z) * std::size_t(grid_.ny) + std::size_t(y0)) * W];
+    if (w0 == w1) {  // the common case: the interval lies in one word
+        const std::uint64_t m = first & last;
+        for (long y = y0; y <= y1; ++y, occ += W, ovl += W) {
+            ovl[w0] |= occ[w0] & m;
+            occ[w0] |= m;
+        }
+        return;
+    }
+    for (long y = y0; y <= y1; ++y, occ += W, ovl += W) {
+        ovl[w0] |= occ[w0] & first;
+        occ[w0] |= first;
+        for (long w = w0 + 1; w < w1; ++w) {
+            ovl[w] |= occ[w];
+            occ[w] = ~0ULL;
+        }
+        ovl[w1] |= occ[w1] & last;
+        occ[w1] |= last;
     }
 }
 
 namespace {
-/// True if every box axis is a grid axis (the common case: unrotated grammars, mirrors).
+/// True if every box axis is a distinct grid axis (the common case: unrotated grammars, mirrors).
 bool axisAligned(const BoxFrame& b) {
+    int seen = 0;
     for (int k = 0; k < 3; ++k) {
-        int nonzero = 0;
-        for (int j = 0; j < 3; ++j) nonzero += b.a[k][j] != 0.0;
-        if (nonzero != 1) return false;
+        int nonzero = 0, axis = 0;
+        for (int j = 0; j < 3; ++j)
+            if (b.a[k][j] != 0.0) ++nonzero, axis = j;
+        if (nonzero != 1 || (seen & (1 << axis))) return false;
+        seen |= 1 << axis;
     }
     return true;
 }
@@ -58,7 +73,7 @@ void Voxelizer::addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
         counts.outside += std::uint64_t(hi - std::max(lo, nx) + 1);
         hi = nx - 1;
     }
-    if (lo <= hi) markRow(std::size_t(z) * std::size_t(grid_.ny) + std::size_t(y), lo, hi);
+    if (lo <= hi) markRows(z, y, y, lo, hi);
 }
 
 void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
@@ -75,48 +90,45 @@ void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
         last[j] = long(std::min(std::ceil(t1) + 1.0, double(2 * n[j] - 1)));
         if (first[j] > last[j]) return;
     }
-    const SlabAlongX slab[3] = {SlabAlongX::of(b, 0, grid_), SlabAlongX::of(b, 1, grid_), SlabAlongX::of(b, 2, grid_)};
+    if (axisAligned(b)) {
+        // Each slab depends on one grid axis only (the other products are exact zeros, and
+        // v + 0 == v), so the covered voxels are a box of index ranges, one per axis.
+        long range[3][2];
+        for (int k = 0; k < 3; ++k) {
+            int j = 0;
+            while (b.a[k][j] == 0.0) ++j;
+            if (!slabInterval(SlabLine::of(b, k, j, grid_), 0.0, grid_, first[j], last[j], range[j][0], range[j][1])) return;
+        }
+        // Everything below is arithmetic on the three ranges: rows off the grid in y or z count
+        // their whole interval as outside, rows on it count the part beyond x.
+        const long lo = range[0][0], hi = range[0][1];
+        const std::uint64_t len = std::uint64_t(hi - lo + 1);
+        const std::uint64_t rowsY = std::uint64_t(range[1][1] - range[1][0] + 1);
+        const std::uint64_t rowsZ = std::uint64_t(range[2][1] - range[2][0] + 1);
+        counts.rows += rowsY * rowsZ;
+        const long gy0 = std::max(range[1][0], 0L), gy1 = std::min(range[1][1], n[1] - 1);
+        const long gz0 = std::max(range[2][0], 0L), gz1 = std::min(range[2][1], n[2] - 1);
+        const long gx0 = std::max(lo, 0L), gx1 = std::min(hi, n[0] - 1);
+        const std::uint64_t inGridRows =
+            (gy0 <= gy1 && gz0 <= gz1) ? std::uint64_t(gy1 - gy0 + 1) * std::uint64_t(gz1 - gz0 + 1) : 0;
+        const std::uint64_t inGridLen = gx0 <= gx1 ? std::uint64_t(gx1 - gx0 + 1) : 0;
+        counts.outside += (rowsY * rowsZ - inGridRows) * len + inGridRows * (len - inGridLen);
+        if (inGridRows == 0 || inGridLen == 0) return;
+        for (long z = gz0; z <= gz1; ++z) markRows(z, gy0, gy1, gx0, gx1);
+        return;
+    }
+    const SlabLine slab[3] = {SlabLine::of(b, 0, 0, grid_), SlabLine::of(b, 1, 0, grid_), SlabLine::of(b, 2, 0, grid_)};
     auto rowInterval = [&](double cy, double cz, long& lo, long& hi) {
         lo = first[0];
         hi = last[0];
         for (int k = 0; k < 3; ++k) {
             long l, h;
-            if (!slabInterval(b, k, slab[k], b.rowTerm(k, cy, cz), grid_, lo, hi, l, h)) return false;
+            if (!slabInterval(slab[k], b.rowTerm(k, cy, cz), grid_, lo, hi, l, h)) return false;
             lo = l;
             hi = h;
         }
         return true;
     };
-    if (axisAligned(b)) {
-        // Each slab depends on one grid axis only (the other products are exact zeros), so the
-        // x-interval is the same on every row, and a row passes or fails by its y and z alone.
-        int governs[3];  // governs[j] = the slab whose normal is grid axis j
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j)
-                if (b.a[k][j] != 0.0) governs[j] = k;
-        const double y0 = grid_.centre(1, first[1]), z0 = grid_.centre(2, first[2]);
-        long lo, hi;
-        const int kx = governs[0];
-        if (!slabInterval(b, kx, slab[kx], b.rowTerm(kx, y0, z0), grid_, first[0], last[0], lo, hi)) return;
-        long range[3][2];  // passing index range along y (1) and z (2)
-        for (int j = 1; j < 3; ++j) {
-            const int k = governs[j];
-            range[j][0] = last[j] + 1;
-            range[j][1] = last[j];
-            for (long i = first[j]; i <= last[j]; ++i) {
-                const double cy = j == 1 ? grid_.centre(1, i) : y0, cz = j == 2 ? grid_.centre(2, i) : z0;
-                if (!b.inSlab(k, grid_.centre(0, lo), b.rowTerm(k, cy, cz))) continue;
-                range[j][0] = std::min(range[j][0], i);
-                range[j][1] = i;
-            }
-        }
-        for (long z = range[2][0]; z <= range[2][1]; ++z)
-            for (long y = range[1][0]; y <= range[1][1]; ++y) {
-                ++counts.rows;
-                addRow(y, z, lo, hi, counts);
-            }
-        return;
-    }
     for (long z = first[2]; z <= last[2]; ++z) {
         const double cz = grid_.centre(2, z);
         for (long y = first[1]; y <= last[1]; ++y) {
@@ -127,35 +139,58 @@ void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
     }
 }
 
+namespace {
+/// Count one block of words against the target and zero it; the avoid term only if asked.
+template <bool kAvoid>
+void countAndClear(std::uint64_t* occ, std::uint64_t* ovl, const std::uint64_t* fill, const std::uint64_t* avoid,
+                   std::size_t begin, std::size_t end, VoxelCounts& c) {
+    std::uint64_t occupied = 0, inside = 0, avoided = 0, overlap = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+        const std::uint64_t o = occ[i];
+        occupied += std::uint64_t(std::popcount(o));
+        inside += std::uint64_t(std::popcount(o & fill[i]));
+        if constexpr (kAvoid) avoided += std::uint64_t(std::popcount(o & avoid[i]));
+        overlap += std::uint64_t(std::popcount(ovl[i]));
+        occ[i] = 0;
+        ovl[i] = 0;
+    }
+    c.occupied += occupied;
+    c.inside += inside;
+    c.avoided += avoided;
+    c.overlap += overlap;
+}
+}  // namespace
+
 VoxelCounts Voxelizer::score(const std::vector<Primitive>& primitives, const VolumeTarget& target) {
     VoxelCounts counts;
     for (const Primitive& p : primitives) add(p, counts);
-    const bool hasAvoid = target.avoidCount > 0;
-    // Count and clear in one pass over the touched rows only.
-    for (std::uint32_t row : touched_) {
-        const std::size_t base = std::size_t(row) * std::size_t(words_);
-        for (int w = 0; w < words_; ++w) {
-            const std::uint64_t o = occupied_[base + w];
-            counts.occupied += std::uint64_t(std::popcount(o));
-            counts.inside += std::uint64_t(std::popcount(o & target.fill[base + w]));
-            if (hasAvoid) counts.avoided += std::uint64_t(std::popcount(o & target.avoid[base + w]));
-            counts.overlap += std::uint64_t(std::popcount(overlap_[base + w]));
-            occupied_[base + w] = 0;
-            overlap_[base + w] = 0;
-        }
-        rowTouched_[row] = 0;
+    const std::size_t W = std::size_t(words_), ny = std::size_t(grid_.ny);
+    // Count and clear in one sweep over each slice's written rows (contiguous words).
+    for (std::uint32_t z : slices_) {
+        const std::size_t begin = (std::size_t(z) * ny + std::size_t(yMin_[z])) * W;
+        const std::size_t end = (std::size_t(z) * ny + std::size_t(yMax_[z]) + 1) * W;
+        if (target.avoidCount > 0)
+            countAndClear<true>(occupied_.data(), overlap_.data(), target.fill.data(), target.avoid.data(), begin, end, counts);
+        else
+            countAndClear<false>(occupied_.data(), overlap_.data(), target.fill.data(), nullptr, begin, end, counts);
+        yMin_[z] = INT32_MAX;
+        yMax_[z] = -1;
     }
-    touched_.clear();
+    slices_.clear();
     return counts;
 }
 
 void Voxelizer::clear() {
-    for (std::uint32_t row : touched_) {
-        const std::size_t base = std::size_t(row) * std::size_t(words_);
-        for (int w = 0; w < words_; ++w) occupied_[base + w] = overlap_[base + w] = 0;
-        rowTouched_[row] = 0;
+    const std::size_t W = std::size_t(words_), ny = std::size_t(grid_.ny);
+    for (std::uint32_t z : slices_) {
+        const std::size_t begin = (std::size_t(z) * ny + std::size_t(yMin_[z])) * W;
+        const std::size_t end = (std::size_t(z) * ny + std::size_t(yMax_[z]) + 1) * W;
+        std::fill(occupied_.begin() + std::ptrdiff_t(begin), occupied_.begin() + std::ptrdiff_t(end), 0);
+        std::fill(overlap_.begin() + std::ptrdiff_t(begin), overlap_.begin() + std::ptrdiff_t(end), 0);
+        yMin_[z] = INT32_MAX;
+        yMax_[z] = -1;
     }
-    touched_.clear();
+    slices_.clear();
 }
 
 }  // namespace shapevo

@@ -3,6 +3,9 @@
 // directly (box_rows.hpp) and OR-ed in as word masks; a voxel covered twice sets its overlap bit.
 // Voxel centres outside the grid (within a halo of one grid extent on every side) count as
 // "outside", once per primitive that covers them.
+//
+// Bookkeeping is per z slice: the range of rows [yMin, yMax] written since the last count, so
+// counting and clearing sweep contiguous memory and touch nothing else.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -18,7 +21,7 @@ struct VoxelCounts {
     std::uint64_t avoided = 0;   ///< covered and in an avoid target
     std::uint64_t overlap = 0;   ///< grid voxels covered by two or more primitives
     std::uint64_t outside = 0;   ///< covered voxel centres outside the grid (per primitive)
-    std::uint64_t rows = 0;      ///< voxel rows visited (work measure for benchmarks)
+    std::uint64_t rows = 0;      ///< voxel rows a primitive was rasterized into (work measure for benchmarks)
     bool operator==(const VoxelCounts&) const = default;
 };
 
@@ -28,22 +31,23 @@ public:
     /// Voxelize all primitives and count them against `target` (same grid); leaves the
     /// voxelizer empty for the next model.
     VoxelCounts score(const std::vector<Primitive>& primitives, const VolumeTarget& target);
-    /// Voxelize without counting; `occupancy()` then holds the model's bit rows until clear().
+    /// Voxelize one primitive without counting; `occupancy()` holds the bit rows until clear().
     void add(const Primitive& p, VoxelCounts& counts);
     const std::vector<std::uint64_t>& occupancy() const { return occupied_; }
     void clear();
     const GridSpec& grid() const { return grid_; }
 
 private:
-    void markRow(std::size_t row, long lo, long hi);
     /// Cover [lo, hi] of row (y, z), counting what falls outside the grid.
     void addRow(long y, long z, long lo, long hi, VoxelCounts& counts);
+    /// OR the same x-interval [lo, hi] (inside the grid) into rows y0..y1 of slice z.
+    void markRows(long z, long y0, long y1, long lo, long hi);
 
     GridSpec grid_;
     int words_;
     std::vector<std::uint64_t> occupied_, overlap_;
-    std::vector<std::uint32_t> touched_;  ///< rows with any bit set, in first-touch order
-    std::vector<std::uint8_t> rowTouched_;
+    std::vector<std::int32_t> yMin_, yMax_;  ///< per z slice: written rows, yMin > yMax if none
+    std::vector<std::uint32_t> slices_;      ///< z slices with rows written, in first-touch order
 };
 
 }  // namespace shapevo
