@@ -9,7 +9,10 @@
 //    axis-aligned boxes of the same sizes (the voxelizer's fast path) for comparison.
 // Grids: reachable = targets/spaceship-reachable.vdb with its default padded grid; paper =
 // targets/spaceship-paper.vdb on the papers' grid (min (-5,-5,-2), max (5,5,18), voxel 0.1).
-// Counters: evals/s, voxel_rows/s (VoxelCounts::rows per second), rows/eval.
+// Counters: evals/s; voxel_rows/s = rows a primitive was rasterized into, per second
+// (VoxelCounts::rows, the work the sparse voxelizer really does); grid_rows/s = evals/s x the
+// grid's ny*nz rows, i.e. the rows of the target grid each evaluation scores, which a dense
+// voxelizer (like the papers' GPU one) must sweep for every model; rows/eval.
 //
 //   cd build && ninja bench_score && taskset -c 1 ./bench/bench_score --benchmark_min_time=1
 #include <benchmark/benchmark.h>
@@ -74,8 +77,11 @@ std::string gridLabel(const char* what, const GridSpec& g) {
            " @" + std::to_string(g.voxelSize).substr(0, 5);
 }
 
-void setCounters(benchmark::State& state, std::uint64_t rows) {
+void setCounters(benchmark::State& state, std::uint64_t rows, const GridSpec* grid = nullptr) {
     state.SetItemsProcessed(state.iterations());
+    if (grid)
+        state.counters["grid_rows/s"] =
+            benchmark::Counter(double(state.iterations()) * double(grid->rows()), benchmark::Counter::kIsRate);
     state.counters["evals/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["voxel_rows/s"] = benchmark::Counter(double(rows), benchmark::Counter::kIsRate);
     state.counters["rows/eval"] = benchmark::Counter(double(rows), benchmark::Counter::kAvgIterations);
@@ -96,7 +102,7 @@ void BM_DeriveScore(benchmark::State& state) {
         rows += counts.rows;
         if (++i == pop.size()) i = 0;
     }
-    setCounters(state, rows);
+    setCounters(state, rows, &target.grid);
     state.SetLabel(gridLabel(state.range(0) == 0 ? "reachable grid" : "paper grid", target.grid));
 }
 
@@ -116,7 +122,7 @@ void BM_ScoreOnly(benchmark::State& state) {
         rows += counts.rows;
         if (++i == models.size()) i = 0;
     }
-    setCounters(state, rows);
+    setCounters(state, rows, &target.grid);
     state.SetLabel(gridLabel(state.range(0) == 0 ? "reachable grid" : "paper grid", target.grid));
 }
 

@@ -21,8 +21,8 @@ import sys
 
 PROGRAMS = ["bench_derive", "bench_score", "bench_operators", "bench_generation"]
 # Counters with their own column; any other user counter goes to "other".
-KEY_COUNTERS = ["items_per_second", "evals/s", "voxel_rows/s", "primitives/s"]
-HEADERS = ["items/s", "evals/s", "voxel rows/s", "primitives/s"]
+KEY_COUNTERS = ["items_per_second", "evals/s", "voxel_rows/s", "grid_rows/s", "primitives/s"]
+HEADERS = ["items/s", "evals/s", "rasterized rows/s", "grid rows/s", "primitives/s"]
 STANDARD_FIELDS = {
     "name", "family_index", "per_family_instance_index", "run_name", "run_type", "repetitions",
     "repetition_index", "threads", "iterations", "real_time", "cpu_time", "time_unit", "label",

@@ -80,18 +80,21 @@ void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::ve
     }
 }
 
+int ExpressionCompiler::binary(char op, int left, int right, const SourceLocation& where) {
+    Node n{Node::Binary};
+    n.op = op;
+    n.child[0] = left;
+    n.child[1] = right;
+    n.dims = std::max(nodes_[left].dims, nodes_[right].dims);
+    n.where = where;
+    return add(n);
+}
+
 int ExpressionCompiler::parseSum() {
     int left = parseProduct();
     while (tokens_.peek().is('+') || tokens_.peek().is('-')) {
-        Token op = tokens_.take();
-        int right = parseProduct();
-        Node n{Node::Binary};
-        n.op = op.text[0];
-        n.child[0] = left;
-        n.child[1] = right;
-        n.dims = std::max(nodes_[left].dims, nodes_[right].dims);
-        n.where = op.where;
-        left = add(n);
+        const Token op = tokens_.take();
+        left = binary(op.text[0], left, parseProduct(), op.where);
     }
     return left;
 }
@@ -99,15 +102,8 @@ int ExpressionCompiler::parseSum() {
 int ExpressionCompiler::parseProduct() {
     int left = parseUnary();
     while (tokens_.peek().is('*') || tokens_.peek().is('/')) {
-        Token op = tokens_.take();
-        int right = parseUnary();
-        Node n{Node::Binary};
-        n.op = op.text[0];
-        n.child[0] = left;
-        n.child[1] = right;
-        n.dims = std::max(nodes_[left].dims, nodes_[right].dims);
-        n.where = op.where;
-        left = add(n);
+        const Token op = tokens_.take();
+        left = binary(op.text[0], left, parseUnary(), op.where);
     }
     return left;
 }

@@ -47,6 +47,8 @@ private:
         int child[3] = {-1, -1, -1};
         SourceLocation where;
     };
+    /// A Binary node `left op right` (a vector if either side is).
+    int binary(char op, int left, int right, const SourceLocation& where);
     int parseSum();
     int parseProduct();
     int parseUnary();
