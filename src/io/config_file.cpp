@@ -26,7 +26,11 @@ class Reader {
 public:
     Reader(const toml::table& root, std::string path) : root_(root), path_(std::move(path)) {}
 
-    [[noreturn]] void fail(const toml::node& n, const std::string& what) const { throw InputError(path_, place(n), what); }
+    /// Values from --set were parsed on their own and carry no file: name the option instead.
+    [[noreturn]] void fail(const toml::node& n, const std::string& what) const {
+        if (!n.source().path) throw InputError("--set", "", what);
+        throw InputError(path_, place(n), what);
+    }
 
     const toml::table* section(const std::string& name) {
         known_[name];
@@ -90,12 +94,15 @@ public:
             const std::string name(k.str());
             auto it = known_.find(name);
             if (it == known_.end()) fail(v, "unknown section [" + name + "] (expected one of: " + list(known_) + ")");
-            for (const auto& [kk, vv] : *v.as_table()) {
-                if (!it->second.count(std::string(kk.str())))
-                    throw InputError(path_, std::to_string(kk.source().begin.line) + ":" + std::to_string(kk.source().begin.column),
-                                     "unknown key '" + std::string(kk.str()) + "' in [" + name + "] (expected one of: " +
-                                 join(it->second) + ")");
-                (void)vv;
+            for (const auto& entry : *v.as_table()) {
+                const toml::key& kk = entry.first;
+                if (!it->second.count(std::string(kk.str()))) {
+                    const std::string what = "unknown key '" + std::string(kk.str()) + "' in [" + name +
+                                             "] (expected one of: " + join(it->second) + ")";
+                    if (!kk.source().path) throw InputError("--set", "", what);
+                    throw InputError(path_, std::to_string(kk.source().begin.line) + ":" +
+                                                std::to_string(kk.source().begin.column), what);
+                }
             }
         }
     }

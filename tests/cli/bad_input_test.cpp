@@ -57,6 +57,14 @@ TEST(BadInput, BadSetOverrideIsRejected) {
     expectInputError(runShapevo("run " + validConfig(dir) + " --set population -q"), "--set:population: expected key=value");
 }
 
+TEST(BadInput, BadSetValuesNameTheOptionNotTheConfigFile) {
+    TempDir dir;
+    const std::string cfg = validConfig(dir);
+    expectInputError(runShapevo("run " + cfg + " --set ga.population='\"many\"' -q"), "--set: ga.population must be a number");
+    expectInputError(runShapevo("run " + cfg + " --set ga.popsize=3 -q"), "--set: unknown key 'popsize' in [ga]");
+    expectInputError(runShapevo("run " + cfg + " --set gaa.population=3 -q"), "--set: unknown section [gaa]");
+}
+
 TEST(BadInput, UnknownCommandLineOptionExitsWithTwo) {
     const auto r = runShapevo("run --frobnicate x.toml");
     EXPECT_EQ(r.exitCode, 2) << r.output;
