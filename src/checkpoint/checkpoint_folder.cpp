@@ -1,0 +1,103 @@
+// Checkpoint folders inside a run folder: their names, finding the published ones newest first,
+// publishing a finished `.checkpoint-NNNNNN.partial/` with one rename, and pruning old ones.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "checkpoint/checkpoint_file.hpp"
+
+namespace shapevo {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kPrefix = "checkpoint-";
+
+/// The generation of a folder named checkpoint-NNNNNN (six to ten digits), or -1.
+long long publishedGeneration(const std::string& name) {
+    if (!name.starts_with(kPrefix)) return -1;
+    const std::string digits = name.substr(kPrefix.size());
+    if (digits.size() < 6 || digits.size() > 10) return -1;
+    long long g = 0;
+    for (char c : digits) {
+        if (c < '0' || c > '9') return -1;
+        g = g * 10 + (c - '0');
+    }
+    return g;
+}
+
+bool isPartial(const std::string& name) {
+    return name.starts_with(".checkpoint-") && name.ends_with(".partial");
+}
+
+void fsyncFolder(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(path + ": cannot open folder to fsync: " + std::strerror(errno));
+    const int rc = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    if (rc != 0) throw std::runtime_error(path + ": fsync failed: " + std::strerror(err));
+}
+
+}  // namespace
+
+std::string checkpointName(std::uint32_t generation) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "checkpoint-%06u", unsigned(generation));
+    return buf;
+}
+
+std::string islandFileName(int rank) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "island-%04d.h5", rank);
+    return buf;
+}
+
+std::vector<std::string> listCheckpoints(const std::string& runDir) {
+    std::vector<std::pair<long long, std::string>> found;
+    std::error_code ec;
+    for (fs::directory_iterator it(runDir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const long long g = publishedGeneration(name);
+        std::error_code typeError;
+        if (g >= 0 && it->is_directory(typeError)) found.emplace_back(g, it->path().string());
+    }
+    // Newest first; equal generations (checkpoint-000400 and checkpoint-0000400) by name.
+    std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second > b.second;
+    });
+    std::vector<std::string> out;
+    for (auto& f : found) out.push_back(std::move(f.second));
+    return out;
+}
+
+void pruneCheckpoints(const std::string& runDir, int keep) {
+    const std::vector<std::string> published = listCheckpoints(runDir);
+    std::error_code ec;
+    for (std::size_t i = std::size_t(std::max(keep, 1)); i < published.size(); ++i) fs::remove_all(published[i], ec);
+    std::vector<fs::path> partial;
+    for (fs::directory_iterator it(runDir, ec), end; !ec && it != end; it.increment(ec))
+        if (isPartial(it->path().filename().string())) partial.push_back(it->path());
+    for (const fs::path& p : partial) fs::remove_all(p, ec);
+}
+
+void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder) {
+    std::error_code ec;
+    if (fs::exists(finalFolder, ec))
+        throw std::runtime_error(finalFolder + ": already exists; not replacing a published checkpoint");
+    // The files were fsynced as they were written; fsync the folder so their names are durable too.
+    fsyncFolder(partialFolder);
+    fs::rename(partialFolder, finalFolder, ec);
+    if (ec) throw std::runtime_error("cannot publish " + partialFolder + " as " + finalFolder + ": " + ec.message());
+    fs::path parent = fs::path(finalFolder).parent_path();
+    fsyncFolder(parent.empty() ? "." : parent.string());
+}
+
+}  // namespace shapevo

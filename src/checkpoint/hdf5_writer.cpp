@@ -1,0 +1,120 @@
+// H5Writer: creates checkpoint HDF5 files (see hdf5_file.hpp): checksummed datasets, scalar
+// attributes, no timestamps, and a flush + close + fsync at the end.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "checkpoint/hdf5_file.hpp"
+#include "io/genome_file.hpp"
+
+namespace shapevo::h5 {
+
+namespace {
+constexpr hsize_t kCurveChunkRows = 64;
+
+/// Object creation properties shared by groups and datasets: no access/modification times, so
+/// writing the same state twice gives byte-identical files.
+Handle untimed(hid_t cls) {
+    Handle p = plistHandle(H5Pcreate(cls));
+    if (p.valid()) H5Pset_obj_track_times(p.get(), false);
+    return p;
+}
+}  // namespace
+
+H5Writer::H5Writer(std::string path) : path_(std::move(path)) {
+    silenceErrorPrinting();
+    file_ = fileHandle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    if (!file_.valid()) fail("cannot create HDF5 file");
+}
+
+void H5Writer::fail(const std::string& what) const {
+    throw std::runtime_error(path_ + ": " + what + ": " + takeErrorMessage());
+}
+
+Handle H5Writer::group(hid_t parent, const char* name) {
+    Handle gcpl = untimed(H5P_GROUP_CREATE);
+    Handle g = groupHandle(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT));
+    if (!g.valid()) fail(std::string("cannot create group ") + name);
+    return g;
+}
+
+Handle H5Writer::dataset(hid_t parent, const char* name, hid_t type, std::span<const std::uint8_t> bytes,
+                       std::span<const hsize_t> dims, bool extendible) {
+    std::vector<hsize_t> max(dims.begin(), dims.end()), chunk(dims.begin(), dims.end());
+    Handle dcpl = untimed(H5P_DATASET_CREATE);
+    if (extendible) {
+        max[0] = H5S_UNLIMITED;
+        chunk[0] = kCurveChunkRows;
+        if (H5Pset_chunk(dcpl.get(), int(chunk.size()), chunk.data()) < 0) fail(std::string("cannot chunk ") + name);
+    }
+    Handle space = spaceHandle(H5Screate_simple(int(dims.size()), dims.data(), max.data()));
+    if (!space.valid()) fail(std::string("cannot make the dataspace of ") + name);
+    Handle d = datasetHandle(H5Dcreate2(parent, name, type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
+    if (!d.valid()) fail(std::string("cannot create dataset ") + name);
+    // The memory type equals the (little-endian) file type: the bytes go to disk unconverted.
+    if (!bytes.empty() && H5Dwrite(d.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()) < 0)
+        fail(std::string("cannot write dataset ") + name);
+    attribute(d.get(), kChecksumAttribute, fnv1a(bytes.data(), bytes.size()));
+    return d;
+}
+
+Handle H5Writer::text(hid_t parent, const char* name, const std::string& text) {
+    Handle type = typeHandle(H5Tcopy(H5T_C_S1));
+    // HDF5 has no zero-length fixed strings: an empty text is stored as one NUL.
+    const std::string stored = text.empty() ? std::string(1, '\0') : text;
+    if (!type.valid() || H5Tset_size(type.get(), stored.size()) < 0 || H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 ||
+        H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+        fail(std::string("cannot make the string type of ") + name);
+    Handle space = spaceHandle(H5Screate(H5S_SCALAR));
+    Handle dcpl = untimed(H5P_DATASET_CREATE);
+    Handle d = datasetHandle(H5Dcreate2(parent, name, type.get(), space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
+    if (!d.valid()) fail(std::string("cannot create dataset ") + name);
+    if (H5Dwrite(d.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, stored.data()) < 0)
+        fail(std::string("cannot write dataset ") + name);
+    attribute(d.get(), kChecksumAttribute, fnv1a(stored.data(), stored.size()));
+    return d;
+}
+
+void H5Writer::scalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, const void* v) {
+    Handle space = spaceHandle(H5Screate(H5S_SCALAR));
+    Handle a = attributeHandle(H5Acreate2(object, name, fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+    if (!a.valid() || H5Awrite(a.get(), memType, v) < 0) fail(std::string("cannot write attribute ") + name);
+}
+
+void H5Writer::attribute(hid_t object, const char* name, std::uint32_t v) {
+    scalarAttribute(object, name, H5T_STD_U32LE, H5T_NATIVE_UINT32, &v);
+}
+void H5Writer::attribute(hid_t object, const char* name, std::int32_t v) {
+    scalarAttribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &v);
+}
+void H5Writer::attribute(hid_t object, const char* name, std::uint64_t v) {
+    scalarAttribute(object, name, H5T_STD_U64LE, H5T_NATIVE_UINT64, &v);
+}
+void H5Writer::attribute(hid_t object, const char* name, double v) {
+    scalarAttribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &v);
+}
+void H5Writer::attribute(hid_t object, const char* name, const std::string& v) {
+    Handle type = typeHandle(H5Tcopy(H5T_C_S1));
+    const std::string stored = v.empty() ? std::string(1, '\0') : v;
+    if (!type.valid() || H5Tset_size(type.get(), stored.size()) < 0 || H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 ||
+        H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+        fail(std::string("cannot make the string type of attribute ") + name);
+    scalarAttribute(object, name, type.get(), type.get(), stored.data());
+}
+
+void H5Writer::finish() {
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
+    if (!file_.close()) fail("cannot close");
+    // HDF5 leaves the data in the page cache; fsync so a crash after publishing cannot lose it.
+    const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(path_ + ": cannot reopen to fsync: " + std::strerror(errno));
+    const int rc = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    if (rc != 0) throw std::runtime_error(path_ + ": fsync failed: " + std::strerror(err));
+}
+
+}  // namespace shapevo::h5

@@ -1,0 +1,165 @@
+// Island codec: IslandState <-> raw little-endian dataset bytes, with every content check of the
+// checkpoint reader (see island_codec.hpp). Sizes are checked against each other before anything
+// is allocated, so lying counts cannot make the reader allocate more than the bytes it was given.
+#include "checkpoint/island_codec.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "checkpoint/little_endian.hpp"
+#include "genome/validate.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+
+using namespace island_layout;
+
+/// Integers in the curve are stored as f64; 2^53 is the largest bound below which all are exact.
+constexpr double kMaxExactInteger = 9007199254740992.0;
+
+std::string count(std::size_t n, const char* what) { return std::to_string(n) + " " + what; }
+
+/// Number of `width`-byte elements in `bytes`, or an InputError if it is not whole elements.
+std::size_t elements(std::span<const std::uint8_t> bytes, std::size_t width, const std::string& path, const char* where,
+                     const char* type) {
+    if (bytes.size() % width != 0)
+        throw InputError(path, where, count(bytes.size(), "bytes is not a whole number of ") + type + " values");
+    return bytes.size() / width;
+}
+
+void expectElements(std::span<const std::uint8_t> bytes, std::size_t width, std::uint64_t expected,
+                    const std::string& path, const char* where, const char* type, const char* why) {
+    const std::size_t n = elements(bytes, width, path, where, type);
+    if (n != expected)
+        throw InputError(path, where, "holds " + count(n, type) + " values, expected " + std::to_string(expected) + " (" +
+                                          why + ")");
+}
+
+/// An integer column of the curve: finite, whole, within [0, max].
+bool wholeInRange(double v, double max) { return std::isfinite(v) && v >= 0 && v <= max && std::floor(v) == v; }
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeCurve(const std::vector<GenerationStats>& curve) {
+    std::vector<std::uint8_t> out;
+    out.reserve(curve.size() * kCurveWidth * 8);
+    for (const GenerationStats& row : curve) {
+        if (double(row.evaluations) > kMaxExactInteger)
+            throw std::invalid_argument("curve: " + std::to_string(row.evaluations) +
+                                        " evaluations cannot be stored exactly as f64");
+        for (double v : {double(row.generation), row.seconds, double(row.evaluations), row.best, row.mean, row.std})
+            le::append(out, v);
+    }
+    return out;
+}
+
+std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, const std::string& path,
+                                         const std::string& where) {
+    constexpr std::size_t kRowBytes = kCurveWidth * 8;
+    if (bytes.size() % kRowBytes != 0)
+        throw InputError(path, where, count(bytes.size(), "bytes is not a whole number of 6-column f64 rows"));
+    std::vector<GenerationStats> curve(bytes.size() / kRowBytes);
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+        const std::uint8_t* p = bytes.data() + i * kRowBytes;
+        double v[kCurveWidth];
+        for (std::size_t k = 0; k < kCurveWidth; ++k) v[k] = le::load<double>(p + 8 * k);
+        if (!wholeInRange(v[0], 4294967295.0))
+            throw InputError(path, where, "row " + std::to_string(i) + ": generation is not a whole number in [0, 2^32)");
+        if (!wholeInRange(v[2], kMaxExactInteger))
+            throw InputError(path, where, "row " + std::to_string(i) + ": evaluations is not a whole number in [0, 2^53]");
+        curve[i] = {std::uint32_t(v[0]), v[1], std::uint64_t(v[2]), v[3], v[4], v[5]};
+    }
+    return curve;
+}
+
+IslandBytes encodeIsland(const IslandState& s) {
+    const Population& pop = s.population;
+    if (pop.fitness.size() != pop.individuals.size())
+        throw std::invalid_argument("island " + std::to_string(s.rank) + ": " + count(pop.fitness.size(), "fitness values") +
+                                    " for " + count(pop.individuals.size(), "individuals"));
+    IslandBytes b;
+    b.rank = s.rank;
+    b.generation = s.generation;
+    b.evaluations = s.evaluations;
+    b.individuals = pop.size();
+    std::size_t words = 0;
+    for (const Chromosome& c : pop.individuals) words += c.words.size();
+    b.genes.reserve(words * 4);
+    b.offsets.reserve((pop.size() + 1) * 8);
+    le::append(b.offsets, std::uint64_t(0));
+    for (std::size_t i = 0; i < pop.size(); ++i) {
+        const Chromosome& c = pop.individuals[i];
+        for (std::uint32_t w : c.words) le::append(b.genes, w);
+        le::append(b.offsets, std::uint64_t(b.genes.size() / 4));
+        le::append(b.geneCounts, c.genes);
+        if (!std::isfinite(pop.fitness[i]))
+            throw std::invalid_argument("island " + std::to_string(s.rank) + ": fitness of individual " +
+                                        std::to_string(i) + " is not finite");
+        le::append(b.fitness, pop.fitness[i]);
+    }
+    for (std::uint64_t w : s.rng) le::append(b.rng, w);
+    b.curve = encodeCurve(s.curve);
+    return b;
+}
+
+IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
+                         const std::string& path) {
+    // 1. Shapes, all against the individuals attribute, before anything is allocated.
+    expectElements(v.rng, 8, 4, path, kRng, "u64", "the xoshiro256** state");
+    const std::size_t offsets = elements(v.offsets, 8, path, kOffsets, "u64");
+    if (offsets == 0 || offsets - 1 != v.individuals)
+        throw InputError(path, kOffsets, "holds " + count(offsets, "u64") + " values, expected individuals + 1 = " +
+                                             std::to_string(v.individuals) + " + 1 (the start of each and the end)");
+    expectElements(v.geneCounts, 4, v.individuals, path, kGeneCounts, "u32", "one per individual");
+    expectElements(v.fitness, 8, v.individuals, path, kFitness, "f64", "one per individual");
+    const std::size_t words = elements(v.genes, 4, path, kGenes, "u32");
+
+    // 2. Offsets: start at 0, never decrease, end at the number of words; no chromosome over 2^32 words.
+    const std::size_t n = std::size_t(v.individuals);
+    auto offset = [&](std::size_t i) { return le::load<std::uint64_t>(v.offsets.data() + 8 * i); };
+    if (offset(0) != 0) throw InputError(path, kOffsets, "first offset is " + std::to_string(offset(0)) + ", not 0");
+    for (std::size_t i = 0; i < n; ++i) {
+        if (offset(i + 1) < offset(i))
+            throw InputError(path, kOffsets, "offset " + std::to_string(i + 1) + " is smaller than offset " + std::to_string(i));
+        if (offset(i + 1) - offset(i) > UINT32_MAX)
+            throw InputError(path, kOffsets, "individual " + std::to_string(i) + " spans more than 2^32 words");
+    }
+    if (offset(n) != words)
+        throw InputError(path, kOffsets, "last offset is " + std::to_string(offset(n)) + " but " + kGenes + " holds " +
+                                             count(words, "words"));
+
+    // 3. Values: fitness finite, gene counts within the limit (cheap, before validating trees).
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(le::load<double>(v.fitness.data() + 8 * i)))
+            throw InputError(path, kFitness, "fitness of individual " + std::to_string(i) + " is not finite");
+        const std::uint32_t genes = le::load<std::uint32_t>(v.geneCounts.data() + 4 * i);
+        if (genes > limits.maxGenes)
+            throw InputError(path, kGeneCounts, "individual " + std::to_string(i) + " has " + count(genes, "genes") +
+                                                    ", over the limit of " + std::to_string(limits.maxGenes));
+    }
+
+    // 4. Build, validating every chromosome as a derivation of the grammar.
+    IslandState s;
+    s.rank = v.rank;
+    s.generation = v.generation;
+    s.evaluations = v.evaluations;
+    for (std::size_t k = 0; k < 4; ++k) s.rng[k] = le::load<std::uint64_t>(v.rng.data() + 8 * k);
+    s.population.individuals.resize(n);
+    s.population.fitness.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        Chromosome& c = s.population.individuals[i];
+        c.genes = le::load<std::uint32_t>(v.geneCounts.data() + 4 * i);
+        c.words.resize(std::size_t(offset(i + 1) - offset(i)));
+        for (std::size_t w = 0; w < c.words.size(); ++w)
+            c.words[w] = le::load<std::uint32_t>(v.genes.data() + 4 * (std::size_t(offset(i)) + w));
+        const std::string problem = validateChromosome(g, c, limits);
+        if (!problem.empty()) throw InputError(path, kGenes, "individual " + std::to_string(i) + ": " + problem);
+        s.population.fitness[i] = le::load<double>(v.fitness.data() + 8 * i);
+    }
+    s.curve = decodeCurve(v.curve, path, kCurve);
+    return s;
+}
+
+}  // namespace shapevo

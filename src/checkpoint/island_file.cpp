@@ -1,0 +1,86 @@
+// Island files (island-RRRR.h5): one island's state in HDF5. The names below are a stable public
+// format (README, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
+//
+//   /                         root group, attributes:
+//       schema_version        u32   format version of this layout (1)
+//       rank                  i32   the island (MPI rank) this file belongs to
+//       generation            u32   generations completed
+//       evaluations           u64   fitness evaluations on this island so far
+//       individuals           u64   population size (N)
+//   /population/genes         u32 [W]      every chromosome's words, concatenated in order
+//   /population/offsets       u64 [N+1]    word offset of each chromosome's start in genes; the
+//                                          last entry is W (chromosome i = words [o[i], o[i+1]))
+//   /population/gene_counts   u32 [N]      genes in each chromosome
+//   /population/fitness       f64 [N]      fitness of each individual
+//   /rng/state                u64 [4]      the island's xoshiro256** state
+//   /curve                    f64 [G x 6]  this island's fitness curve, one row per generation,
+//                                          chunked and extendible (G unlimited); attribute
+//       columns               string "generation,seconds,evaluations,best,mean,std"
+//
+// Every dataset has an attribute "fnv1a64" (u64): FNV-1a 64 of its raw little-endian bytes.
+// All numbers are stored little-endian. Reading checks types and shapes, every checksum (naming
+// the dataset that does not match), and then the content (island_codec.cpp): offsets start at 0,
+// never decrease and end at W, counts match N, each chromosome is a valid derivation of the
+// grammar within the genome limits, fitness values are finite.
+#include "checkpoint/checkpoint_file.hpp"
+#include "checkpoint/hdf5_file.hpp"
+#include "checkpoint/island_codec.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+
+void writeIslandFile(const std::string& path, const IslandState& s) {
+    using namespace island_layout;
+    const IslandBytes b = encodeIsland(s);
+    h5::H5Writer w(path);
+    w.attribute(w.root(), "schema_version", kCheckpointSchemaVersion);
+    w.attribute(w.root(), "rank", b.rank);
+    w.attribute(w.root(), "generation", b.generation);
+    w.attribute(w.root(), "evaluations", b.evaluations);
+    w.attribute(w.root(), "individuals", b.individuals);
+    {
+        h5::Handle population = w.group(w.root(), "population");
+        const hsize_t words[] = {b.genes.size() / 4}, offsets[] = {b.individuals + 1}, n[] = {b.individuals};
+        w.dataset(population.get(), "genes", H5T_STD_U32LE, b.genes, words);
+        w.dataset(population.get(), "offsets", H5T_STD_U64LE, b.offsets, offsets);
+        w.dataset(population.get(), "gene_counts", H5T_STD_U32LE, b.geneCounts, n);
+        w.dataset(population.get(), "fitness", H5T_IEEE_F64LE, b.fitness, n);
+    }
+    {
+        h5::Handle rng = w.group(w.root(), "rng");
+        const hsize_t four[] = {4};
+        w.dataset(rng.get(), "state", H5T_STD_U64LE, b.rng, four);
+    }
+    const hsize_t curve[] = {s.curve.size(), kCurveWidth};
+    {
+        h5::Handle d = w.dataset(w.root(), "curve", H5T_IEEE_F64LE, b.curve, curve, /*extendible=*/true);
+        w.attribute(d.get(), "columns", std::string(kCurveColumns));
+    }
+    w.finish();
+}
+
+IslandState readIslandFile(const std::string& path, const Grammar& g, const GenomeLimits& limits) {
+    using namespace island_layout;
+    const h5::H5Reader r(path);
+    const std::uint32_t schema = r.u32("/", "schema_version");
+    if (schema != kCheckpointSchemaVersion)
+        throw InputError(path, "/@schema_version",
+                         "island file schema " + std::to_string(schema) + " is not supported (this shapevo reads " +
+                             std::to_string(kCheckpointSchemaVersion) + ")");
+    IslandBytes b;
+    b.rank = r.i32("/", "rank");
+    b.generation = r.u32("/", "generation");
+    b.evaluations = r.u64("/", "evaluations");
+    b.individuals = r.u64("/", "individuals");
+    b.genes = r.dataset(kGenes, H5T_STD_U32LE, 1);
+    b.offsets = r.dataset(kOffsets, H5T_STD_U64LE, 1);
+    b.geneCounts = r.dataset(kGeneCounts, H5T_STD_U32LE, 1);
+    b.fitness = r.dataset(kFitness, H5T_IEEE_F64LE, 1);
+    b.rng = r.dataset(kRng, H5T_STD_U64LE, 1);
+    b.curve = r.dataset(kCurve, H5T_IEEE_F64LE, 2, kCurveWidth);
+    if (r.string(kCurve, "columns") != kCurveColumns)
+        throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + kCurveColumns + "\"");
+    return decodeIsland(b.view(), g, limits, path);
+}
+
+}  // namespace shapevo

@@ -1,0 +1,38 @@
+// IslandState and RunMetadata: everything a checkpoint holds, as plain data. The island loop
+// fills them; checkpoint files (checkpoint_file.hpp) store and restore them bit for bit.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "search/genetic_algorithm.hpp"
+#include "search/population.hpp"
+
+namespace shapevo {
+
+/// One island (one MPI rank) at the end of a generation.
+struct IslandState {
+    std::int32_t rank = 0;
+    std::uint32_t generation = 0;          ///< generations completed
+    std::uint64_t evaluations = 0;         ///< fitness evaluations on this island so far
+    std::array<std::uint64_t, 4> rng{};    ///< the island's Rng state
+    Population population;                 ///< chromosomes and their fitness
+    std::vector<GenerationStats> curve;    ///< this island's own curve, one row per generation
+};
+
+/// The run as a whole; written once per checkpoint by rank 0.
+struct RunMetadata {
+    std::uint32_t schemaVersion = 1;
+    std::uint64_t seed = 0;
+    std::uint32_t generation = 0;          ///< generations completed by every island
+    std::int32_t ranks = 1;                ///< number of islands
+    double wallSeconds = 0;                ///< run time so far, summed over resumes
+    std::uint64_t targetHash = 0;
+    std::string name;
+    std::string configPath, configText;    ///< the config (with --set overrides applied)
+    std::string grammarPath, grammarText;
+    std::vector<GenerationStats> curve;    ///< the global curve (best/mean/std over all islands)
+};
+
+}  // namespace shapevo

@@ -1,0 +1,224 @@
+// MANIFEST: the last file written into a checkpoint folder, and the proof that it is complete.
+//
+//   run.h5 20480 8f1c0a9e23b4d5f6
+//   island-0000.h5 53248 0123456789abcdef
+//   end
+//
+// One line per file: plain name, size in bytes (decimal), FNV-1a 64 of its bytes (16 lowercase
+// hex digits); then "end". verifyCheckpoint checks sizes and hashes by reading bytes only, so a
+// truncated or altered file is reported by name before any of it reaches libhdf5's parser.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+#include "checkpoint/checkpoint_file.hpp"
+#include "io/genome_file.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kManifest = "MANIFEST";
+constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
+
+bool plainName(const std::string& name) {
+    if (name.empty() || name == "." || name == ".." || name == kManifest || name.size() > 255) return false;
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) return false;
+    return true;
+}
+
+/// Size and FNV-1a 64 of a file's bytes, read in blocks.
+struct FileDigest {
+    std::uint64_t size = 0, hash = 0;
+    bool ok = false;
+};
+FileDigest digest(const fs::path& path) {
+    FileDigest d;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return d;
+    d.hash = fnv1a(nullptr, 0);
+    std::vector<char> block(1 << 16);
+    while (in) {
+        in.read(block.data(), std::streamsize(block.size()));
+        const auto n = std::size_t(in.gcount());
+        d.hash = fnv1a(block.data(), n, d.hash);
+        d.size += n;
+    }
+    d.ok = in.eof();
+    return d;
+}
+
+void fsyncPath(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(path + ": cannot open to fsync: " + std::strerror(errno));
+    const int rc = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    if (rc != 0) throw std::runtime_error(path + ": fsync failed: " + std::strerror(err));
+}
+
+std::string hex16(std::uint64_t v) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+    return buf;
+}
+
+/// A size: decimal digits, no sign, no leading zeros, fits in u64.
+bool parseDecimal(const std::string& s, std::uint64_t& out) {
+    if (s.empty() || s.size() > 20 || (s.size() > 1 && s[0] == '0')) return false;
+    out = 0;
+    for (char c : s) {
+        if (c < '0' || c > '9') return false;
+        const std::uint64_t digit = std::uint64_t(c - '0');
+        if (out > (UINT64_MAX - digit) / 10) return false;
+        out = out * 10 + digit;
+    }
+    return true;
+}
+
+bool parseHex16(const std::string& s, std::uint64_t& out) {
+    if (s.size() != 16) return false;
+    out = 0;
+    for (char c : s) {
+        int v;
+        if (c >= '0' && c <= '9') v = c - '0';
+        else if (c >= 'a' && c <= 'f') v = c - 'a' + 10;
+        else return false;
+        out = out << 4 | std::uint64_t(v);
+    }
+    return true;
+}
+
+}  // namespace
+
+void writeManifest(const std::string& folder, const std::vector<std::string>& files) {
+    std::string text;
+    for (const std::string& name : files) {
+        if (!plainName(name)) throw std::runtime_error(folder + ": not a plain file name for MANIFEST: \"" + name + "\"");
+        const FileDigest d = digest(fs::path(folder) / name);
+        if (!d.ok) throw std::runtime_error(folder + "/" + name + ": cannot read to write MANIFEST");
+        text += name + " " + std::to_string(d.size) + " " + hex16(d.hash) + "\n";
+    }
+    text += "end\n";
+    const std::string temp = folder + "/" + kManifest + ".tmp", path = folder + "/" + kManifest;
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out.write(text.data(), std::streamsize(text.size()));
+        out.close();
+        if (!out) throw std::runtime_error(temp + ": cannot write");
+    }
+    fsyncPath(temp);
+    std::error_code ec;
+    fs::rename(temp, path, ec);
+    if (ec) throw std::runtime_error(path + ": cannot rename into place: " + ec.message());
+}
+
+namespace {
+
+/// What is wrong with a MANIFEST, and where ("line 3" or empty).
+struct ManifestProblem {
+    std::string where, what;
+};
+
+std::vector<ManifestEntry> parseManifest(const std::string& folder) {
+    const std::string path = (fs::path(folder) / kManifest).string();
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw ManifestProblem{"", "missing (the checkpoint was never finished)"};
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec || size > kMaxManifestBytes) throw ManifestProblem{"", "unreadable or larger than 1 MiB"};
+    std::ifstream in(path, std::ios::binary);
+    std::string text(std::size_t(size), '\0');
+    if (!in.read(text.data(), std::streamsize(size))) throw ManifestProblem{"", "cannot read"};
+
+    std::vector<ManifestEntry> entries;
+    std::set<std::string> names;
+    std::size_t at = 0;
+    for (int line = 1;; ++line) {
+        const std::string where = "line " + std::to_string(line);
+        const std::size_t end = text.find('\n', at);
+        if (end == std::string::npos) throw ManifestProblem{where, "ends without the final \"end\" line (truncated)"};
+        const std::string s = text.substr(at, end - at);
+        at = end + 1;
+        if (s == "end") {
+            if (at != text.size()) throw ManifestProblem{"line " + std::to_string(line + 1), "text after \"end\""};
+            break;
+        }
+        const std::size_t a = s.find(' '), b = a == std::string::npos ? a : s.find(' ', a + 1);
+        if (b == std::string::npos || s.find(' ', b + 1) != std::string::npos)
+            throw ManifestProblem{where, "expected \"name size fnv1a64-hex\""};
+        ManifestEntry e;
+        e.name = s.substr(0, a);
+        if (!plainName(e.name)) throw ManifestProblem{where, "\"" + e.name + "\" is not a plain file name"};
+        if (!parseDecimal(s.substr(a + 1, b - a - 1), e.size)) throw ManifestProblem{where, "size is not a decimal number"};
+        if (!parseHex16(s.substr(b + 1), e.fnv1a64)) throw ManifestProblem{where, "hash is not 16 lowercase hex digits"};
+        if (!names.insert(e.name).second) throw ManifestProblem{where, e.name + " is listed twice"};
+        entries.push_back(std::move(e));
+    }
+    if (!names.count("run.h5")) throw ManifestProblem{"", "does not list run.h5"};
+    if (!names.count(islandFileName(0))) throw ManifestProblem{"", "does not list " + islandFileName(0)};
+    // Islands are numbered from 0 without gaps: if island k is listed, so is island k-1.
+    for (const std::string& name : names) {
+        if (!name.starts_with("island-") || !name.ends_with(".h5")) continue;
+        const std::string digits = name.substr(7, name.size() - 10);
+        int rank = 0;
+        bool ok = digits.size() >= 4 && digits.size() <= 9;
+        for (char c : digits) {
+            ok = ok && c >= '0' && c <= '9';
+            if (ok) rank = rank * 10 + (c - '0');
+        }
+        if (!ok || name != islandFileName(rank))
+            throw ManifestProblem{"", "\"" + name + "\" is not an island file name like island-0003.h5"};
+        if (rank > 0 && !names.count(islandFileName(rank - 1)))
+            throw ManifestProblem{"", "lists " + name + " but not " + islandFileName(rank - 1)};
+    }
+    return entries;
+}
+
+}  // namespace
+
+std::vector<ManifestEntry> readManifest(const std::string& folder) {
+    try {
+        return parseManifest(folder);
+    } catch (const ManifestProblem& p) {
+        throw InputError((fs::path(folder) / kManifest).string(), p.where, p.what);
+    }
+}
+
+std::string verifyCheckpoint(const std::string& folder) {
+    std::vector<ManifestEntry> entries;
+    try {
+        entries = parseManifest(folder);
+    } catch (const ManifestProblem& p) {
+        return std::string(kManifest) + (p.where.empty() ? "" : ":" + p.where) + ": " + p.what;
+    }
+    for (const ManifestEntry& e : entries) {
+        const fs::path path = fs::path(folder) / e.name;
+        std::error_code ec;
+        if (!fs::is_regular_file(path, ec)) return e.name + ": missing";
+        const std::uintmax_t size = fs::file_size(path, ec);
+        if (ec) return e.name + ": cannot read its size";
+        if (size != e.size)
+            return e.name + ": " + std::to_string(size) + " bytes but MANIFEST lists " + std::to_string(e.size) +
+                   (size < e.size ? " (truncated)" : " (altered)");
+        const FileDigest d = digest(path);
+        if (!d.ok) return e.name + ": cannot read";
+        if (d.size != e.size || d.hash != e.fnv1a64)
+            return e.name + ": content hashes to " + hex16(d.hash) + " but MANIFEST lists " + hex16(e.fnv1a64) +
+                   " (altered or damaged)";
+    }
+    return "";
+}
+
+}  // namespace shapevo
