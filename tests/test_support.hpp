@@ -55,6 +55,21 @@ inline CommandResult runShapevo(const std::string& args) {
     return r;
 }
 
+/// Run shapevo on `ranks` MPI ranks (oversubscribed, root allowed, as CI needs).
+inline CommandResult runShapevoMpi(int ranks, const std::string& args) {
+    const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + std::string(SHAPEVO_MPIRUN) +
+                            " --oversubscribe -np " + std::to_string(ranks) + " " + std::string(SHAPEVO_BIN) + " " + args +
+                            " 2>&1";
+    CommandResult r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buf;
+    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
 inline std::string readFile(const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return {};

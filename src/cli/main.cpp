@@ -1,5 +1,8 @@
-// shapevo command line: run, sample, target, evaluate. Bad input (InputError, bad arguments)
-// prints one message and exits with code 2; other failures exit with code 1.
+// shapevo command line: run, resume, inspect, export, sample, target, evaluate. Bad input
+// (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
+// other failures exit with code 1. Under mpirun every rank runs this; only run and resume use
+// more than one rank.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -15,7 +18,9 @@
 #include "io/mesh_reader.hpp"
 #include "io/model_writer.hpp"
 #include "io/vdb_target_file.hpp"
-#include "run/evolve.hpp"
+#include "checkpoint/checkpoint_file.hpp"
+#include "island/mpi_session.hpp"
+#include "run/run_job.hpp"
 #include "score/volume_scorer.hpp"
 
 namespace {
@@ -36,7 +41,40 @@ void refuseExisting(const std::string& path) {
 
 }  // namespace
 
+/// The best individual of a checkpoint (all islands), derived; prints where it came from.
+Geometry bestOfCheckpoint(const std::string& folder, std::string& from) {
+    if (const std::string problem = verifyCheckpoint(folder); !problem.empty())
+        throw InputError(folder, "", "not a complete checkpoint: " + problem);
+    const RunMetadata meta = readRunMetadata(folder + "/run.h5");
+    const RunSettings s = parseConfig(meta.configText, meta.configPath);
+    const Grammar g = parseGrammar(meta.grammarText, meta.grammarPath);
+    Chromosome best;
+    double bestFitness = -INFINITY;
+    for (int r = 0; r < meta.ranks; ++r) {
+        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), g, s.limits);
+        const std::size_t i = island.population.best();
+        if (island.population.fitness[i] > bestFitness) {
+            bestFitness = island.population.fitness[i];
+            best = island.population.individuals[i];
+            from = "island " + std::to_string(r) + ", fitness " + std::to_string(bestFitness);
+        }
+    }
+    Geometry geo;
+    DeriveScratch scratch;
+    derive(g, best, geo, scratch);
+    return geo;
+}
+
+/// A run folder's newest complete checkpoint, or the folder itself if it is a checkpoint.
+std::string checkpointOf(const std::string& path) {
+    if (std::filesystem::exists(path + "/MANIFEST")) return path;
+    for (const std::string& c : listCheckpoints(path))
+        if (verifyCheckpoint(c).empty()) return c;
+    throw InputError(path, "", "is neither a checkpoint nor a run folder with a complete checkpoint");
+}
+
 int main(int argc, char** argv) {
+    MpiSession mpi(argc, argv);
     CLI::App app{"shapevo: evolve procedural models (grammars) until they fill a target volume.\n"
                  "Docs: README.md; grammar language: grammars/README.md"};
     app.require_subcommand(1);
@@ -54,7 +92,7 @@ int main(int argc, char** argv) {
     auto* seedOpt = run->add_option("--seed", seed, "random seed (overrides run.seed)");
     run->add_option("--set", sets, "override a config value, e.g. --set ga.population=50 (repeatable)");
     run->add_option("--out", out, "output folder; must not exist (default runs/<name>, runs/<name>-2, ...)");
-    run->add_option("--threads", threads, "threads (overrides run.threads; 0 = all cores)");
+    run->add_option("--threads", threads, "threads (overrides run.threads; 0 = all cores)")->check(CLI::NonNegativeNumber);
     run->add_flag("-q,--quiet", quiet, "no per-generation progress lines");
 
     // sample
@@ -83,6 +121,30 @@ int main(int argc, char** argv) {
     evaluate->add_option("config", evalConfig, "TOML config")->required();
     evaluate->add_option("genome", evalGenome, ".genome file (best.genome of a run, or from sample --genome)")->required();
 
+    // resume
+    auto* resume = app.add_subcommand("resume", "Continue a run from its newest complete checkpoint: shapevo resume RUN_DIR");
+    std::string runDir;
+    std::uint32_t resumeGenerations = 0;
+    bool resumeQuiet = false;
+    resume->add_option("run_dir", runDir, "the run folder")->required();
+    auto* resumeGenOpt = resume->add_option("--generations", resumeGenerations, "new generation limit (extends a finished run)");
+    resume->add_flag("-q,--quiet", resumeQuiet, "no per-generation progress lines");
+
+    // inspect
+    auto* inspect = app.add_subcommand("inspect", "Summarise a checkpoint (or a run folder's newest one)");
+    std::string inspectPath;
+    bool inspectVerbose = false;
+    inspect->add_option("checkpoint", inspectPath, "checkpoint folder or run folder")->required();
+    inspect->add_flag("-v,--verbose", inspectVerbose, "also print the config");
+
+    // export
+    auto* exportCmd = app.add_subcommand("export", "Write the best model of a run or checkpoint");
+    std::string exportPath, exportOut;
+    bool exportBest = false;
+    exportCmd->add_option("source", exportPath, "run folder (its newest complete checkpoint) or checkpoint folder")->required();
+    exportCmd->add_flag("--best", exportBest, "the best individual over all islands (the only choice for now)")->required();
+    exportCmd->add_option("-o,--output", exportOut, "model file (.obj or .ply); must not exist")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -92,7 +154,14 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        if (mpi.rank() == 0) app.exit(e);
+        return 2;
+    }
+    const bool parallel = *run || *resume;
+    if (mpi.size() > 1 && !parallel) {
+        if (mpi.rank() == 0)
+            std::cerr << "shapevo: error: only 'run' and 'resume' use several MPI ranks; start '"
+                      << app.get_subcommands().front()->get_name() << "' without mpirun\n";
         return 2;
     }
 
@@ -102,9 +171,26 @@ int main(int argc, char** argv) {
             if (*seedOpt) s.seed = seed;
             if (threads >= 0) s.threads = threads;
             if (!out.empty()) s.out = out;
-            evolve(s, EvolveOptions{quiet}, std::cout);
+            runJob(mpi, s, JobOptions{quiet, {}}, std::cout);
+        } else if (*resume) {
+            JobOptions o{resumeQuiet, {}};
+            if (*resumeGenOpt) o.generations = resumeGenerations;
+            resumeJob(mpi, runDir, o, std::cout);
+        } else if (*inspect) {
+            std::cout << describeCheckpoint(checkpointOf(inspectPath), inspectVerbose);
+        } else if (*exportCmd) {
+            refuseExisting(exportOut);
+            std::string from;
+            const Geometry geo = bestOfCheckpoint(checkpointOf(exportPath), from);
+            writeModel(geo, exportOut);
+            std::cout << "wrote " << exportOut << " (" << geo.primitives.size() << " primitives; " << from << ")\n";
         } else if (*sample) {
             const Grammar g = loadGrammar(grammarPath);
+            if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
+            if (g.mandatoryGenes[g.start] > maxGenes)
+                throw InputError("--max-genes", "", std::to_string(maxGenes) + " is smaller than the " +
+                                                        std::to_string(g.mandatoryGenes[g.start]) + " genes every derivation of " +
+                                                        grammarPath + " needs");
             refuseExisting(sampleOut);
             if (!genomeOut.empty()) refuseExisting(genomeOut);
             Rng rng(sampleSeed);
@@ -140,11 +226,15 @@ int main(int argc, char** argv) {
                         (unsigned long long)counts.overlap, (unsigned long long)counts.outside,
                         (unsigned long long)t.fillCount);
         }
+    } catch (const SilentFailure&) {
+        return 2;  // another rank's input was bad; that rank has said why
     } catch (const InputError& e) {
         std::cerr << "shapevo: error: " << e.what() << "\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "shapevo: failed: " << e.what() << "\n";
+        std::cerr << "shapevo: failed" << (mpi.size() > 1 ? " on rank " + std::to_string(mpi.rank()) : "") << ": "
+                  << e.what() << "\n";
+        if (mpi.size() > 1) mpi.abort(1);  // the other ranks would wait for this one forever
         return 1;
     }
     return 0;

@@ -27,9 +27,10 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
     scratch.params.resize(256);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
-    bool complete = true;
     stack.push_back({0, 0, Scope{}, Scope{}});
+    std::size_t tasks = 0;
     while (!stack.empty()) {
+        if (++tasks > 4 * maxPrimitives + 1024) return false;  // mirrors without boxes multiply too
         const DeriveScratch::Task task = stack.back();
         stack.pop_back();
         const Rule& r = g.rules[c.rule(task.gene)];
@@ -63,11 +64,9 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                 break;
             }
             case StatementKind::Box:
-                if (out.primitives.size() >= maxPrimitives) {
-                    complete = false;
-                } else {
-                    out.primitives.push_back({PrimitiveKind::Box, s.origin, s.axes, glm::abs(s.size) * 0.5f});
-                }
+                // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
+                if (out.primitives.size() >= maxPrimitives) return false;
+                out.primitives.push_back({PrimitiveKind::Box, s.origin, s.axes, glm::abs(s.size) * 0.5f});
                 break;
             case StatementKind::Child: {
                 const Slot& slot = r.slots[st.slot];
@@ -80,7 +79,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             }
         }
     }
-    return complete;
+    return true;
 }
 
 }  // namespace shapevo

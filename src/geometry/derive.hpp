@@ -27,9 +27,10 @@ struct DeriveScratch {
     std::vector<float> params;
 };
 
-/// Derive `c` into `out` (cleared first). Models with more than `maxPrimitives` primitives are
-/// truncated to that many (mirrors can multiply a subtree); returns false if that happened.
+/// Derive `c` into `out` (cleared first). A mirror inside a recursion doubles the work at every
+/// level, so derivation stops after `maxPrimitives` primitives (or 4x as many scopes) and returns
+/// false; `out` then holds the primitives made so far.
 bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch,
-            std::size_t maxPrimitives = 1u << 20);
+            std::size_t maxPrimitives = 1u << 18);
 
 }  // namespace shapevo

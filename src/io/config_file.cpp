@@ -184,6 +184,12 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.number(run, "run", "seed", r.seed, 0, 9.007199254740992e15);
     rd.number(run, "run", "threads", r.threads, 0, 4096);
     rd.string(run, "run", "out", r.out);
+    rd.number(run, "run", "wall_time", r.wallTime, 0, 1e9);
+    if (rd.key(run, "run", "target_fitness")) {
+        double t = 0;
+        rd.number(run, "run", "target_fitness", t, -1e300, 1e300);
+        r.targetFitness = t;
+    }
 
     const toml::table* grammar = rd.section("grammar");
     rd.string(grammar, "grammar", "file", r.grammarPath);
@@ -199,7 +205,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     const bool hasMin = rd.vec3(target, "target", "grid_min", grid.min);
     const bool hasMax = rd.vec3(target, "target", "grid_max", grid.max);
     rd.number(target, "target", "voxel_size", grid.voxelSize, 1e-6, 1e6);
-    if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0))
+    if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
         throw InputError(path, "[target]", "grid_min, grid_max and voxel_size must be given together");
     if (hasMin) r.grid = grid;
 
@@ -246,6 +252,22 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
         throw InputError(path, "[ga]", "grow, cut and alter weights must not all be 0");
     if (g.initialGenesMin > g.initialGenesMax)
         throw InputError(path, "[ga]", "initial_genes_min must not exceed initial_genes_max");
+    if (g.initialGenesMin > r.limits.maxGenes)
+        throw InputError(path, "[ga]", "initial_genes_min must not exceed genome.max_genes (" + std::to_string(r.limits.maxGenes) + ")");
+    const toml::table* migration = rd.section("migration");
+    rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
+    rd.number(migration, "migration", "count", r.migration.count, 0, 1e7);
+    std::string mode = "sync";
+    rd.string(migration, "migration", "mode", mode);
+    if (mode != "sync" && mode != "async")
+        rd.fail(*migration->get("mode"), "migration.mode must be \"sync\" or \"async\", got \"" + mode + "\"");
+    r.migration.async = mode == "async";
+    if (r.migration.count > g.population - g.elitism && r.migration.interval > 0)
+        throw InputError(path, "[migration]", "count must not exceed population - elitism");
+
+    const toml::table* checkpoint = rd.section("checkpoint");
+    rd.number(checkpoint, "checkpoint", "interval", r.checkpoint.interval, 0, 1e9);
+    rd.number(checkpoint, "checkpoint", "keep", r.checkpoint.keep, 1, 1e6);
     rd.rejectUnknown();
     return r;
 }

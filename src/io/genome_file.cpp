@@ -47,7 +47,10 @@ void writeGenome(const Grammar& g, const Chromosome& c, const std::string& path)
 
 Chromosome readGenome(const Grammar& g, const GenomeLimits& limits, const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open genome file");
+    if (!in || std::filesystem::is_directory(path)) throw InputError(path, "", "cannot open genome file");
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec || size > (std::uintmax_t(1) << 30)) throw InputError(path, "", "not a genome file (unreadable size or over 1 GiB)");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     Header h{};
     if (bytes.size() < sizeof h) throw InputError(path, "byte 0", "too short for a genome file header");
@@ -59,6 +62,7 @@ Chromosome readGenome(const Grammar& g, const GenomeLimits& limits, const std::s
                                               std::to_string((bytes.size() - sizeof h) / 4));
     if (h.grammarHash != fnv1a(g.source.data(), g.source.size()))
         throw InputError(path, "", "genome was made with a different grammar than " + g.path);
+    if (h.genes == 0) throw InputError(path, "byte 12", "holds no genes");
     Chromosome c;
     c.genes = h.genes;
     c.words.resize(h.words);

@@ -65,6 +65,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"best_genes\": " + std::to_string(s.bestGenes) + ",\n";
     t += "  \"best_primitives\": " + std::to_string(s.bestPrimitives) + ",\n";
     t += "  \"target_hash\": \"" + std::string(hash) + "\",\n";
+    t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
     t += "  \"threads\": " + std::to_string(s.threads) + "\n}\n";
     writeText(path, t);
 }

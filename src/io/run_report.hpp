@@ -19,7 +19,8 @@ struct RunSummary {
     std::uint32_t bestGenes = 0;
     std::size_t bestPrimitives = 0;
     std::uint64_t targetHash = 0;
-    int threads = 0;
+    int threads = 0;   ///< evaluation threads per island
+    int islands = 1;   ///< MPI ranks
 };
 
 /// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).

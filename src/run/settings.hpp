@@ -23,6 +23,18 @@ struct GaSettings {
     std::uint32_t initialGenesMin = 2, initialGenesMax = 40;  ///< initial length drawn uniformly in between
 };
 
+/// Ring migration between islands (one island per MPI rank).
+struct MigrationSettings {
+    std::uint32_t interval = 10;  ///< generations between migrations (0 = never)
+    std::uint32_t count = 5;      ///< best individuals sent to rank + 1, replacing its worst
+    bool async = false;           ///< non-blocking messages (not repeatable) instead of lock-step
+};
+
+struct CheckpointSettings {
+    std::uint32_t interval = 10;  ///< generations between checkpoints (0 = only on a signal)
+    int keep = 3;                 ///< newest published checkpoints to keep
+};
+
 struct RunSettings {
     std::string configPath;   ///< the file it came from
     std::string configText;   ///< its text, with --set overrides applied, as stored in outputs
@@ -30,6 +42,8 @@ struct RunSettings {
     std::uint64_t seed = 1;
     int threads = 0;          ///< 0 = all hardware threads
     std::string out;          ///< output folder; empty = runs/<name>[-N]
+    double wallTime = 0;      ///< stop (with a checkpoint) after this many seconds; 0 = no limit
+    std::optional<double> targetFitness;  ///< stop when the best fitness of any island reaches it
 
     std::string grammarPath;
     std::vector<TargetVolumeSpec> targets;
@@ -38,6 +52,8 @@ struct RunSettings {
     VolumeFitnessSettings fitness;
     GenomeLimits limits;
     GaSettings ga;
+    MigrationSettings migration;
+    CheckpointSettings checkpoint;
 };
 
 }  // namespace shapevo

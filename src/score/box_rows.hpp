@@ -24,7 +24,7 @@ struct BoxFrame {
         BoxFrame b{};
         for (int j = 0; j < 3; ++j) {
             b.c[j] = p.centre[j];
-            b.h[j] = p.half[j];
+            b.h[j] = std::fabs(double(p.half[j]));  // a box is the same for +-h
             for (int k = 0; k < 3; ++k) b.a[j][k] = p.axes[j][k];
         }
         return b;

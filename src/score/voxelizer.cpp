@@ -85,10 +85,12 @@ void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
         const double reach = b.reach(j);
         const double t0 = (b.c[j] - reach - grid_.origin[j]) / grid_.voxelSize - 0.5;
         const double t1 = (b.c[j] + reach - grid_.origin[j]) / grid_.voxelSize - 0.5;
-        // one voxel of padding: the exact per-row test decides, the bounds only limit the work
-        first[j] = long(std::max(std::floor(t0) - 1.0, double(-n[j])));
-        last[j] = long(std::min(std::ceil(t1) + 1.0, double(2 * n[j] - 1)));
-        if (first[j] > last[j]) return;
+        // one voxel of padding: the exact per-row test decides, the bounds only limit the work;
+        // clamped as doubles first, so a box far away cannot overflow the conversion
+        const double lo = std::max(std::floor(t0) - 1.0, double(-n[j])), hi = std::min(std::ceil(t1) + 1.0, double(2 * n[j] - 1));
+        if (!(lo <= hi)) return;  // outside the halo (or NaN)
+        first[j] = long(lo);
+        last[j] = long(hi);
     }
     if (axisAligned(b)) {
         // Each slab depends on one grid axis only (the other products are exact zeros, and

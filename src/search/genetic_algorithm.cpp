@@ -30,6 +30,14 @@ void GeneticAlgorithm::initialize(Evaluator& evaluator) {
     generation_ = 1;
 }
 
+void GeneticAlgorithm::restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
+                               std::uint64_t evaluations) {
+    pop_ = pop;
+    rng_.setState(rng);
+    generation_ = generation;
+    evaluations_ = evaluations;
+}
+
 void GeneticAlgorithm::mutate(Chromosome& c) {
     const double total = settings_.growWeight + settings_.cutWeight + settings_.alterWeight;
     const double r = rng_.uniform() * total;
@@ -47,7 +55,10 @@ void GeneticAlgorithm::mutate(Chromosome& c) {
 void GeneticAlgorithm::step(Evaluator& evaluator) {
     const std::size_t n = pop_.size(), elite = settings_.elitism;
     for (std::size_t i = 0; i < n; ++i) order_[i] = i;
-    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return pop_.fitness[a] > pop_.fitness[b]; });
+    // best first, ties by index: a total order, so std::sort is deterministic and allocates nothing
+    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+        return pop_.fitness[a] > pop_.fitness[b] || (pop_.fitness[a] == pop_.fitness[b] && a < b);
+    });
     for (std::size_t k = 0; k < elite; ++k) {
         next_.individuals[k] = pop_.individuals[order_[k]];
         next_.fitness[k] = pop_.fitness[order_[k]];

@@ -3,6 +3,7 @@
 // k-tournament, parent 2 by roulette; with probability `mutation` both are mutated (grow / cut /
 // alter by their weights), otherwise crossed over (Algorithm 2, with retries).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,9 @@ public:
     void initialize(Evaluator& evaluator);
     /// Breed and evaluate the next generation.
     void step(Evaluator& evaluator);
+    /// Continue from a saved state (a checkpoint): population with fitness, RNG, counters.
+    void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
+                 std::uint64_t evaluations);
 
     const Population& population() const { return pop_; }
     Population& population() { return pop_; }

@@ -65,6 +65,22 @@ TEST(BadInput, BadSetValuesNameTheOptionNotTheConfigFile) {
     expectInputError(runShapevo("run " + cfg + " --set gaa.population=3 -q"), "--set: unknown section [gaa]");
 }
 
+TEST(BadInput, MaxGenesBelowTheMandatorySubtreeIsRejected) {
+    TempDir dir;
+    writeFile(dir.file("m.grammar"), "start S\nrule S { box child B max 3 }\nrule B { box }\n");  // always 4 genes
+    writeFile(dir.file("m.toml"), "[grammar]\nfile = \"m.grammar\"\n[target]\nfill = \"" +
+                                      sourcePath("targets/spaceship-reachable.vdb") + "\"\n[genome]\nmax_genes = 3\n");
+    expectInputError(runShapevo("run " + dir.file("m.toml") + " -q --out " + dir.file("out")), "is smaller than the 4 genes");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out")));
+    expectInputError(runShapevo("sample " + dir.file("m.grammar") + " --max-genes 2 -o " + dir.file("m.obj")), "--max-genes");
+}
+
+TEST(BadInput, AGenomeFileThatIsNotOneIsRejectedQuickly) {
+    TempDir dir;
+    writeFile(dir.file("zeros.genome"), std::string(4096, '\0'));
+    expectInputError(runShapevo("evaluate " + sourcePath("configs/spaceship.toml") + " " + dir.file("zeros.genome")), "bad magic");
+}
+
 TEST(BadInput, UnknownCommandLineOptionExitsWithTwo) {
     const auto r = runShapevo("run --frobnicate x.toml");
     EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -99,6 +99,19 @@ TEST(Derive, RotationTurnsTheScopeAboutItsOwnAxis) {
     expectNear(geo.primitives[0].axes[0], {0, 1, 0});
 }
 
+TEST(Derive, MirrorsInsideRecursionStopAtTheCapInsteadOfRunningAway) {
+    // each level mirrors the rest of the rule, children included: 2^depth copies
+    const Grammar g = parseGrammar("start A\nrule A { mirror x box child A prob 0.9 }\n", "mirror.grammar");
+    Rng rng(1);
+    Chromosome c;
+    while (c.genes < 60 && grow(g, c, rng, GenomeLimits{60})) {
+    }
+    Geometry geo;
+    DeriveScratch scratch;
+    EXPECT_FALSE(derive(g, c, geo, scratch, 1000));  // 2^60 boxes would never finish
+    EXPECT_EQ(geo.primitives.size(), 1000u);
+}
+
 TEST(Derive, EmptyChromosomeGivesNoGeometry) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
     Geometry geo;

@@ -131,6 +131,43 @@ TEST(VoxelizerExactness, MatchesBruteForceVoxelCentreTestOnAThousandRandomModels
     EXPECT_GT(totalOverlap, 1000u);
 }
 
+TEST(VoxelizerExactness, FarHugeNegativeAndNearlyPerpendicularBoxesAreSafeAndExact) {
+    Rng rng(77);
+    GridSpec grid;
+    grid.origin = {-1.0, -1.0, -1.0};
+    grid.voxelSize = 0.1;
+    grid.nx = grid.ny = grid.nz = 20;
+    const VolumeTarget target = randomTarget(grid, rng);
+    Voxelizer vox(grid);
+    const float c = std::cos(1e-5f), s = std::sin(1e-5f);  // a tiny tilt: slope ~1e-5, the bisection path
+    std::vector<std::vector<Primitive>> models;
+    Primitive far;  // rotated and 1e20 away: must not overflow or loop
+    far.axes = glm::mat3(0.8f, 0.6f, 0, -0.6f, 0.8f, 0, 0, 0, 1);
+    far.centre = {0, 0, 1e20f};
+    models.push_back({far});
+    Primitive huge;  // covers the grid and the whole halo
+    huge.axes = far.axes;
+    huge.half = {1e3f, 1e3f, 1e3f};
+    models.push_back({huge});
+    Primitive negative;  // negative half extents mean the same box
+    negative.centre = {0.05f, 0.05f, 0.05f};
+    negative.half = {-0.3f, -0.2f, -0.25f};
+    models.push_back({negative});
+    for (int i = 0; i < 50; ++i) {
+        Primitive tilted;
+        tilted.axes = glm::mat3(c, 0, s, 0, 1, 0, -s, 0, c);
+        tilted.centre = {float(rng.uniform() - 0.5), float(rng.uniform() - 0.5), float(rng.uniform() - 0.5)};
+        tilted.half = {float(0.1 + rng.uniform()), float(0.1 + rng.uniform()), float(0.1 + rng.uniform())};
+        models.push_back({tilted});
+    }
+    for (std::size_t m = 0; m < models.size(); ++m) {
+        VoxelCounts fast = vox.score(models[m], target);
+        const VoxelCounts slow = bruteForce(models[m], target);
+        fast.rows = 0;
+        EXPECT_EQ(fast, slow) << "model " << m;
+    }
+}
+
 TEST(VoxelizerExactness, AxisAlignedUnitCubeCoversExactlyTheExpectedVoxels) {
     GridSpec grid;
     grid.origin = {0, 0, 0};

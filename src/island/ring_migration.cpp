@@ -1,0 +1,182 @@
+// Ring migration: packing, validation, sync exchange with MPI_Sendrecv, async with Isend/Iprobe.
+#include "island/ring_migration.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+
+#include <mpi.h>
+
+#include "genome/validate.hpp"
+
+namespace shapevo {
+
+namespace {
+constexpr int kMigrationTag = 72;
+}
+
+struct RingMigration::PendingSend {
+    MPI_Request request = MPI_REQUEST_NULL;
+    std::vector<std::uint32_t> words;
+};
+
+void packIndividuals(const Population& pop, const std::vector<std::size_t>& which, std::vector<std::uint32_t>& out) {
+    out.clear();
+    out.push_back(std::uint32_t(which.size()));
+    for (std::size_t i : which) {
+        const std::uint64_t bits = std::bit_cast<std::uint64_t>(pop.fitness[i]);
+        const Chromosome& c = pop.individuals[i];
+        out.push_back(std::uint32_t(bits));
+        out.push_back(std::uint32_t(bits >> 32));
+        out.push_back(c.genes);
+        out.push_back(c.size());
+        out.insert(out.end(), c.words.begin(), c.words.end());
+    }
+}
+
+std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
+                              std::vector<Chromosome>& chromosomes, std::vector<double>& fitness) {
+    if (in.empty()) return "empty message";
+    std::size_t pos = 1;
+    for (std::uint32_t k = 0; k < in[0]; ++k) {
+        if (pos + 4 > in.size()) return "truncated header of individual " + std::to_string(k);
+        const double f = std::bit_cast<double>(std::uint64_t(in[pos]) | (std::uint64_t(in[pos + 1]) << 32));
+        const std::uint32_t genes = in[pos + 2], words = in[pos + 3];
+        pos += 4;
+        if (words > in.size() - pos) return "truncated chromosome " + std::to_string(k);
+        Chromosome c;
+        c.genes = genes;
+        c.words.assign(in.begin() + std::ptrdiff_t(pos), in.begin() + std::ptrdiff_t(pos + words));
+        pos += words;
+        if (const std::string e = validateChromosome(g, c, limits); !e.empty()) return "individual " + std::to_string(k) + ": " + e;
+        if (!std::isfinite(f)) return "individual " + std::to_string(k) + ": fitness is not finite";
+        chromosomes.push_back(std::move(c));
+        fitness.push_back(f);
+    }
+    return pos == in.size() ? "" : "trailing words";
+}
+
+std::vector<std::size_t> bestIndices(const Population& pop, std::size_t count) {
+    std::vector<std::size_t> order(pop.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pop.fitness[a] > pop.fitness[b]; });
+    order.resize(std::min(count, order.size()));
+    return order;
+}
+
+void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness) {
+    std::vector<std::size_t> order(pop.size());
+    std::iota(order.begin(), order.end(), 0);
+    // worst first; among equals the later index goes first, so the elite (early indices) stays
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return pop.fitness[a] < pop.fitness[b] || (pop.fitness[a] == pop.fitness[b] && a > b);
+    });
+    for (std::size_t k = 0; k < arrivals.size() && k < order.size(); ++k) {
+        pop.individuals[order[k]] = arrivals[k];
+        pop.fitness[order[k]] = fitness[k];
+    }
+}
+
+RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g,
+                             const GenomeLimits& limits)
+    : mpi_(mpi), settings_(settings), grammar_(g), limits_(limits) {}
+
+RingMigration::~RingMigration() {
+    for (PendingSend* p : pending_) delete p;
+}
+
+void RingMigration::integrate(Population& pop, const std::vector<std::uint32_t>& words) {
+    arrivals_.clear();
+    arrivalFitness_.clear();
+    const std::string problem = unpackIndividuals(grammar_, limits_, words, arrivals_, arrivalFitness_);
+    if (!problem.empty()) {  // never let bad bytes into the population
+        ++rejected_;
+        return;
+    }
+    received_ += arrivals_.size();
+    replaceWorst(pop, arrivals_, arrivalFitness_);
+}
+
+void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
+    if (!mpi_.active() || mpi_.size() < 2 || settings_.interval == 0 || settings_.count == 0) return;
+    if (generation % settings_.interval != 0) return;
+    const int right = (mpi_.rank() + 1) % mpi_.size(), left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
+    packIndividuals(pop, bestIndices(pop, settings_.count), outgoing_);
+    if (!settings_.async) {
+        int sendCount = int(outgoing_.size()), recvCount = 0;
+        MPI_Sendrecv(&sendCount, 1, MPI_INT, right, kMigrationTag, &recvCount, 1, MPI_INT, left, kMigrationTag,
+                     MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        incoming_.resize(std::size_t(recvCount));
+        MPI_Sendrecv(outgoing_.data(), sendCount, MPI_UINT32_T, right, kMigrationTag, incoming_.data(), recvCount,
+                     MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        integrate(pop, incoming_);
+        return;
+    }
+    // Async: retire completed sends, post this one, take whatever has arrived.
+    while (!pending_.empty()) {
+        int done = 0;
+        MPI_Test(&pending_.front()->request, &done, MPI_STATUS_IGNORE);
+        if (!done) break;
+        delete pending_.front();
+        pending_.pop_front();
+    }
+    auto* send = new PendingSend;
+    send->words = outgoing_;
+    MPI_Isend(send->words.data(), int(send->words.size()), MPI_UINT32_T, right, kMigrationTag, MPI_COMM_WORLD, &send->request);
+    pending_.push_back(send);
+    for (;;) {
+        int arrived = 0;
+        MPI_Status status;
+        MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
+        if (!arrived) break;
+        int count = 0;
+        MPI_Get_count(&status, MPI_UINT32_T, &count);
+        incoming_.resize(std::size_t(count));
+        MPI_Recv(incoming_.data(), count, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        integrate(pop, incoming_);
+    }
+}
+
+void RingMigration::finish() {
+    if (!mpi_.active() || mpi_.size() < 2 || !settings_.async) return;
+    // Keep receiving (and discarding) until every rank's sends have completed: a rank joins the
+    // non-blocking barrier only once its own sends are done, so nobody waits on a receiver that
+    // has stopped listening.
+    const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
+    MPI_Request barrier = MPI_REQUEST_NULL;
+    bool inBarrier = false;
+    for (;;) {
+        int arrived = 0;
+        MPI_Status status;
+        MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
+        if (arrived) {
+            int count = 0;
+            MPI_Get_count(&status, MPI_UINT32_T, &count);
+            incoming_.resize(std::size_t(count));
+            MPI_Recv(incoming_.data(), count, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            continue;
+        }
+        if (!inBarrier) {
+            bool allDone = true;
+            for (PendingSend* p : pending_) {
+                int done = 0;
+                MPI_Test(&p->request, &done, MPI_STATUS_IGNORE);
+                allDone = allDone && done;
+            }
+            if (allDone) {
+                MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
+                inBarrier = true;
+            }
+        } else {
+            int done = 0;
+            MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
+            if (done) break;
+        }
+    }
+    for (PendingSend* p : pending_) delete p;
+    pending_.clear();
+}
+
+}  // namespace shapevo

@@ -1,0 +1,242 @@
+// islandLoop: generations, migration, global statistics, agreed stopping, checkpoints, outputs.
+#include "run/island_loop.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+
+#include "checkpoint/checkpoint_file.hpp"
+#include "io/genome_file.hpp"
+#include "io/model_writer.hpp"
+#include "io/run_report.hpp"
+#include "island/ring_migration.hpp"
+#include "island/stop_signal.hpp"
+#include "search/genetic_algorithm.hpp"
+
+namespace shapevo {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string humanSeconds(double s) {
+    char b[32];
+    if (s < 100) std::snprintf(b, sizeof b, "%.2fs", s);
+    else if (s < 6000) std::snprintf(b, sizeof b, "%dm%02ds", int(s) / 60, int(s) % 60);
+    else std::snprintf(b, sizeof b, "%dh%02dm", int(s) / 3600, int(s) / 60 % 60);
+    return b;
+}
+
+/// Island r's seed: r = 0 keeps the run's seed, so a one-rank MPI run equals a plain run.
+std::uint64_t islandSeed(std::uint64_t seed, int rank) { return seed + 0x9e3779b97f4a7c15ULL * std::uint64_t(rank); }
+
+/// Every rank writes its island into the partial folder; once all have, rank 0 adds run.h5 and
+/// MANIFEST and publishes it with one rename. Returns false (nothing published) on failure.
+bool writeCheckpoint(const MpiSession& mpi, const std::string& folder, const IslandState& island, const RunMetadata& meta,
+                     int keep, std::ostream& log) {
+    namespace fs = std::filesystem;
+    const std::string name = checkpointName(meta.generation);
+    const std::string partial = folder + "/." + name + ".partial", published = folder + "/" + name;
+    std::string problem;
+    if (mpi.rank() == 0) {
+        std::error_code ec;
+        fs::remove_all(partial, ec);
+        fs::create_directories(partial, ec);
+        if (ec) problem = "cannot create " + partial + ": " + ec.message();
+    }
+    if (!mpi.fromRoot(problem.empty())) {
+        if (mpi.rank() == 0) log << "shapevo: warning: checkpoint skipped: " << problem << "\n";
+        return false;
+    }
+    try {
+        writeIslandFile(partial + "/" + islandFileName(mpi.rank()), island);
+    } catch (const std::exception& e) {
+        problem = e.what();
+    }
+    if (!mpi.allTrue(problem.empty())) {
+        if (!problem.empty()) log << "shapevo: warning: rank " << mpi.rank() << " could not write its island: " << problem << "\n";
+        if (mpi.rank() == 0) {
+            std::error_code ec;
+            fs::remove_all(partial, ec);
+            log << "shapevo: warning: checkpoint at generation " << meta.generation << " not written; the previous one stays\n";
+        }
+        return false;
+    }
+    bool ok = true;
+    if (mpi.rank() == 0) {
+        try {
+            writeRunMetadata(partial + "/run.h5", meta);
+            std::vector<std::string> files{"run.h5"};
+            for (int r = 0; r < mpi.size(); ++r) files.push_back(islandFileName(r));
+            writeManifest(partial, files);
+            publishCheckpoint(partial, published);
+            pruneCheckpoints(folder, keep);
+        } catch (const std::exception& e) {
+            log << "shapevo: warning: checkpoint at generation " << meta.generation << " not published: " << e.what() << "\n";
+            ok = false;
+        }
+    }
+    return mpi.fromRoot(ok);
+}
+
+}  // namespace
+
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const VolumeTarget& target,
+                     const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
+                     std::ostream& log) {
+    const auto start = Clock::now();
+    const double wallBefore = meta.wallSeconds;
+    auto elapsed = [&] { return wallBefore + std::chrono::duration<double>(Clock::now() - start).count(); };
+    const bool root = mpi.rank() == 0;
+    const VolumeScorer scorer(grammar, target, s.fitness);
+    Evaluator evaluator(scorer, s.threads);
+    GeneticAlgorithm ga(grammar, s.ga, s.limits, islandSeed(s.seed, mpi.rank()));
+    RingMigration migration(mpi, s.migration, grammar, s.limits);
+    installStopSignalHandlers();
+    std::vector<GenerationStats> localCurve = restored ? restored->curve : std::vector<GenerationStats>{};
+
+    if (root && !options.quiet)
+        log << "shapevo " << (restored ? "resume " : "run ") << s.name << ": grammar " << s.grammarPath << ", target "
+            << s.targets.front().path << " (" << target.grid.nx << "x" << target.grid.ny << "x" << target.grid.nz
+            << " voxels, " << target.fillCount << " to fill), " << mpi.size() << " island(s) x " << evaluator.threads()
+            << " thread(s), seed " << s.seed << ", output " << folder << "\n";
+
+    JobResult result;
+    result.folder = folder;
+    std::string stopReason;  ///< empty while running
+    bool bySignal = false;
+    // After each generation: migrate, agree on global statistics and on stopping, checkpoint.
+    auto afterGeneration = [&]() -> bool {
+        migration.afterGeneration(ga.population(), ga.generation());
+        GenerationStats local = ga.stats();
+        local.seconds = elapsed();
+        localCurve.push_back(local);
+        double sum = 0, squares = 0;
+        for (double f : ga.population().fitness) sum += f, squares += f * f;
+        std::vector<double> sums{sum, squares, double(ga.population().size()), double(ga.evaluations())};
+        mpi.sum(sums);
+        const int signal = stopSignalReceived();
+        std::vector<double> maxima{local.best, double(signal), s.wallTime > 0 && local.seconds >= s.wallTime ? 1.0 : 0.0};
+        mpi.max(maxima);
+        GenerationStats global;
+        global.generation = ga.generation();
+        global.seconds = local.seconds;
+        global.evaluations = std::uint64_t(sums[3]);
+        global.best = maxima[0];
+        global.mean = sums[0] / sums[2];
+        global.std = std::sqrt(std::max(0.0, sums[1] / sums[2] - global.mean * global.mean));
+        meta.curve.push_back(global);
+        meta.generation = ga.generation();
+        meta.wallSeconds = global.seconds;
+        if (root && !options.quiet) {
+            const double rate = global.seconds > wallBefore ? double(global.evaluations) / global.seconds : 0;
+            const double perGeneration = global.seconds / std::max(1u, global.generation);
+            const double eta = perGeneration * double(s.ga.generations > global.generation ? s.ga.generations - global.generation : 0);
+            char line[220];
+            std::snprintf(line, sizeof line, "gen %*u/%u  best %.5f  mean %.5f  %.0f evals/s  elapsed %s  ETA %s\n",
+                          int(std::to_string(s.ga.generations).size()), global.generation, s.ga.generations, global.best,
+                          global.mean, rate, humanSeconds(global.seconds).c_str(), humanSeconds(eta).c_str());
+            log << line << std::flush;
+        }
+        if (maxima[1] > 0) stopReason = signalName(int(maxima[1])), bySignal = true;
+        else if (maxima[2] > 0) stopReason = "the wall-time budget";
+        else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
+        else if (ga.generation() >= s.ga.generations) stopReason = "done";
+        const bool due = s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0;
+        if (due || !stopReason.empty()) {
+            IslandState island;
+            island.rank = mpi.rank();
+            island.generation = ga.generation();
+            island.evaluations = ga.evaluations();
+            island.rng = ga.rng().state();
+            island.population = ga.population();
+            island.curve = localCurve;
+            writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
+        }
+        return !stopReason.empty();
+    };
+
+    bool stop = false;
+    if (restored) {
+        ga.restore(restored->population, restored->rng, restored->generation, restored->evaluations);
+        if (ga.generation() >= s.ga.generations) {
+            if (root) log << "shapevo: " << folder << " is complete at generation " << ga.generation()
+                          << "; pass --generations N to continue it\n";
+            result.evaluations = ga.evaluations();
+            return result;
+        }
+    } else {
+        ga.initialize(evaluator);
+        stop = afterGeneration();
+    }
+    while (!stop) {
+        ga.step(evaluator);
+        stop = afterGeneration();
+    }
+    migration.finish();
+
+    // The best individual of all islands goes to rank 0, which writes the outputs.
+    const std::size_t bestIndex = ga.population().best();
+    const auto [bestFitness, bestRank] = mpi.maxLoc(ga.population().fitness[bestIndex]);
+    std::vector<std::uint32_t> packed;
+    if (mpi.rank() == bestRank) {
+        const Chromosome& c = ga.population().individuals[bestIndex];
+        packed.push_back(c.genes);
+        packed.insert(packed.end(), c.words.begin(), c.words.end());
+    }
+    packed = mpi.transfer(packed, bestRank, 0);
+    std::vector<double> totals{double(ga.evaluations())};
+    mpi.sum(totals);
+    result.bestFitness = bestFitness;
+    result.evaluations = std::uint64_t(totals[0]);
+    result.wallSeconds = elapsed();
+    result.stoppedBySignal = bySignal;
+    if (root) {
+        Chromosome champion;
+        champion.genes = packed.front();
+        champion.words.assign(packed.begin() + 1, packed.end());
+        auto ws = scorer.makeWorkspace();
+        VoxelCounts counts;
+        scorer.fitness(champion, *ws, &counts);
+        const Mesh mesh = meshOf(ws->geometry);
+        writeObj(mesh, folder + "/best.obj");
+        writePly(mesh, folder + "/best.ply");
+        writeGenome(grammar, champion, folder + "/best.genome");
+        writeCurveCsv(meta.curve, folder + "/curve.csv");
+        result.voxelIoU = voxelIoU(counts, target.fillCount);
+        RunSummary sum;
+        sum.name = s.name;
+        sum.config = meta.configPath;
+        sum.grammar = meta.grammarPath;
+        sum.seed = s.seed;
+        sum.generations = ga.generation();
+        sum.evaluations = result.evaluations;
+        sum.wallSeconds = result.wallSeconds;
+        sum.bestFitness = result.bestFitness;
+        sum.voxelIoU = result.voxelIoU;
+        sum.bestGenes = champion.genes;
+        sum.bestPrimitives = ws->geometry.primitives.size();
+        sum.targetHash = target.hash;
+        sum.threads = evaluator.threads();
+        sum.islands = mpi.size();
+        writeSummaryJson(sum, folder + "/summary.json");
+        if (!options.quiet || result.stoppedBySignal) {
+            char line[300];
+            if (!bySignal)
+                std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, voxel IoU %.4f, %llu evaluations in %s -> %s/\n",
+                              stopReason == "done" ? "" : " after ", stopReason == "done" ? "" : stopReason.c_str(),
+                              result.bestFitness, result.voxelIoU, static_cast<unsigned long long>(result.evaluations),
+                              humanSeconds(result.wallSeconds).c_str(), folder.c_str());
+            else
+                std::snprintf(line, sizeof line,
+                              "stopped on %s after generation %u: checkpoint written; continue with: shapevo resume %s\n",
+                              stopReason.c_str(), ga.generation(), folder.c_str());
+            log << line;
+        }
+    }
+    return result;
+}
+
+}  // namespace shapevo

@@ -1,0 +1,38 @@
+// The `run` and `resume` jobs: one island per MPI rank (or one island without MPI), global
+// progress on rank 0, ring migration, checkpoints every checkpoint.interval generations and on
+// SIGTERM/SIGUSR1, stopping rules agreed by all ranks, and the run folder's outputs:
+//   config.toml, grammar copy, curve.csv, summary.json, best.obj, best.ply, best.genome,
+//   checkpoint-NNNNNN/ (HDF5, see checkpoint/checkpoint_file.hpp)
+#pragma once
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "island/mpi_session.hpp"
+#include "run/settings.hpp"
+
+namespace shapevo {
+
+struct JobOptions {
+    bool quiet = false;                         ///< no per-generation progress lines
+    std::optional<std::uint32_t> generations;   ///< resume: new generation limit
+};
+
+struct JobResult {
+    std::string folder;
+    double bestFitness = 0;
+    double voxelIoU = 0;
+    std::uint64_t evaluations = 0;
+    double wallSeconds = 0;
+    bool stoppedBySignal = false;
+};
+
+/// A new run. Throws InputError (on the ranks where input was bad) or SilentFailure.
+JobResult runJob(const MpiSession& mpi, const RunSettings& settings, const JobOptions& options, std::ostream& log);
+/// Continue the run in `runDir` from its newest complete checkpoint.
+JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobOptions& options, std::ostream& log);
+
+/// Thrown on ranks whose input was fine when another rank's was not: exit 2 without a message.
+struct SilentFailure {};
+
+}  // namespace shapevo

@@ -1,0 +1,123 @@
+// Islands end to end under mpirun: seeded 2-rank runs repeat byte for byte, a run resumed from
+// its checkpoint equals the uninterrupted one, 4 ranks on 2 cores and async migration complete,
+// a different rank count on resume is refused, and SIGUSR1 checkpoints and exits 0.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+
+#include "../test_support.hpp"
+#include "checkpoint/checkpoint_file.hpp"
+#include "grammar/parser.hpp"
+
+namespace shapevo {
+namespace {
+
+using test::readFile;
+using test::runShapevo;
+using test::runShapevoMpi;
+using test::sourcePath;
+using test::TempDir;
+
+const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
+                           " --set migration.count=3 --set checkpoint.interval=10 --set checkpoint.keep=10 -q";
+
+std::string config() { return sourcePath("configs/spaceship.toml"); }
+
+/// curve.csv without the seconds column.
+std::string curveWithoutTime(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        const auto a = line.find(','), b = line.find(',', a + 1);
+        out += line.substr(0, a) + line.substr(b) + "\n";
+    }
+    return out;
+}
+
+/// Islands of a checkpoint must match: chromosomes, fitness bits, RNG, curve (but seconds).
+void expectSameIslands(const std::string& a, const std::string& b, int ranks) {
+    const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
+    const GenomeLimits limits{100};
+    for (int r = 0; r < ranks; ++r) {
+        const IslandState x = readIslandFile(a + "/" + islandFileName(r), g, limits);
+        const IslandState y = readIslandFile(b + "/" + islandFileName(r), g, limits);
+        EXPECT_EQ(x.generation, y.generation);
+        EXPECT_EQ(x.evaluations, y.evaluations);
+        EXPECT_EQ(x.rng, y.rng);
+        ASSERT_EQ(x.population.size(), y.population.size());
+        for (std::size_t i = 0; i < x.population.size(); ++i) {
+            EXPECT_EQ(x.population.individuals[i], y.population.individuals[i]) << "island " << r << " individual " << i;
+            EXPECT_EQ(x.population.fitness[i], y.population.fitness[i]);
+        }
+        ASSERT_EQ(x.curve.size(), y.curve.size());
+        for (std::size_t i = 0; i < x.curve.size(); ++i) {
+            EXPECT_EQ(x.curve[i].generation, y.curve[i].generation);
+            EXPECT_EQ(x.curve[i].evaluations, y.curve[i].evaluations);
+            EXPECT_EQ(x.curve[i].best, y.curve[i].best);
+            EXPECT_EQ(x.curve[i].mean, y.curve[i].mean);
+            EXPECT_EQ(x.curve[i].std, y.curve[i].std);
+        }
+    }
+}
+
+TEST(Islands, SeededTwoRankRunRepeatsByteForByte) {
+    TempDir dir;
+    for (const char* run : {"a", "b"}) {
+        const auto r = runShapevoMpi(2, "run " + config() + " --seed 5 --set ga.generations=12 --out " + dir.file(run) + kSmall);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    EXPECT_EQ(curveWithoutTime(readFile(dir.file("a/curve.csv"))), curveWithoutTime(readFile(dir.file("b/curve.csv"))));
+    EXPECT_EQ(readFile(dir.file("a/best.genome")), readFile(dir.file("b/best.genome")));
+    expectSameIslands(dir.file("a/checkpoint-000012"), dir.file("b/checkpoint-000012"), 2);
+    EXPECT_NE(readFile(dir.file("a/summary.json")).find("\"islands\": 2"), std::string::npos);
+}
+
+TEST(Islands, ResumedRunEqualsTheUninterruptedOne) {
+    TempDir dir;
+    auto whole = runShapevoMpi(2, "run " + config() + " --seed 9 --set ga.generations=40 --out " + dir.file("whole") + kSmall);
+    ASSERT_EQ(whole.exitCode, 0) << whole.output;
+    auto half = runShapevoMpi(2, "run " + config() + " --seed 9 --set ga.generations=20 --out " + dir.file("half") + kSmall);
+    ASSERT_EQ(half.exitCode, 0) << half.output;
+    auto rest = runShapevoMpi(2, "resume " + dir.file("half") + " --generations 40 -q");
+    ASSERT_EQ(rest.exitCode, 0) << rest.output;
+    expectSameIslands(dir.file("whole/checkpoint-000040"), dir.file("half/checkpoint-000040"), 2);
+    EXPECT_EQ(readFile(dir.file("whole/best.genome")), readFile(dir.file("half/best.genome")));
+    EXPECT_EQ(curveWithoutTime(readFile(dir.file("whole/curve.csv"))), curveWithoutTime(readFile(dir.file("half/curve.csv"))));
+}
+
+TEST(Islands, FourRanksOnTwoCoresComplete) {
+    TempDir dir;
+    const auto r = runShapevoMpi(4, "run " + config() + " --set ga.generations=6 --set run.threads=1 --out " + dir.file("r") + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("r/checkpoint-000006/island-0003.h5")));
+}
+
+TEST(Islands, AsyncMigrationCompletesUnderOversubscription) {
+    TempDir dir;
+    const auto r = runShapevoMpi(4, "run " + config() + " --set ga.generations=15 --set migration.mode=async"
+                                     " --set migration.interval=1 --set run.threads=1 --out " + dir.file("r") + kSmall);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("r/summary.json")));
+}
+
+TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {
+    TempDir dir;
+    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=3 --out " + dir.file("r") + kSmall).exitCode, 0);
+    const auto r = runShapevo("resume " + dir.file("r") + " --generations 6");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("holds 2 island(s) but 1 rank(s) were started"), std::string::npos) << r.output;
+}
+
+TEST(Islands, OtherCommandsRefuseSeveralRanks) {
+    TempDir dir;
+    const auto r = runShapevoMpi(2, "sample " + sourcePath("grammars/spaceship.grammar") + " -o " + dir.file("s.obj"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("only 'run' and 'resume' use several MPI ranks"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace shapevo

@@ -1,0 +1,126 @@
+// 2-rank MPI tests (run by ctest under mpirun -np 2): migrated genomes arrive intact on the next
+// rank after one interval, replace its worst, bad bytes are refused, and async mode drains.
+#include <gtest/gtest.h>
+
+#include <mpi.h>
+
+#include "genome/operators.hpp"
+#include "grammar/parser.hpp"
+#include "island/ring_migration.hpp"
+
+namespace shapevo {
+namespace {
+
+const Grammar& spaceship() {
+    static const Grammar g = loadGrammar(std::string(SHAPEVO_SOURCE_DIR) + "/grammars/spaceship.grammar");
+    return g;
+}
+
+/// The population rank `r` starts with: the same on every rank that builds it.
+Population populationOf(int r, std::size_t n) {
+    Population p;
+    Rng rng(1000 + std::uint64_t(r));
+    const GenomeLimits limits{60};
+    for (std::size_t i = 0; i < n; ++i) {
+        Chromosome c;
+        const std::uint32_t length = 2 + rng.below(30);
+        while (c.genes < length && grow(spaceship(), c, rng, limits)) {
+        }
+        p.individuals.push_back(c);
+        p.fitness.push_back(double(i) + 0.25 * r);  // the last individuals are the best
+    }
+    return p;
+}
+
+class TwoRanks : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (mpi.size() < 2) GTEST_SKIP() << "needs mpirun -np 2 or more";
+    }
+    static MpiSession& mpiRef();
+    const MpiSession& mpi = mpiRef();
+};
+
+}  // namespace
+
+// The session is created in main() (MPI_Init before any test).
+MpiSession* gMpi = nullptr;
+MpiSession& TwoRanks::mpiRef() { return *gMpi; }
+
+namespace {
+
+TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankAfterOneInterval) {
+    const GenomeLimits limits{60};
+    MigrationSettings m;
+    m.interval = 5;
+    m.count = 3;
+    RingMigration migration(mpi, m, spaceship(), limits);
+    Population mine = populationOf(mpi.rank(), 20);
+    migration.afterGeneration(mine, 4);  // not a migration generation: nothing moves
+    EXPECT_EQ(migration.received(), 0u);
+    migration.afterGeneration(mine, 5);
+    EXPECT_EQ(migration.received(), 3u);
+    EXPECT_EQ(migration.rejected(), 0u);
+    const int left = (mpi.rank() + mpi.size() - 1) % mpi.size();
+    const Population sender = populationOf(left, 20);
+    const Population original = populationOf(mpi.rank(), 20);
+    // the sender's three best (indices 19, 18, 17) replaced my three worst (indices 0, 1, 2)
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(mine.individuals[std::size_t(k)].words, sender.individuals[std::size_t(19 - k)].words) << "slot " << k;
+        EXPECT_EQ(mine.individuals[std::size_t(k)].genes, sender.individuals[std::size_t(19 - k)].genes);
+        EXPECT_EQ(mine.fitness[std::size_t(k)], sender.fitness[std::size_t(19 - k)]);
+    }
+    for (std::size_t i = 3; i < 20; ++i) EXPECT_EQ(mine.individuals[i].words, original.individuals[i].words);
+}
+
+TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
+    const GenomeLimits limits{60};
+    MigrationSettings m;
+    m.interval = 1;
+    m.count = 2;
+    m.async = true;
+    RingMigration migration(mpi, m, spaceship(), limits);
+    Population mine = populationOf(mpi.rank(), 10);
+    for (std::uint32_t g = 1; g <= 50; ++g) migration.afterGeneration(mine, g);
+    migration.finish();
+    EXPECT_EQ(migration.rejected(), 0u);
+    // everything that arrived was a valid chromosome of the sender (checked on arrival)
+    SUCCEED() << "received " << migration.received();
+}
+
+TEST(Migration, CorruptMessagesAreRefused) {
+    const GenomeLimits limits{60};
+    const Population p = populationOf(0, 5);
+    std::vector<std::uint32_t> words;
+    packIndividuals(p, {4, 3}, words);
+    std::vector<Chromosome> got;
+    std::vector<double> fitness;
+    ASSERT_EQ(unpackIndividuals(spaceship(), limits, words, got, fitness), "");
+    ASSERT_EQ(got.size(), 2u);
+    EXPECT_EQ(got[0].words, p.individuals[4].words);
+    auto truncated = words;
+    truncated.pop_back();
+    got.clear();
+    EXPECT_NE(unpackIndividuals(spaceship(), limits, truncated, got, fitness), "");
+    auto damaged = words;
+    damaged[5] = 9999;  // the first gene's rule id
+    got.clear();
+    EXPECT_NE(unpackIndividuals(spaceship(), limits, damaged, got, fitness), "");
+}
+
+}  // namespace
+}  // namespace shapevo
+
+int main(int argc, char** argv) {
+    shapevo::MpiSession mpi(argc, argv);
+    shapevo::gMpi = &mpi;
+    ::testing::InitGoogleTest(&argc, argv);
+    // only rank 0 prints results; every rank runs every test
+    if (mpi.rank() != 0) {
+        auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+        delete listeners.Release(listeners.default_result_printer());
+    }
+    const int failed = RUN_ALL_TESTS();
+    const bool allPassed = mpi.allTrue(failed == 0);
+    return allPassed ? 0 : 1;
+}
