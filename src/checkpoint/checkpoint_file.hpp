@@ -65,11 +65,14 @@ std::string verifyCheckpoint(const std::string& folder);
 /// more digits), newest (highest generation) first. Empty if `runDir` does not exist.
 std::vector<std::string> listCheckpoints(const std::string& runDir);
 /// Remove all but the newest `keep` published checkpoints (keep < 1 counts as 1, so the newest
-/// is never removed), and any stale `.checkpoint-*.partial` folders. Call it after publishing,
-/// while no checkpoint is being written. Best effort: what cannot be removed is left.
+/// is never removed), and any stale `.checkpoint-*.partial` (and `.checkpoint-*.replaced`)
+/// folders. Call it after publishing, while no checkpoint is being written. Best effort: what
+/// cannot be removed is left.
 void pruneCheckpoints(const std::string& runDir, int keep);
-/// Publish a written checkpoint: fsync `partialFolder`, rename it to `finalFolder` (which must
-/// not exist), fsync the parent folder. Throws std::runtime_error.
+/// Publish a written checkpoint: fsync `partialFolder`, rename it to `finalFolder`, fsync the
+/// parent folder. If `finalFolder` exists (a damaged checkpoint of the same generation that a
+/// resume went back past, or a repeat of it), it is moved aside first and deleted after the new
+/// one is published. Throws std::runtime_error.
 void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder);
 
 /// A human summary of a checkpoint folder (what `shapevo inspect` prints): generation, islands,

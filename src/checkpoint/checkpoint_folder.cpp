@@ -33,8 +33,10 @@ long long publishedGeneration(const std::string& name) {
     return g;
 }
 
-bool isPartial(const std::string& name) {
-    return name.starts_with(".checkpoint-") && name.ends_with(".partial");
+/// Unpublished leftovers: `.checkpoint-*.partial` (never finished) and `.checkpoint-*.replaced`
+/// (a same-generation folder moved aside by publishCheckpoint, left by a crash).
+bool isLeftover(const std::string& name) {
+    return name.starts_with(".checkpoint-") && (name.ends_with(".partial") || name.ends_with(".replaced"));
 }
 
 void fsyncFolder(const std::string& path) {
@@ -84,20 +86,33 @@ void pruneCheckpoints(const std::string& runDir, int keep) {
     for (std::size_t i = std::size_t(std::max(keep, 1)); i < published.size(); ++i) fs::remove_all(published[i], ec);
     std::vector<fs::path> partial;
     for (fs::directory_iterator it(runDir, ec), end; !ec && it != end; it.increment(ec))
-        if (isPartial(it->path().filename().string())) partial.push_back(it->path());
+        if (isLeftover(it->path().filename().string())) partial.push_back(it->path());
     for (const fs::path& p : partial) fs::remove_all(p, ec);
 }
 
 void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder) {
-    std::error_code ec;
-    if (fs::exists(finalFolder, ec))
-        throw std::runtime_error(finalFolder + ": already exists; not replacing a published checkpoint");
     // The files were fsynced as they were written; fsync the folder so their names are durable too.
     fsyncFolder(partialFolder);
-    fs::rename(partialFolder, finalFolder, ec);
+    const fs::path final(finalFolder);
+    const fs::path parent = final.parent_path().empty() ? fs::path(".") : final.parent_path();
+    std::error_code ec;
+    // A folder of the same generation exists when a run resumed from an older checkpoint because
+    // this one was damaged (or when a deterministic resume repeats it): move it aside, publish,
+    // then delete it. Older complete checkpoints stay throughout, so one is always there.
+    std::string hidden = final.filename().string();
+    hidden.insert(0, 1, '.');
+    hidden += ".replaced";
+    const fs::path displaced = parent / hidden;
+    const bool replacing = fs::exists(final, ec);
+    if (replacing) {
+        fs::remove_all(displaced, ec);
+        fs::rename(final, displaced, ec);
+        if (ec) throw std::runtime_error("cannot move " + finalFolder + " aside to publish a new one: " + ec.message());
+    }
+    fs::rename(partialFolder, final, ec);
     if (ec) throw std::runtime_error("cannot publish " + partialFolder + " as " + finalFolder + ": " + ec.message());
-    fs::path parent = fs::path(finalFolder).parent_path();
-    fsyncFolder(parent.empty() ? "." : parent.string());
+    fsyncFolder(parent.string());
+    if (replacing) fs::remove_all(displaced, ec);
 }
 
 }  // namespace shapevo

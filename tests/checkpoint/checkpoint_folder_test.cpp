@@ -43,27 +43,42 @@ TEST(CheckpointFolders, ListIsNewestFirstByNumberAndIgnoresOtherNames) {
 TEST(CheckpointFolders, PruneKeepsNewestAndRemovesPartialFolders) {
     test::TempDir dir;
     makeFolders(dir, {"checkpoint-000010", "checkpoint-000020", "checkpoint-000030", "checkpoint-000040",
-                      ".checkpoint-000050.partial", ".checkpoint-000005.partial", "checkpoint-000050.old", "best"});
+                      ".checkpoint-000050.partial", ".checkpoint-000005.partial", ".checkpoint-000040.replaced",
+                      "checkpoint-000050.old", "best"});
     test::writeFile(dir.file(".checkpoint-000050.partial/island-0000.h5"), "half written");
     pruneCheckpoints(dir.path().string(), 2);
     EXPECT_EQ(names(listCheckpoints(dir.path().string())),
               (std::vector<std::string>{"checkpoint-000040", "checkpoint-000030"}));
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000050.partial"));
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000005.partial"));
+    EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000040.replaced"));
     EXPECT_TRUE(fs::exists(dir.path() / "checkpoint-000050.old"));  // not ours: untouched
     EXPECT_TRUE(fs::exists(dir.path() / "best"));
     pruneCheckpoints(dir.path().string(), 0);  // never removes the newest
     EXPECT_EQ(names(listCheckpoints(dir.path().string())), (std::vector<std::string>{"checkpoint-000040"}));
 }
 
-TEST(CheckpointFolders, PublishRenamesAndNeverReplaces) {
+TEST(CheckpointFolders, PublishRenamesThePartialFolder) {
     test::TempDir dir;
     const std::string cp = test::writeCheckpoint(dir.path(), 7);
     EXPECT_TRUE(fs::exists(cp + "/MANIFEST"));
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000007.partial"));
-    fs::create_directories(dir.path() / ".checkpoint-000007.partial");
-    EXPECT_THROW(publishCheckpoint(dir.file(".checkpoint-000007.partial"), cp), std::runtime_error);
     EXPECT_EQ(verifyCheckpoint(cp), "");
+}
+
+TEST(CheckpointFolders, PublishReplacesADamagedFolderOfTheSameGeneration) {
+    test::TempDir dir;
+    test::writeCheckpoint(dir.path(), 10);
+    const std::string damaged = test::writeCheckpoint(dir.path(), 20);
+    fs::resize_file(damaged + "/island-0000.h5", 100);
+    ASSERT_NE(verifyCheckpoint(damaged), "");
+    // A resume went back to generation 10 and reached 20 again.
+    const std::string again = test::writeCheckpoint(dir.path(), 20);
+    EXPECT_EQ(again, damaged);
+    EXPECT_EQ(verifyCheckpoint(again), "");
+    EXPECT_EQ(names(listCheckpoints(dir.path().string())),
+              (std::vector<std::string>{"checkpoint-000020", "checkpoint-000010"}));
+    EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000020.replaced"));
 }
 
 TEST(CheckpointFolders, NewestCompleteCheckpointIsFoundPastADamagedOne) {

@@ -2,6 +2,8 @@
 // exactly the documented names (src/checkpoint/island_file.cpp and run_file.cpp).
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <set>
 #include <sstream>
 
