@@ -37,7 +37,7 @@ std::string describeCheckpoint(const std::string& folder, bool verbose) {
     int islandsListed = 0;
     for (const ManifestEntry& e : files) {
         total += e.size;
-        islandsListed += e.name.starts_with("island-");
+        islandsListed += e.name.starts_with("island-") && e.name.ends_with(".h5");  // validated names
     }
 
     const std::string runPath = (fs::path(folder) / "run.h5").string();

@@ -267,6 +267,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
 
     const toml::table* checkpoint = rd.section("checkpoint");
     rd.number(checkpoint, "checkpoint", "interval", r.checkpoint.interval, 0, 1e9);
+    rd.number(checkpoint, "checkpoint", "seconds", r.checkpoint.seconds, 0, 1e9);
     rd.number(checkpoint, "checkpoint", "keep", r.checkpoint.keep, 1, 1e6);
     rd.rejectUnknown();
     return r;

@@ -66,6 +66,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"best_primitives\": " + std::to_string(s.bestPrimitives) + ",\n";
     t += "  \"target_hash\": \"" + std::string(hash) + "\",\n";
     t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
+    t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
+    t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
     t += "  \"threads\": " + std::to_string(s.threads) + "\n}\n";
     writeText(path, t);
 }

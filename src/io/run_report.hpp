@@ -21,6 +21,7 @@ struct RunSummary {
     std::uint64_t targetHash = 0;
     int threads = 0;   ///< evaluation threads per island
     int islands = 1;   ///< MPI ranks
+    double migrationSeconds = 0, checkpointSeconds = 0;  ///< slowest rank's time in each
 };
 
 /// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).

@@ -108,8 +108,13 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     std::string stopReason;  ///< empty while running
     bool bySignal = false;
     // After each generation: migrate, agree on global statistics and on stopping, checkpoint.
+    double migrationSeconds = 0, checkpointSeconds = 0;  // this rank's time in each, for the summary
+    auto lastCheckpoint = Clock::now();
+    auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     auto afterGeneration = [&]() -> bool {
+        const auto migrationStart = Clock::now();
         migration.afterGeneration(ga.population(), ga.generation());
+        migrationSeconds += since(migrationStart);
         GenerationStats local = ga.stats();
         local.seconds = elapsed();
         localCurve.push_back(local);
@@ -118,7 +123,10 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         std::vector<double> sums{sum, squares, double(ga.population().size()), double(ga.evaluations())};
         mpi.sum(sums);
         const int signal = stopSignalReceived();
-        std::vector<double> maxima{local.best, double(signal), s.wallTime > 0 && local.seconds >= s.wallTime ? 1.0 : 0.0};
+        // rank 0's clock decides time-based checkpoints; the flag travels with the other maxima
+        const bool timeForCheckpoint = root && s.checkpoint.seconds > 0 && since(lastCheckpoint) >= s.checkpoint.seconds;
+        std::vector<double> maxima{local.best, double(signal), s.wallTime > 0 && local.seconds >= s.wallTime ? 1.0 : 0.0,
+                                   timeForCheckpoint ? 1.0 : 0.0};
         mpi.max(maxima);
         GenerationStats global;
         global.generation = ga.generation();
@@ -144,8 +152,9 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         else if (maxima[2] > 0) stopReason = "the wall-time budget";
         else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
         else if (ga.generation() >= s.ga.generations) stopReason = "done";
-        const bool due = s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0;
+        const bool due = (s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0) || maxima[3] > 0;
         if (due || !stopReason.empty()) {
+            const auto checkpointStart = Clock::now();
             IslandState island;
             island.rank = mpi.rank();
             island.generation = ga.generation();
@@ -154,6 +163,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
             island.population = ga.population();
             island.curve = localCurve;
             writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
+            checkpointSeconds += since(checkpointStart);
+            lastCheckpoint = Clock::now();
         }
         return !stopReason.empty();
     };
@@ -189,6 +200,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     packed = mpi.transfer(packed, bestRank, 0);
     std::vector<double> totals{double(ga.evaluations())};
     mpi.sum(totals);
+    std::vector<double> overhead{migrationSeconds, checkpointSeconds};
+    mpi.max(overhead);  // the slowest rank's share is what the run waited for
     result.bestFitness = bestFitness;
     result.evaluations = std::uint64_t(totals[0]);
     result.wallSeconds = elapsed();
@@ -221,6 +234,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.targetHash = target.hash;
         sum.threads = evaluator.threads();
         sum.islands = mpi.size();
+        sum.migrationSeconds = overhead[0];
+        sum.checkpointSeconds = overhead[1];
         writeSummaryJson(sum, folder + "/summary.json");
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];

@@ -31,8 +31,9 @@ struct MigrationSettings {
 };
 
 struct CheckpointSettings {
-    std::uint32_t interval = 10;  ///< generations between checkpoints (0 = only on a signal)
-    int keep = 3;                 ///< newest published checkpoints to keep
+    std::uint32_t interval = 100;  ///< generations between checkpoints (0 = none by count)
+    double seconds = 600;          ///< also checkpoint when this long has passed since the last (0 = never by time)
+    int keep = 3;                  ///< newest published checkpoints to keep
 };
 
 struct RunSettings {
