@@ -112,6 +112,35 @@ TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {
     EXPECT_NE(r.output.find("holds 2 island(s) but 1 rank(s) were started"), std::string::npos) << r.output;
 }
 
+TEST(Islands, DamagedNewestCheckpointIsNamedAndThePreviousOneIsUsed) {
+    TempDir dir;
+    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=20 --out " + dir.file("r") + kSmall).exitCode, 0);
+    // truncate one island file of the newest checkpoint (20); 10 must be used instead
+    const std::string victim = dir.file("r/checkpoint-000020/island-0001.h5");
+    std::filesystem::resize_file(victim, std::filesystem::file_size(victim) / 2);
+    const auto r = runShapevoMpi(2, "resume " + dir.file("r") + " --generations 22");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("checkpoint-000020 is incomplete or damaged"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("island-0001.h5"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("from " + dir.file("r/checkpoint-000010") + " (generation 10)"), std::string::npos) << r.output;
+}
+
+TEST(Islands, ExportWritesTheBestModelOfAnyCheckpoint) {
+    TempDir dir;
+    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=10 --out " + dir.file("r") + kSmall).exitCode, 0);
+    const auto fromRun = runShapevo("export " + dir.file("r") + " --best -o " + dir.file("a.obj"));
+    ASSERT_EQ(fromRun.exitCode, 0) << fromRun.output;
+    // the newest checkpoint's best is the run's best: same mesh as best.obj
+    EXPECT_EQ(readFile(dir.file("a.obj")), readFile(dir.file("r/best.obj")));
+    const auto fromCheckpoint = runShapevo("export " + dir.file("r/checkpoint-000010") + " --best -o " + dir.file("b.ply"));
+    ASSERT_EQ(fromCheckpoint.exitCode, 0) << fromCheckpoint.output;
+    const auto inspect = runShapevo("inspect " + dir.file("r/checkpoint-000010"));
+    ASSERT_EQ(inspect.exitCode, 0) << inspect.output;
+    EXPECT_NE(inspect.output.find("islands      2"), std::string::npos) << inspect.output;
+    const auto again = runShapevo("export " + dir.file("r") + " --best -o " + dir.file("a.obj"));
+    EXPECT_EQ(again.exitCode, 2) << "an existing output is never overwritten";
+}
+
 TEST(Islands, OtherCommandsRefuseSeveralRanks) {
     TempDir dir;
     const auto r = runShapevoMpi(2, "sample " + sourcePath("grammars/spaceship.grammar") + " -o " + dir.file("s.obj"));
