@@ -42,11 +42,10 @@ struct CommandResult {
     std::string output;  ///< stdout and stderr together
 };
 
-/// Run the shapevo binary with `args` (a shell-quoted string) and capture what it prints.
-inline CommandResult runShapevo(const std::string& args) {
-    const std::string cmd = std::string(SHAPEVO_BIN) + " " + args + " 2>&1";
+/// Run a shell command, capturing stdout and stderr together.
+inline CommandResult runCommand(const std::string& command) {
     CommandResult r;
-    FILE* pipe = popen(cmd.c_str(), "r");
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
     if (!pipe) return r;
     std::array<char, 4096> buf;
     while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
@@ -55,19 +54,28 @@ inline CommandResult runShapevo(const std::string& args) {
     return r;
 }
 
+/// Run the shapevo binary with `args` (a shell-quoted string).
+inline CommandResult runShapevo(const std::string& args) { return runCommand(std::string(SHAPEVO_BIN) + " " + args); }
+
 /// Run shapevo on `ranks` MPI ranks (oversubscribed, root allowed, as CI needs).
 inline CommandResult runShapevoMpi(int ranks, const std::string& args) {
-    const std::string cmd = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + std::string(SHAPEVO_MPIRUN) +
-                            " --oversubscribe -np " + std::to_string(ranks) + " " + std::string(SHAPEVO_BIN) + " " + args +
-                            " 2>&1";
-    CommandResult r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf;
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return runCommand("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + std::string(SHAPEVO_MPIRUN) +
+                      " --oversubscribe -np " + std::to_string(ranks) + " " + std::string(SHAPEVO_BIN) + " " + args);
+}
+
+/// curve.csv without its seconds column (the only column that differs between repeated runs).
+inline std::string curveWithoutTime(const std::string& csv) {
+    std::string out;
+    std::size_t start = 0;
+    while (start < csv.size()) {
+        std::size_t end = csv.find('\n', start);
+        if (end == std::string::npos) end = csv.size();
+        const std::string line = csv.substr(start, end - start);
+        const auto a = line.find(','), b = line.find(',', a + 1);
+        out += line.substr(0, a) + line.substr(b) + "\n";
+        start = end + 1;
+    }
+    return out;
 }
 
 inline std::string readFile(const std::string& path) {

@@ -20,6 +20,7 @@
 #include "io/vdb_target_file.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "island/mpi_session.hpp"
+#include "island/stop_signal.hpp"
 #include "run/run_job.hpp"
 #include "score/volume_scorer.hpp"
 
@@ -158,6 +159,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const bool parallel = *run || *resume;
+    if (parallel) installStopSignalHandlers();  // early: a signal while loading must not kill a rank
     if (mpi.size() > 1 && !parallel) {
         if (mpi.rank() == 0)
             std::cerr << "shapevo: error: only 'run' and 'resume' use several MPI ranks; start '"

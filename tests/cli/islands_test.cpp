@@ -16,6 +16,7 @@
 namespace shapevo {
 namespace {
 
+using test::curveWithoutTime;
 using test::readFile;
 using test::runShapevo;
 using test::runShapevoMpi;
@@ -27,16 +28,6 @@ const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.
 
 std::string config() { return sourcePath("configs/spaceship.toml"); }
 
-/// curve.csv without the seconds column.
-std::string curveWithoutTime(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        const auto a = line.find(','), b = line.find(',', a + 1);
-        out += line.substr(0, a) + line.substr(b) + "\n";
-    }
-    return out;
-}
 
 /// Islands of a checkpoint must match: chromosomes, fitness bits, RNG, curve (but seconds).
 void expectSameIslands(const std::string& a, const std::string& b, int ranks) {

@@ -10,6 +10,7 @@
 namespace shapevo {
 namespace {
 
+using test::curveWithoutTime;
 using test::readFile;
 using test::runShapevo;
 using test::sourcePath;
@@ -17,16 +18,6 @@ using test::TempDir;
 
 const std::string kSmall = " --set ga.population=40 --set ga.generations=8 --set ga.elitism=6 -q";
 
-/// curve.csv without the seconds column.
-std::string curveWithoutTime(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        const auto a = line.find(','), b = line.find(',', a + 1);
-        out += line.substr(0, a) + line.substr(b) + "\n";
-    }
-    return out;
-}
 
 TEST(Run, WritesEveryOutputFile) {
     TempDir dir;
