@@ -25,14 +25,14 @@ struct GaSettings {
 
 /// Ring migration between islands (one island per MPI rank).
 struct MigrationSettings {
-    std::uint32_t interval = 10;  ///< generations between migrations (0 = never)
+    std::uint32_t interval = 20;  ///< generations between migrations (0 = never)
     std::uint32_t count = 5;      ///< best individuals sent to rank + 1, replacing its worst
     bool async = false;           ///< non-blocking messages (not repeatable) instead of lock-step
 };
 
 struct CheckpointSettings {
-    std::uint32_t interval = 100;  ///< generations between checkpoints (0 = none by count)
-    double seconds = 600;          ///< also checkpoint when this long has passed since the last (0 = never by time)
+    std::uint32_t interval = 500;  ///< generations between checkpoints (0 = none by count)
+    double seconds = 300;          ///< also checkpoint when this long has passed since the last (0 = never by time)
     int keep = 3;                  ///< newest published checkpoints to keep
 };
 
