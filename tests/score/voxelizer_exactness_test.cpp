@@ -3,6 +3,7 @@
 // mirrored, axis-aligned and boundary-aligned boxes and boxes that leave the grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -68,8 +69,11 @@ VoxelCounts bruteForce(const std::vector<Primitive>& prims, const VolumeTarget& 
         long lo[3], hi[3];
         const long n[3] = {g.nx, g.ny, g.nz};
         for (int j = 0; j < 3; ++j) {
-            lo[j] = std::max(-n[j], long(std::floor((b.c[j] - r - g.origin[j]) / g.voxelSize)) - 2);
-            hi[j] = std::min(2 * n[j] - 1, long(std::ceil((b.c[j] + r - g.origin[j]) / g.voxelSize)) + 2);
+            // clamped into the halo as doubles: a box 1e20 away must not overflow the conversion
+            const double l = std::floor((b.c[j] - r - g.origin[j]) / g.voxelSize) - 2;
+            const double h = std::ceil((b.c[j] + r - g.origin[j]) / g.voxelSize) + 2;
+            lo[j] = long(std::clamp(l, double(-n[j]), double(2 * n[j])));
+            hi[j] = long(std::clamp(h, double(-n[j] - 1), double(2 * n[j] - 1)));
         }
         for (long z = lo[2]; z <= hi[2]; ++z)
             for (long y = lo[1]; y <= hi[1]; ++y)

@@ -19,8 +19,8 @@ SETS=(--set ga.population=60 --set ga.elitism=6 --set ga.tournament=5 --set chec
       --set checkpoint.seconds=0 --set checkpoint.keep=2 --set migration.interval=2 --set migration.count=3
       --set run.threads=1 --set "ga.generations=$GENERATIONS")
 
-newest_checkpoint() {  # generation of the newest complete checkpoint, via shapevo inspect
-    "$BIN" inspect "$RUN" 2>/dev/null | awk '$1 == "generation" {print $2; exit}'
+newest_checkpoint() {  # generation of the newest complete checkpoint, via shapevo inspect ("" if none)
+    { "$BIN" inspect "$RUN" 2>/dev/null || true; } | awk '$1 == "generation" {print $2; exit}'
 }
 
 RANDOM=${SEED:-4242}
@@ -32,8 +32,9 @@ for round in $(seq 1 10); do
         "$MPIRUN" --oversubscribe -np 2 "$BIN" resume "$RUN" --generations $GENERATIONS >"$log" 2>&1 &
     fi
     launcher=$!
-    # a random moment between 0.4 and 2.0 seconds, after the ranks have started
-    delay=$(awk -v r=$RANDOM 'BEGIN {printf "%.2f", 0.4 + 1.6 * r / 32767}')
+    # a random moment between 0.2 and 1.8 seconds after the ranks report their first generation
+    for _ in $(seq 1 300); do grep -q '^gen ' "$log" && break; sleep 0.05; done
+    delay=$(awk -v r=$RANDOM 'BEGIN {printf "%.2f", 0.2 + 1.6 * r / 32767}')
     sleep "$delay"
     ranks=$(pgrep -P "$launcher" -f shapevo || true)
     victim=$(echo "$ranks" | awk -v r=$RANDOM 'NF {a[n++] = $1} END {if (n) print a[r % n]}')
@@ -45,7 +46,7 @@ for round in $(seq 1 10); do
     if [ -z "$newest" ]; then echo "round $round: no complete checkpoint after the kill"; cat "$log"; exit 1; fi
     last=${last:-$newest}   # killed before it reported a generation: nothing new to lose
     lost=$((last - newest))
-    echo "round $round: killed rank pid $victim after ${delay}s at generation $last; newest complete checkpoint $newest (lost $lost)"
+    echo "round $round: killed rank pid $victim ${delay}s into the run, at generation $last; newest complete checkpoint $newest (lost $lost)"
     if [ "$lost" -gt "$INTERVAL" ]; then echo "lost more than one checkpoint interval"; exit 1; fi
 done
 # and the run can still finish: resume with a limit just past the newest checkpoint
