@@ -132,6 +132,24 @@ TEST(Islands, ExportWritesTheBestModelOfAnyCheckpoint) {
     EXPECT_EQ(again.exitCode, 2) << "an existing output is never overwritten";
 }
 
+TEST(Islands, TargetFitnessAndWallTimeStopEveryRankTogether) {
+    TempDir dir;
+    const auto target = runShapevoMpi(2, "run " + config() + " --set ga.generations=100000 --set run.target_fitness=0.95"
+                                             " --out " + dir.file("t") + " --set ga.population=30 --set ga.elitism=4");
+    ASSERT_EQ(target.exitCode, 0) << target.output;
+    EXPECT_NE(target.output.find("done after reaching the target fitness"), std::string::npos) << target.output;
+    const auto wall = runShapevoMpi(2, "run " + config() + " --set ga.generations=100000000 --set run.wall_time=0.5"
+                                           " --out " + dir.file("w") + " --set ga.population=30 --set ga.elitism=4 -q");
+    ASSERT_EQ(wall.exitCode, 0) << wall.output;
+    // it stopped long before the limit, with a checkpoint of the generation it stopped at
+    const std::string summary = readFile(dir.file("w/summary.json"));
+    const auto at = summary.find("\"generations\": ");
+    ASSERT_NE(at, std::string::npos);
+    const unsigned long generations = std::stoul(summary.substr(at + 15));
+    EXPECT_LT(generations, 100000000ul);
+    EXPECT_TRUE(std::filesystem::exists(dir.file("w/") + checkpointName(std::uint32_t(generations)))) << summary;
+}
+
 TEST(Islands, OtherCommandsRefuseSeveralRanks) {
     TempDir dir;
     const auto r = runShapevoMpi(2, "sample " + sourcePath("grammars/spaceship.grammar") + " -o " + dir.file("s.obj"));
