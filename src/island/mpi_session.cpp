@@ -96,8 +96,4 @@ void MpiSession::abort(int code) const {
     std::exit(code);
 }
 
-void MpiSession::barrier() const {
-    if (active_) MPI_Barrier(MPI_COMM_WORLD);
-}
-
 }  // namespace shapevo

@@ -34,7 +34,6 @@ public:
     bool fromRoot(bool flag) const;
     /// Broadcast a string from rank 0.
     std::string broadcast(const std::string& s) const;
-    void barrier() const;
     /// End every rank now (MPI_Abort) when MPI is active; otherwise exit.
     [[noreturn]] void abort(int code) const;
 
