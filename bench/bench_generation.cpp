@@ -11,6 +11,7 @@
 
 #include "grammar/parser.hpp"
 #include "io/config_file.hpp"
+#include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace {

@@ -91,7 +91,7 @@ void BM_DeriveScore(benchmark::State& state) {
     const VolumeTarget& target = targetFor(state.range(0));
     const VolumeScorer scorer(spaceship(), target, VolumeFitnessSettings{});
     const auto& pop = population();
-    auto ws = scorer.makeWorkspace();
+    auto ws = std::make_unique<VolumeScorer::Workspace>(target.grid);
     VoxelCounts counts;
     for (const Chromosome& c : pop) scorer.fitness(c, *ws, &counts);  // warm every buffer
     std::uint64_t rows = 0;

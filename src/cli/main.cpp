@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
             const Chromosome c = readGenome(g, s.limits, evalGenome);
             const VolumeTarget t = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
             const VolumeScorer scorer(g, t, s.fitness);
-            auto ws = scorer.makeWorkspace();
+            auto ws = std::make_unique<VolumeScorer::Workspace>(t.grid);
             VoxelCounts counts;
             const double f = scorer.fitness(c, *ws, &counts);
             std::printf("fitness %.6f  voxel_iou %.4f  genes %u  primitives %zu  inside %llu  occupied %llu  "

@@ -1,25 +1,43 @@
-// Primitive: what a derivation emits. An oriented box: centre, three unit axes (a right- or
-// left-handed frame; mirroring flips one), and half extents along them.
+// Primitive: what a derivation emits. Every kind lives in an oriented frame: a centre, three
+// unit axes (a right- or left-handed frame; mirroring flips one) and half extents along them.
+// In the frame's local coordinates u = (x/half.x, y/half.y, z/half.z) the solids are:
+//   Box       |u.x| <= 1, |u.y| <= 1, |u.z| <= 1
+//   Cylinder  u.x^2 + u.z^2 <= 1, |u.y| <= 1                (axis = the frame's y axis)
+//   Cone      u.x^2 + u.z^2 <= r(u.y)^2, |u.y| <= 1, with r(y) = (1 + taper)/2 + (taper - 1)/2 * y:
+//             radius 1 at the bottom (u.y = -1) and `taper` (in [0, 1]) at the top; taper 0 is a
+//             pointed cone, taper 1 a cylinder
+//   Sphere    |u| <= 1 (an ellipsoid filling the box)
+//   Mesh      the closed triangle mesh Geometry::meshes[mesh], whose vertices are already in u
+//             coordinates (the file's bounding box mapped onto [-1, 1]^3)
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "geometry/mesh_shape.hpp"
+
 namespace shapevo {
 
-enum class PrimitiveKind : unsigned char { Box };
+enum class PrimitiveKind : unsigned char { Box, Cylinder, Cone, Sphere, Mesh };
+inline constexpr int kPrimitiveKinds = 5;
 
 struct Primitive {
     PrimitiveKind kind = PrimitiveKind::Box;
+    std::uint16_t mesh = 0;  ///< Mesh: index into Geometry::meshes
+    float taper = 1.0f;      ///< Cone: top radius / bottom radius, in [0, 1]
     glm::vec3 centre{0.0f};
-    glm::mat3 axes{1.0f};    ///< columns: the box's local x, y, z directions (unit length)
+    glm::mat3 axes{1.0f};    ///< columns: the frame's local x, y, z directions (unit length)
     glm::vec3 half{0.5f};    ///< half extents along the axes
 };
 
 /// The geometry of one model; reused between evaluations (clear() keeps capacity).
 struct Geometry {
     std::vector<Primitive> primitives;
+    /// The grammar's meshes that Mesh primitives refer to (owned by the Grammar; may be null
+    /// when there are none).
+    const std::vector<MeshShape>* meshes = nullptr;
     void clear() { primitives.clear(); }
 };
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/mesh_shape.hpp"
+
 namespace shapevo {
 
 /// One instruction of the tiny stack machine that evaluates compiled expressions.
@@ -53,12 +55,17 @@ struct Slot {
     bool mandatory() const { return probability >= 1.0f; }
 };
 
-enum class StatementKind : std::uint8_t { Scale, Size, Translate, Rotate, Mirror, Box, Child };
+enum class StatementKind : std::uint8_t {
+    Scale, Size, Translate, Rotate, Mirror, Child,
+    Box, Cylinder, Cone, Sphere, Mesh,   // primitives (Cone: expr[0] = top radius ratio)
+    TerminalBegin, TerminalEnd,          // `terminal { ... }`: runs only on genes without expressed children
+};
 struct Statement {
     StatementKind kind;
     std::uint8_t axis = 0;       ///< Rotate, Mirror
-    std::uint16_t slot = 0;      ///< Child
-    ExprRef expr[3];             ///< vector statements use 3, Rotate uses expr[0]
+    std::uint16_t slot = 0;      ///< Child: slot index; Mesh: index into Grammar::meshes
+    std::uint32_t end = 0;       ///< TerminalBegin: index of its TerminalEnd
+    ExprRef expr[3];             ///< vector statements use 3, Rotate and Cone use expr[0]
 };
 
 struct SourceLocation {
@@ -84,6 +91,7 @@ struct Grammar {
     std::uint16_t start = 0;
     std::vector<Instr> code;
     std::vector<float> choiceValues;
+    std::vector<MeshShape> meshes;   ///< shapes of `mesh "file"` statements, read when the grammar is loaded
     std::uint32_t edgeCount = 0;
     int maxStack = 0;        ///< deepest expression evaluation stack
     /// Largest number of genes a freshly grown gene of each rule brings with it (mandatory children).

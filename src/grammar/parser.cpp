@@ -2,8 +2,8 @@
 //   start NAME
 //   attr NAME = NUMBER
 //   rule NAME { param NAME = PRIOR ...  STATEMENT ... }
-// with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, box,
-// child [w] A | [w] B ... [prob P] [max K]. Checks after parsing live in grammar_checks.cpp.
+// with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, box, cylinder,
+// cone [top EXPR], sphere, mesh "FILE", terminal { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after parsing live in grammar_checks.cpp.
 #include "grammar/parser.hpp"
 
 #include <cmath>
@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "grammar/expression.hpp"
+#include "geometry/mesh_shape_file.hpp"
 #include "grammar/grammar_checks.hpp"
 #include "io/input_error.hpp"
 
@@ -294,8 +296,7 @@ private:
     void parseStatement(Rule& rule) {
         const Token word = tokens_.take();
         if (word.kind != TokenKind::Identifier)
-            tokens_.fail(word.where, "expected a statement (param, scale, size, translate, rotate, mirror, box, child), found " +
-                                         word.describe());
+            tokens_.fail(word.where, "expected a statement (" + std::string(kStatementList) + "), found " + word.describe());
         if (word.text == "param") return parseParam(rule);
         Statement s{};
         const ExpressionContext ctx{&rule.params, &attrs_};
@@ -303,22 +304,93 @@ private:
             s.kind = word.text == "scale" ? StatementKind::Scale : word.text == "size" ? StatementKind::Size : StatementKind::Translate;
             exprs_.compile(ctx, 3, g_.code, s.expr, g_.maxStack);
         } else if (word.text == "rotate" || word.text == "mirror") {
+            if (terminalAt_ && word.text == "mirror")
+                tokens_.fail(word.where, "'mirror' cannot be used inside 'terminal { }' (opened at line " +
+                                             std::to_string(terminalAt_->line) + ")");
             const SourceLocation at = tokens_.peek().where;
             const std::string axis = tokens_.expectIdentifier("an axis x, y or z after '" + word.text + "'");
             if (axisIndex(axis) < 0) tokens_.fail(at, "expected an axis x, y or z after '" + word.text + "', found '" + axis + "'");
             s.axis = std::uint8_t(axisIndex(axis));
             s.kind = word.text == "rotate" ? StatementKind::Rotate : StatementKind::Mirror;
             if (s.kind == StatementKind::Rotate) exprs_.compile(ctx, 1, g_.code, s.expr, g_.maxStack);
-        } else if (word.text == "box") {
-            s.kind = StatementKind::Box;
+        } else if (word.text == "box" || word.text == "cylinder" || word.text == "sphere") {
+            s.kind = word.text == "box" ? StatementKind::Box : word.text == "cylinder" ? StatementKind::Cylinder : StatementKind::Sphere;
+        } else if (word.text == "cone") {
+            s.kind = StatementKind::Cone;
+            if (tokens_.peek().isWord("top")) {  // cone top RATIO: a frustum
+                tokens_.take();
+                exprs_.compile(ctx, 1, g_.code, s.expr, g_.maxStack);
+            } else {  // a pointed cone: top radius 0
+                s.expr[0] = constantExpression(0.0f);
+            }
+        } else if (word.text == "mesh") {
+            s.kind = StatementKind::Mesh;
+            s.slot = parseMesh();
+        } else if (word.text == "terminal") {
+            return parseTerminal(rule, word.where);
         } else if (word.text == "child") {
+            if (terminalAt_)
+                tokens_.fail(word.where, "'child' cannot be used inside 'terminal { }' (opened at line " +
+                                             std::to_string(terminalAt_->line) + "): it runs only on genes without children");
             s.kind = StatementKind::Child;
             parseChild(rule, s, word.where);
         } else {
-            tokens_.fail(word.where, "unknown statement '" + word.text +
-                                         "': expected param, scale, size, translate, rotate, mirror, box or child");
+            tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + std::string(kStatementList));
         }
         rule.statements.push_back(s);
+    }
+
+    static constexpr const char* kStatementList =
+        "param, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, terminal or child";
+
+    ExprRef constantExpression(float v) {
+        const ExprRef e{std::uint32_t(g_.code.size()), std::uint32_t(g_.code.size() + 1)};
+        g_.code.push_back({OpCode::Const, 0, 0, v});
+        g_.maxStack = std::max(g_.maxStack, 1);
+        return e;
+    }
+
+    /// terminal { STATEMENTS }: statements that run only when the gene has no expressed
+    /// children (a branch that ends gets its foliage); the scope is restored after the block.
+    void parseTerminal(Rule& rule, const SourceLocation& at) {
+        if (terminalAt_)
+            tokens_.fail(at, "'terminal' blocks cannot be nested (the outer one opened at line " +
+                                 std::to_string(terminalAt_->line) + ")");
+        tokens_.expect('{', "after 'terminal'");
+        terminalAt_ = at;
+        const std::size_t begin = rule.statements.size();
+        Statement open{};
+        open.kind = StatementKind::TerminalBegin;
+        rule.statements.push_back(open);
+        while (!tokens_.peek().is('}')) {
+            if (tokens_.peek().kind == TokenKind::End)
+                tokens_.expected("'}' to close the terminal block opened at line " + std::to_string(at.line));
+            parseStatement(rule);
+        }
+        tokens_.take();
+        terminalAt_.reset();
+        rule.statements[begin].end = std::uint32_t(rule.statements.size());
+        Statement close{};
+        close.kind = StatementKind::TerminalEnd;
+        rule.statements.push_back(close);
+    }
+
+    /// mesh "file": a closed OBJ/PLY/STL mesh, found relative to the grammar file's folder and
+    /// read once (the same file twice shares one shape).
+    std::uint16_t parseMesh() {
+        const Token name = tokens_.take();
+        if (name.kind != TokenKind::String) tokens_.fail(name.where, "expected a file name in quotes after 'mesh', found " + name.describe());
+        for (std::size_t i = 0; i < g_.meshes.size(); ++i)
+            if (g_.meshes[i].path == name.text) return std::uint16_t(i);
+        if (g_.meshes.size() >= 65535) tokens_.fail(name.where, "too many different meshes (at most 65535)");
+        const std::filesystem::path file = std::filesystem::path(g_.path).parent_path() / name.text;
+        try {
+            g_.meshes.push_back(loadMeshShape(file.string()));
+        } catch (const InputError& e) {
+            tokens_.fail(name.where, "mesh \"" + name.text + "\": " + e.what());
+        }
+        g_.meshes.back().path = name.text;
+        return std::uint16_t(g_.meshes.size() - 1);
     }
 
     TokenStream tokens_;
@@ -328,6 +400,7 @@ private:
     std::string startName_;
     std::vector<RuleRef> pendingRefs_;
     std::map<std::string, int> ruleIndex_;
+    std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
 };
 
 }  // namespace

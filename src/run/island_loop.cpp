@@ -13,6 +13,7 @@
 #include "io/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
+#include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace shapevo {
@@ -210,7 +211,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         Chromosome champion;
         champion.genes = packed.front();
         champion.words.assign(packed.begin() + 1, packed.end());
-        auto ws = scorer.makeWorkspace();
+        auto ws = std::make_unique<VolumeScorer::Workspace>(target.grid);
         VoxelCounts counts;
         scorer.fitness(champion, *ws, &counts);
         const Mesh mesh = meshOf(ws->geometry);

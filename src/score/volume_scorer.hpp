@@ -3,34 +3,35 @@
 #pragma once
 #include <memory>
 
-#include "geometry/derive.hpp"
+#include "score/scorer.hpp"
 #include "score/volume_fitness.hpp"
 #include "score/volume_target.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {
 
-class VolumeScorer {
+class VolumeScorer final : public Scorer {
 public:
-    struct Workspace {
+    struct Workspace : ScoreWorkspace {
         explicit Workspace(const GridSpec& grid) : voxelizer(grid) {}
-        DeriveScratch derive;
-        Geometry geometry;
         Voxelizer voxelizer;
     };
 
     VolumeScorer(const Grammar& g, const VolumeTarget& target, const VolumeFitnessSettings& settings)
         : grammar_(g), target_(target), settings_(settings) {}
 
-    std::unique_ptr<Workspace> makeWorkspace() const { return std::make_unique<Workspace>(target_.grid); }
-    double fitness(const Chromosome& c, Workspace& w, VoxelCounts* countsOut = nullptr) const {
+    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<Workspace>(target_.grid); }
+    double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
+        return fitness(c, static_cast<Workspace&>(w), nullptr);
+    }
+    double fitness(const Chromosome& c, Workspace& w, VoxelCounts* countsOut) const {
         derive(grammar_, c, w.geometry, w.derive);
         const VoxelCounts counts = w.voxelizer.score(w.geometry.primitives, target_);
         if (countsOut) *countsOut = counts;
         return volumeFitness(settings_, counts, target_.fillCount, c.genes);
     }
     const VolumeTarget& target() const { return target_; }
-    const Grammar& grammar() const { return grammar_; }
+    const Grammar& grammar() const override { return grammar_; }
 
 private:
     const Grammar& grammar_;

@@ -5,7 +5,7 @@
 
 namespace shapevo {
 
-Evaluator::Evaluator(const VolumeScorer& scorer, int threads)
+Evaluator::Evaluator(const Scorer& scorer, int threads)
     : scorer_(scorer), arena_(threads > 0 ? threads : tbb::task_arena::automatic) {}
 
 void Evaluator::evaluate(Population& pop, std::size_t from) {

@@ -6,7 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
-#include "score/volume_scorer.hpp"
+#include "score/scorer.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {
@@ -14,16 +14,16 @@ namespace shapevo {
 class Evaluator {
 public:
     /// threads = 0: all hardware threads.
-    Evaluator(const VolumeScorer& scorer, int threads);
+    Evaluator(const Scorer& scorer, int threads);
     /// Fill pop.fitness[i] for i in [from, pop.size()).
     void evaluate(Population& pop, std::size_t from = 0);
     int threads() const { return arena_.max_concurrency(); }
-    const VolumeScorer& scorer() const { return scorer_; }
+    const Scorer& scorer() const { return scorer_; }
 
 private:
-    const VolumeScorer& scorer_;
+    const Scorer& scorer_;
     tbb::task_arena arena_;
-    tbb::enumerable_thread_specific<std::unique_ptr<VolumeScorer::Workspace>> workspaces_;
+    tbb::enumerable_thread_specific<std::unique_ptr<ScoreWorkspace>> workspaces_;
 };
 
 }  // namespace shapevo
