@@ -6,6 +6,7 @@
 #include "genome/validate.hpp"
 #include "grammar/parser.hpp"
 #include "io/vdb_target_file.hpp"
+#include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace shapevo {
