@@ -22,6 +22,10 @@ namespace shapevo {
 
 enum class PrimitiveKind : unsigned char { Box, Cylinder, Cone, Sphere, Mesh };
 inline constexpr int kPrimitiveKinds = 5;
+/// Polygon sides used wherever a round primitive must be drawn as a polyhedron (exported
+/// meshes; silhouettes in image targets): cylinders and cones become kRoundSides-gon prisms and
+/// frusta with vertices at angles 2*pi*k/kRoundSides from the local +x axis towards +z.
+inline constexpr int kRoundSides = 16;
 
 struct Primitive {
     PrimitiveKind kind = PrimitiveKind::Box;
