@@ -54,7 +54,8 @@ TEST_P(OperatorProperties, TenThousandRandomOperatorSequencesKeepEveryInvariant)
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
-                         ::testing::Values("grammars/spaceship.grammar", "grammars/coral.grammar"));
+                         ::testing::Values("grammars/spaceship.grammar", "grammars/coral.grammar", "grammars/tree.grammar",
+                                           "grammars/city.grammar", "grammars/city-filling.grammar"));
 
 TEST(Cut, NeverRemovesMandatoryChildren) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/coral.grammar"));

@@ -1,0 +1,124 @@
+// The primitive statements (cylinder, cone [top], sphere, mesh "file") and `terminal { }` blocks:
+// what they emit, where, and only on genes without expressed children.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../test_support.hpp"
+#include "genome/operators.hpp"
+#include "geometry/derive.hpp"
+#include "grammar/parser.hpp"
+#include "io/input_error.hpp"
+
+namespace shapevo {
+namespace {
+
+/// A root gene of `start` with every optional child slot left empty, params from the prior.
+Chromosome rootOnly(const Grammar& g, std::uint64_t seed = 1) {
+    Rng rng(seed);
+    Chromosome c;
+    plantRoot(g, c, rng);
+    return c;
+}
+
+TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
+    const Grammar g = parseGrammar(
+        "start A\n"
+        "rule A {\n  size (2, 4, 6)\n  box\n  cylinder\n  cone\n  cone top 0.25\n  cone top 7\n  sphere\n}\n",
+        "kinds.grammar");
+    Geometry out;
+    DeriveScratch scratch;
+    ASSERT_TRUE(derive(g, rootOnly(g), out, scratch));
+    ASSERT_EQ(out.primitives.size(), 6u);
+    const PrimitiveKind kinds[] = {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone,
+                                   PrimitiveKind::Cone, PrimitiveKind::Cone, PrimitiveKind::Sphere};
+    for (std::size_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(out.primitives[i].kind, kinds[i]) << i;
+        EXPECT_EQ(out.primitives[i].half, glm::vec3(1, 2, 3)) << i;
+    }
+    EXPECT_EQ(out.primitives[2].taper, 0.0f);   // `cone` alone is pointed
+    EXPECT_EQ(out.primitives[3].taper, 0.25f);
+    EXPECT_EQ(out.primitives[4].taper, 1.0f);   // clamped to [0, 1]
+    EXPECT_EQ(out.meshes, &g.meshes);
+}
+
+TEST(PrimitiveStatements, TerminalBlockRunsOnlyWithoutExpressedChildrenAndRestoresTheScope) {
+    const Grammar g = parseGrammar(
+        "start A\n"
+        "rule A {\n  child B prob 0.5\n  terminal {\n    translate (0, 5, 0)\n    sphere\n  }\n  box\n}\n"
+        "rule B {\n  cylinder\n}\n",
+        "terminal.grammar");
+    DeriveScratch scratch;
+    Geometry out;
+    Chromosome c = rootOnly(g);
+    ASSERT_EQ(c.genes, 1u);
+    ASSERT_TRUE(derive(g, c, out, scratch));
+    ASSERT_EQ(out.primitives.size(), 2u);  // no children: the sphere, then the box
+    EXPECT_EQ(out.primitives[0].kind, PrimitiveKind::Sphere);
+    EXPECT_EQ(out.primitives[0].centre, glm::vec3(0, 5, 0));
+    EXPECT_EQ(out.primitives[1].kind, PrimitiveKind::Box);
+    EXPECT_EQ(out.primitives[1].centre, glm::vec3(0, 0, 0));  // the translate did not leak out
+
+    Rng rng(3);
+    appendGene(g, c, std::uint16_t(g.findRule("B")), 0, 0, rng);
+    ASSERT_EQ(c.genes, 2u);
+    ASSERT_TRUE(derive(g, c, out, scratch));
+    ASSERT_EQ(out.primitives.size(), 2u);  // a child: no sphere
+    for (const Primitive& p : out.primitives) EXPECT_NE(p.kind, PrimitiveKind::Sphere);
+}
+
+TEST(PrimitiveStatements, MeshFilesAreReadOnceRelativeToTheGrammarAndNormalized) {
+    test::TempDir dir;
+    std::filesystem::copy_file(test::sourcePath("grammars/meshes/leaf.obj"), (dir.path() / "leaf.obj").string());
+    const std::string text = "start A\nrule A {\n  mesh \"leaf.obj\"\n  scale 2\n  mesh \"leaf.obj\"\n}\n";
+    test::writeFile((dir.path() / "leafy.grammar").string(), text);
+    const Grammar g = loadGrammar((dir.path() / "leafy.grammar").string());
+    ASSERT_EQ(g.meshes.size(), 1u);  // the same file twice is one shape
+    float lo = 1, hi = -1;
+    for (const glm::vec3& v : g.meshes[0].vertices)
+        for (int j = 0; j < 3; ++j) lo = std::min(lo, v[j]), hi = std::max(hi, v[j]);
+    EXPECT_EQ(lo, -1.0f);
+    EXPECT_EQ(hi, 1.0f);
+    Geometry out;
+    DeriveScratch scratch;
+    ASSERT_TRUE(derive(g, rootOnly(g), out, scratch));
+    ASSERT_EQ(out.primitives.size(), 2u);
+    EXPECT_EQ(out.primitives[1].kind, PrimitiveKind::Mesh);
+    EXPECT_EQ(out.primitives[1].mesh, 0);
+    EXPECT_EQ(out.primitives[1].half, glm::vec3(1, 1, 1));
+}
+
+TEST(PrimitiveStatements, AnOpenMeshIsALocatedError) {
+    test::TempDir dir;
+    test::writeFile((dir.path() / "open.obj").string(), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    test::writeFile((dir.path() / "g.grammar").string(), "start A\nrule A {\n  mesh \"open.obj\"\n}\n");
+    try {
+        loadGrammar((dir.path() / "g.grammar").string());
+        FAIL() << "an open mesh was accepted";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("g.grammar:3:8: mesh \"open.obj\": "), std::string::npos) << m;
+        EXPECT_NE(m.find("open"), std::string::npos) << m;
+    }
+}
+
+TEST(PrimitiveStatements, ShippedTreeAndCityGrammarsLoadAndDerive) {
+    for (const char* name : {"tree.grammar", "city.grammar", "city-filling.grammar"}) {
+        const Grammar g = loadGrammar(test::sourcePath(std::string("grammars/") + name));
+        Rng rng(5);
+        const GenomeLimits limits{400};
+        DeriveScratch scratch;
+        Geometry out;
+        for (int trial = 0; trial < 20; ++trial) {
+            Chromosome c;
+            while (c.genes < 60 && grow(g, c, rng, limits)) {
+            }
+            ASSERT_TRUE(derive(g, c, out, scratch)) << name;
+            for (const Primitive& p : out.primitives)
+                for (int j = 0; j < 3; ++j) ASSERT_TRUE(std::isfinite(p.centre[j]) && p.half[j] >= 0) << name;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace shapevo
