@@ -5,7 +5,7 @@ set -eu
 cd "$(dirname "$0")/.."
 BIN=${1:-build/shapevo}
 rm -f targets/spaceship-reachable.obj targets/spaceship-reachable.genome targets/spaceship-reachable.vdb \
-      targets/spaceship-paper.vdb
+      targets/spaceship-paper.vdb targets/tree-volume.vdb targets/tree-avoid.vdb targets/castle.vdb
 
 # A reachable target: one fixed derivation of the spaceship grammar (seed 7, 14 genes).
 "$BIN" sample grammars/spaceship.grammar --seed 7 --min-genes 14 --max-genes 18 \
@@ -14,3 +14,10 @@ rm -f targets/spaceship-reachable.obj targets/spaceship-reachable.genome targets
 
 # The papers' spaceship target mesh (crest01/ShapeGenetics, MIT licence: targets/shapegenetics/LICENSE).
 "$BIN" target targets/shapegenetics/spaceship_target.obj --voxel-size 0.1 -o targets/spaceship-paper.vdb
+
+# The papers' other volume targets (same source and licence): the tree to fill (80^3 voxels over
+# [-5, 5]^3 in their runs), the space a tree must avoid (150^3 there), the castle a city fills
+# (100^3 over [-10, 10]^3). Voxel sizes match their grids.
+"$BIN" target targets/shapegenetics/target_tree.obj --voxel-size 0.125 -o targets/tree-volume.vdb
+"$BIN" target targets/shapegenetics/tree_avoid.obj --voxel-size 0.125 -o targets/tree-avoid.vdb
+"$BIN" target targets/shapegenetics/target_castle.obj --voxel-size 0.2 -o targets/castle.vdb
