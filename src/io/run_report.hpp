@@ -1,6 +1,7 @@
 // Run reports: the fitness curve (curve.csv) and the run summary (summary.json).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@ struct RunSummary {
     std::uint64_t evaluations = 0;
     double wallSeconds = 0;
     double bestFitness = 0;
-    double voxelIoU = 0;
+    std::optional<double> voxelIoU;       ///< volume targets
+    std::optional<double> silhouetteIoU;  ///< image targets
     std::uint32_t bestGenes = 0;
     std::size_t bestPrimitives = 0;
     std::uint64_t targetHash = 0;

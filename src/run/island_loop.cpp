@@ -13,7 +13,6 @@
 #include "io/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
-#include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace shapevo {
@@ -84,15 +83,14 @@ bool writeCheckpoint(const MpiSession& mpi, const std::string& folder, const Isl
 
 }  // namespace
 
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const VolumeTarget& target,
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
                      const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
                      std::ostream& log) {
     const auto start = Clock::now();
     const double wallBefore = meta.wallSeconds;
     auto elapsed = [&] { return wallBefore + std::chrono::duration<double>(Clock::now() - start).count(); };
     const bool root = mpi.rank() == 0;
-    const VolumeScorer scorer(grammar, target, s.fitness);
-    Evaluator evaluator(scorer, s.threads);
+    Evaluator evaluator(scene.scorer(), s.threads);
     GeneticAlgorithm ga(grammar, s.ga, s.limits, islandSeed(s.seed, mpi.rank()));
     RingMigration migration(mpi, s.migration, grammar, s.limits);
     installStopSignalHandlers();
@@ -100,8 +98,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
 
     if (root && !options.quiet)
         log << "shapevo " << (restored ? "resume " : "run ") << s.name << ": grammar " << s.grammarPath << ", target "
-            << s.targets.front().path << " (" << target.grid.nx << "x" << target.grid.ny << "x" << target.grid.nz
-            << " voxels, " << target.fillCount << " to fill), " << mpi.size() << " island(s) x " << evaluator.threads()
+            << scene.description() << ", " << mpi.size() << " island(s) x " << evaluator.threads()
             << " thread(s), seed " << s.seed << ", output " << folder << "\n";
 
     JobResult result;
@@ -211,15 +208,14 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         Chromosome champion;
         champion.genes = packed.front();
         champion.words.assign(packed.begin() + 1, packed.end());
-        auto ws = std::make_unique<VolumeScorer::Workspace>(target.grid);
-        VoxelCounts counts;
-        scorer.fitness(champion, *ws, &counts);
-        const Mesh mesh = meshOf(ws->geometry);
+        Geometry geometry;
+        DeriveScratch scratch;
+        derive(grammar, champion, geometry, scratch);
+        const Mesh mesh = meshOf(geometry);
         writeObj(mesh, folder + "/best.obj");
         writePly(mesh, folder + "/best.ply");
         writeGenome(grammar, champion, folder + "/best.genome");
         writeCurveCsv(meta.curve, folder + "/curve.csv");
-        result.voxelIoU = voxelIoU(counts, target.fillCount);
         RunSummary sum;
         sum.name = s.name;
         sum.config = meta.configPath;
@@ -229,10 +225,12 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.evaluations = result.evaluations;
         sum.wallSeconds = result.wallSeconds;
         sum.bestFitness = result.bestFitness;
-        sum.voxelIoU = result.voxelIoU;
         sum.bestGenes = champion.genes;
-        sum.bestPrimitives = ws->geometry.primitives.size();
-        sum.targetHash = target.hash;
+        sum.bestPrimitives = geometry.primitives.size();
+        sum.targetHash = scene.hash();
+        scene.reportBest(champion, folder, sum);
+        const bool image = sum.silhouetteIoU.has_value();
+        result.iou = image ? *sum.silhouetteIoU : sum.voxelIoU.value_or(0.0);
         sum.threads = evaluator.threads();
         sum.islands = mpi.size();
         sum.migrationSeconds = overhead[0];
@@ -241,9 +239,9 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];
             if (!bySignal)
-                std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, voxel IoU %.4f, %llu evaluations in %s -> %s/\n",
+                std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, %s IoU %.4f, %llu evaluations in %s -> %s/\n",
                               stopReason == "done" ? "" : " after ", stopReason == "done" ? "" : stopReason.c_str(),
-                              result.bestFitness, result.voxelIoU, static_cast<unsigned long long>(result.evaluations),
+                              result.bestFitness, image ? "silhouette" : "voxel", result.iou, static_cast<unsigned long long>(result.evaluations),
                               humanSeconds(result.wallSeconds).c_str(), folder.c_str());
             else
                 std::snprintf(line, sizeof line,

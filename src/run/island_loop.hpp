@@ -7,7 +7,7 @@
 #include "checkpoint/island_state.hpp"
 #include "io/input_error.hpp"
 #include "run/run_job.hpp"
-#include "score/volume_target.hpp"
+#include "run/scene.hpp"
 
 namespace shapevo {
 
@@ -30,7 +30,7 @@ void together(const MpiSession& mpi, F&& f) {
 
 /// `meta` carries the run's identity and, when resuming, its curve and time so far; `restored`
 /// is this rank's island from the checkpoint (null for a new run).
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const VolumeTarget& target,
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
                      const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
                      std::ostream& log);
 

@@ -10,7 +10,6 @@
 #include "grammar/parser.hpp"
 #include "io/config_file.hpp"
 #include "io/input_error.hpp"
-#include "io/vdb_target_file.hpp"
 #include "run/island_loop.hpp"
 #include "run/output_folder.hpp"
 
@@ -36,11 +35,11 @@ void writeFile(const std::string& path, const std::string& text) {
 JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& options, std::ostream& log) {
     // Read every input before creating anything, so bad input leaves no trace.
     Grammar grammar;
-    VolumeTarget target;
+    std::unique_ptr<Scene> scene;
     together(mpi, [&] {
         grammar = loadGrammar(s.grammarPath);
         requireRootFits(s, grammar);
-        target = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
+        scene = Scene::load(s, grammar);
     });
     std::string folder;
     together(mpi, [&] {
@@ -54,13 +53,13 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     RunMetadata meta;
     meta.seed = s.seed;
     meta.ranks = mpi.size();
-    meta.targetHash = target.hash;
+    meta.targetHash = scene->hash();
     meta.name = s.name;
     meta.configPath = std::filesystem::absolute(s.configPath).lexically_normal().string();
     meta.configText = s.configText;
     meta.grammarPath = std::filesystem::absolute(s.grammarPath).lexically_normal().string();
     meta.grammarText = grammar.source;
-    return islandLoop(mpi, s, grammar, target, folder, meta, nullptr, options, log);
+    return islandLoop(mpi, s, grammar, *scene, folder, meta, nullptr, options, log);
 }
 
 JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobOptions& options, std::ostream& log) {
@@ -86,7 +85,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
         RunMetadata meta;
         RunSettings s;
         Grammar grammar;
-        VolumeTarget target;
+        std::unique_ptr<Scene> scene;
         together(mpi, [&] {
             meta = readRunMetadata(candidate + "/run.h5");
             if (meta.ranks != mpi.size())
@@ -97,9 +96,9 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
             if (options.generations) s.ga.generations = *options.generations;
             grammar = parseGrammar(meta.grammarText, meta.grammarPath);
             requireRootFits(s, grammar);
-            target = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
-            if (target.hash != meta.targetHash)
-                throw InputError(s.targets.front().path, "", "the target changed since the run started (hash differs); "
+            scene = Scene::load(s, grammar);
+            if (scene->hash() != meta.targetHash)
+                throw InputError(scene->primaryFile(), "", "the target changed since the run started (hash differs); "
                                                              "resuming against another target is refused");
         });
         IslandState state;
@@ -116,7 +115,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
         }
         if (mpi.rank() == 0 && !options.quiet)
             log << "resuming " << runDir << " from " << candidate << " (generation " << meta.generation << ")\n";
-        return islandLoop(mpi, s, grammar, target, runDir, meta, &state, options, log);
+        return islandLoop(mpi, s, grammar, *scene, runDir, meta, &state, options, log);
     }
     together(mpi, [&] {
         if (mpi.rank() == 0) throw InputError(runDir, "", "no complete checkpoint to resume from");

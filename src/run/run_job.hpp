@@ -21,7 +21,7 @@ struct JobOptions {
 struct JobResult {
     std::string folder;
     double bestFitness = 0;
-    double voxelIoU = 0;
+    double iou = 0;               ///< voxel or silhouette IoU of the best model
     std::uint64_t evaluations = 0;
     double wallSeconds = 0;
     bool stoppedBySignal = false;

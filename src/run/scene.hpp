@@ -1,0 +1,45 @@
+// Scene: what a run scores against, loaded once from its settings: a volume (VDB fill/avoid
+// grids baked into bit rows) or, later in this file's life, an image seen through a camera. It
+// owns the target and the scorer, says what it is in the log, and writes the target-specific
+// outputs of the best model (IoU in summary.json, the model's voxels).
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "io/run_report.hpp"
+#include "run/settings.hpp"
+#include "score/scorer.hpp"
+#include "score/volume_target.hpp"
+
+namespace shapevo {
+
+class VolumeScorer;
+
+class Scene {
+public:
+    /// Read the target(s) named in `s`. @throw InputError on bad or missing files.
+    static std::unique_ptr<Scene> load(const RunSettings& s, const Grammar& g);
+    ~Scene();
+
+    const Scorer& scorer() const { return *scorer_; }
+    /// Hash of the target data: a run resumes only against the same target.
+    std::uint64_t hash() const { return hash_; }
+    /// One phrase for the start-up line, e.g. "targets/x.vdb (80x80x80 voxels, 1234 to fill)".
+    const std::string& description() const { return description_; }
+    /// The file a changed-target error names.
+    const std::string& primaryFile() const { return primaryFile_; }
+    /// Score the best model again and fill the target-specific summary fields (voxel or
+    /// silhouette IoU, primitives); write its target-specific files into `folder`.
+    void reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const;
+
+private:
+    Scene() = default;
+    std::optional<VolumeTarget> volume_;
+    std::unique_ptr<Scorer> scorer_;
+    const VolumeScorer* volumeScorer_ = nullptr;
+    std::uint64_t hash_ = 0;
+    std::string description_, primaryFile_;
+};
+
+}  // namespace shapevo
