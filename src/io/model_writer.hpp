@@ -1,5 +1,6 @@
 // Model writers: a model's primitives as a triangle mesh in OBJ or PLY (binary little endian).
-// Boxes become 8 vertices and 12 outward-facing triangles (mirrored frames keep their winding).
+// Every primitive kind is tessellated as in geometry/tessellation.hpp (outward-facing, mirrored
+// frames too); the files appear atomically (temporary file, then rename).
 #pragma once
 #include <string>
 
@@ -8,7 +9,7 @@
 
 namespace shapevo {
 
-/// Triangulate every primitive into one mesh.
+/// Triangulate every primitive into one mesh (tessellate()).
 Mesh meshOf(const Geometry& geometry);
 void writeObj(const Mesh& mesh, const std::string& path);
 void writePly(const Mesh& mesh, const std::string& path);
