@@ -16,12 +16,14 @@
 #include "io/genome_file.hpp"
 #include "io/input_error.hpp"
 #include "io/mesh_reader.hpp"
+#include "io/glb_writer.hpp"
 #include "io/model_writer.hpp"
 #include "io/vdb_target_file.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
 #include "run/run_job.hpp"
+#include "run/scene.hpp"
 #include "score/volume_scorer.hpp"
 
 namespace {
@@ -32,7 +34,8 @@ void writeModel(const Geometry& geo, const std::string& path) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext == ".obj") writeObj(meshOf(geo), path);
     else if (ext == ".ply") writePly(meshOf(geo), path);
-    else throw InputError(path, "", "unknown model format '" + ext + "' (expected .obj or .ply)");
+    else if (ext == ".glb") writeGlb(meshOf(geo), path);
+    else throw InputError(path, "", "unknown model format '" + ext + "' (expected .obj, .ply or .glb)");
 }
 
 void refuseExisting(const std::string& path) {
@@ -42,28 +45,45 @@ void refuseExisting(const std::string& path) {
 
 }  // namespace
 
-/// The best individual of a checkpoint (all islands), derived; prints where it came from.
-Geometry bestOfCheckpoint(const std::string& folder, std::string& from) {
+/// The best individual of a checkpoint over all islands, with the grammar and settings it
+/// needs (the grammar owns the meshes its geometry points to).
+struct CheckpointBest {
+    RunSettings settings;
+    Grammar grammar;
+    Chromosome best;
+    std::string from;  ///< "island R, fitness F"
+};
+
+CheckpointBest bestOfCheckpoint(const std::string& folder) {
     if (const std::string problem = verifyCheckpoint(folder); !problem.empty())
         throw InputError(folder, "", "not a complete checkpoint: " + problem);
     const RunMetadata meta = readRunMetadata(folder + "/run.h5");
-    const RunSettings s = parseConfig(meta.configText, meta.configPath);
-    const Grammar g = parseGrammar(meta.grammarText, meta.grammarPath);
-    Chromosome best;
+    CheckpointBest b{parseConfig(meta.configText, meta.configPath), parseGrammar(meta.grammarText, meta.grammarPath), {}, {}};
     double bestFitness = -INFINITY;
     for (int r = 0; r < meta.ranks; ++r) {
-        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), g, s.limits);
+        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), b.grammar, b.settings.limits);
         const std::size_t i = island.population.best();
         if (island.population.fitness[i] > bestFitness) {
             bestFitness = island.population.fitness[i];
-            best = island.population.individuals[i];
-            from = "island " + std::to_string(r) + ", fitness " + std::to_string(bestFitness);
+            b.best = island.population.individuals[i];
+            b.from = "island " + std::to_string(r) + ", fitness " + std::to_string(bestFitness);
         }
     }
+    return b;
+}
+
+/// export: obj / ply / glb are the model itself; vdb and png need the run's target.
+void exportModel(const CheckpointBest& b, std::string format, const std::string& path) {
+    if (format.empty()) format = std::filesystem::path(path).extension().string().substr(std::min<std::size_t>(1, path.size()));
     Geometry geo;
     DeriveScratch scratch;
-    derive(g, best, geo, scratch);
-    return geo;
+    derive(b.grammar, b.best, geo, scratch);
+    if (format == "obj") writeObj(meshOf(geo), path);
+    else if (format == "ply") writePly(meshOf(geo), path);
+    else if (format == "glb") writeGlb(meshOf(geo), path);
+    else if (format == "vdb" || format == "png") Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
+    else throw InputError(path, "", "unknown format '" + format + "' (expected obj, ply, glb, vdb or png)");
+    std::cout << "wrote " << path << " (" << geo.primitives.size() << " primitives; " << b.from << ")\n";
 }
 
 /// A run folder's newest complete checkpoint, or the folder itself if it is a checkpoint.
@@ -105,7 +125,7 @@ int main(int argc, char** argv) {
     sample->add_option("--seed", sampleSeed, "random seed")->capture_default_str();
     sample->add_option("--min-genes", minGenes, "grow to at least this many genes (if the grammar allows)")->capture_default_str();
     sample->add_option("--max-genes", maxGenes, "never more genes than this")->capture_default_str();
-    sample->add_option("-o,--output", sampleOut, "model file (.obj or .ply)")->required();
+    sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb)")->required();
     sample->add_option("--genome", genomeOut, "also save the chromosome (.genome) for shapevo evaluate");
 
     // target
@@ -144,7 +164,12 @@ int main(int argc, char** argv) {
     bool exportBest = false;
     exportCmd->add_option("source", exportPath, "run folder (its newest complete checkpoint) or checkpoint folder")->required();
     exportCmd->add_flag("--best", exportBest, "the best individual over all islands (the only choice for now)")->required();
-    exportCmd->add_option("-o,--output", exportOut, "model file (.obj or .ply); must not exist")->required();
+    exportCmd->add_option("-o,--output", exportOut, "output file; must not exist")->required();
+    std::string exportFormat;
+    exportCmd->add_option("--format", exportFormat,
+                          "obj, ply, glb (the model), vdb (its voxels on a volume target's grid) or png (its silhouette "
+                          "over an image target); default: the output file's extension")
+        ->check(CLI::IsMember({"obj", "ply", "glb", "vdb", "png"}));
 
     try {
         app.parse(argc, argv);
@@ -182,10 +207,7 @@ int main(int argc, char** argv) {
             std::cout << describeCheckpoint(checkpointOf(inspectPath), inspectVerbose);
         } else if (*exportCmd) {
             refuseExisting(exportOut);
-            std::string from;
-            const Geometry geo = bestOfCheckpoint(checkpointOf(exportPath), from);
-            writeModel(geo, exportOut);
-            std::cout << "wrote " << exportOut << " (" << geo.primitives.size() << " primitives; " << from << ")\n";
+            exportModel(bestOfCheckpoint(checkpointOf(exportPath)), exportFormat, exportOut);
         } else if (*sample) {
             const Grammar g = loadGrammar(grammarPath);
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");

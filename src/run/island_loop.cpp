@@ -8,7 +8,9 @@
 #include <ostream>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "io/curve_plot.hpp"
 #include "io/genome_file.hpp"
+#include "io/glb_writer.hpp"
 #include "io/model_writer.hpp"
 #include "io/run_report.hpp"
 #include "island/ring_migration.hpp"
@@ -214,8 +216,11 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         const Mesh mesh = meshOf(geometry);
         writeObj(mesh, folder + "/best.obj");
         writePly(mesh, folder + "/best.ply");
+        writeGlb(mesh, folder + "/best.glb");
         writeGenome(grammar, champion, folder + "/best.genome");
         writeCurveCsv(meta.curve, folder + "/curve.csv");
+        writeCurveSvg(meta.curve, folder + "/curve.svg");
+        writeCurvePng(meta.curve, folder + "/curve.png");
         RunSummary sum;
         sum.name = s.name;
         sum.config = meta.configPath;

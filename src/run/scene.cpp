@@ -1,6 +1,8 @@
 // Scene: target loading and the best model's target-specific report.
 #include "run/scene.hpp"
 
+#include "io/input_error.hpp"
+#include "io/model_volume.hpp"
 #include "io/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 
@@ -23,12 +25,18 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
 }
 
 void Scene::reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const {
-    (void)folder;
     VolumeScorer::Workspace ws(volume_->grid);
     VoxelCounts counts;
     volumeScorer_->fitness(best, ws, &counts);
     summary.voxelIoU = voxelIoU(counts, volume_->fillCount);
-    summary.bestPrimitives = ws.geometry.primitives.size();
+    writeModelVdb(ws.geometry, volume_->grid, folder + "/best.vdb");
+}
+
+void Scene::exportBest(const Chromosome& best, const std::string& format, const std::string& path) const {
+    if (format != "vdb") throw InputError(path, "", "a volume target's run exports obj, ply, glb or vdb, not " + format);
+    VolumeScorer::Workspace ws(volume_->grid);
+    volumeScorer_->fitness(best, ws, nullptr);
+    writeModelVdb(ws.geometry, volume_->grid, path);
 }
 
 }  // namespace shapevo

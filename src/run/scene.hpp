@@ -30,8 +30,12 @@ public:
     /// The file a changed-target error names.
     const std::string& primaryFile() const { return primaryFile_; }
     /// Score the best model again and fill the target-specific summary fields (voxel or
-    /// silhouette IoU, primitives); write its target-specific files into `folder`.
+    /// silhouette IoU); write its target-specific files into `folder`: best.vdb (its voxels) for
+    /// a volume target, best-overlay.png (silhouette against the target) for an image target.
     void reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const;
+    /// `shapevo export --format vdb|png`: the model's voxels (volume targets) or its overlay on the
+    /// target (image targets). @throw InputError if the format does not fit the target kind.
+    void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const;
 
 private:
     Scene() = default;
