@@ -14,7 +14,7 @@
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
 #include "score/volume_scorer.hpp"
-#include "search/genetic_algorithm.hpp"
+#include "search/search_method.hpp"
 
 namespace shapevo {
 
@@ -93,7 +93,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     const bool root = mpi.rank() == 0;
     const VolumeScorer scorer(grammar, target, s.fitness);
     Evaluator evaluator(scorer, s.threads);
-    GeneticAlgorithm ga(grammar, s.ga, s.limits, islandSeed(s.seed, mpi.rank()));
+    const std::unique_ptr<SearchMethod> method = makeSearchMethod(s.search, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()));
+    SearchMethod& ga = *method;
     RingMigration migration(mpi, s.migration, grammar, s.limits);
     installStopSignalHandlers();
     std::vector<GenerationStats> localCurve = restored ? restored->curve : std::vector<GenerationStats>{};
