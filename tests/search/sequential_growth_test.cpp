@@ -94,7 +94,7 @@ TEST(SequentialGrowth, SosmcPicksTheNextFutureUniformlyAtRandom) {
     const int runs = 4000;
     for (int seed = 1; seed <= runs; ++seed) {
         for (GrowthOrder order : {GrowthOrder::Chromosome, GrowthOrder::Random}) {
-            Rng rng(std::uint64_t(seed));
+            Rng rng{std::uint64_t(seed)};
             Chromosome c;
             growNextObject(g, c, rng, limits, order, geometric);  // the root
             ASSERT_TRUE(growNextObject(g, c, rng, limits, order, geometric));
