@@ -33,8 +33,9 @@ void BM_SearchRun(benchmark::State& state) {
         method->initialize(evaluator);
         while (method->generation() < s.ga.generations) method->step(evaluator);
         evaluations += method->evaluations();
-        best = method->stats().best;
-        benchmark::DoNotOptimize(best);
+        const GenerationStats stats = method->stats();
+        benchmark::DoNotOptimize(&stats);
+        best = stats.best;
     }
     state.counters["evals/s"] = benchmark::Counter(double(evaluations), benchmark::Counter::kIsRate);
     state.counters["evals/run"] = benchmark::Counter(double(evaluations), benchmark::Counter::kAvgIterations);
