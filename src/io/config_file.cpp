@@ -153,6 +153,33 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     t->insert_or_assign(name, std::move(*parsed.get("v")));
 }
 
+/// [search]: the method and the baselines' settings (search/search_settings.hpp).
+void readSearch(Reader& rd, RunSettings& r) {
+    const toml::table* t = rd.section("search");
+    SearchSettings& s = r.search;
+    std::string method = "ga";
+    rd.string(t, "search", "method", method);
+    if (method == "ga") s.method = SearchMethodKind::Ga;
+    else if (method == "smc") s.method = SearchMethodKind::Smc;
+    else if (method == "sosmc") s.method = SearchMethodKind::Sosmc;
+    else if (method == "rjmcmc") s.method = SearchMethodKind::Rjmcmc;
+    else rd.fail(*t->get("method"), "search.method must be \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"" + method + "\"");
+    constexpr double big = 1e12;
+    rd.number(t, "search", "smc_temperature", s.smc.temperature, 1e-300, big);
+    RjmcmcSettings& m = s.rjmcmc;
+    rd.number(t, "search", "rjmcmc_jump_probability", m.jumpProbability, 0, 1);
+    rd.number(t, "search", "rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6);
+    rd.number(t, "search", "rjmcmc_temperature", m.temperature, 1e-300, big);
+    rd.number(t, "search", "rjmcmc_temperature_ratio", m.temperatureRatio, 1, big);
+    rd.number(t, "search", "rjmcmc_annealing", m.annealing, 1, big);
+    rd.number(t, "search", "rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9);
+    rd.number(t, "search", "rjmcmc_depth_bias", m.depthBias, 1e-6, 1);
+    if (const toml::node* n = rd.key(t, "search", "rjmcmc_delayed_rejection")) {
+        if (!n->is_boolean()) rd.fail(*n, "search.rjmcmc_delayed_rejection must be true or false");
+        m.delayedRejection = *n->value<bool>();
+    }
+}
+
 }  // namespace
 
 RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
@@ -254,6 +281,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
         throw InputError(path, "[ga]", "initial_genes_min must not exceed initial_genes_max");
     if (g.initialGenesMin > r.limits.maxGenes)
         throw InputError(path, "[ga]", "initial_genes_min must not exceed genome.max_genes (" + std::to_string(r.limits.maxGenes) + ")");
+    readSearch(rd, r);
     const toml::table* migration = rd.section("migration");
     rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
     rd.number(migration, "migration", "count", r.migration.count, 0, 1e7);

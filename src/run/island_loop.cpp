@@ -15,7 +15,7 @@
 #include "io/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
-#include "search/genetic_algorithm.hpp"
+#include "search/search_method.hpp"
 
 namespace shapevo {
 
@@ -93,7 +93,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     auto elapsed = [&] { return wallBefore + std::chrono::duration<double>(Clock::now() - start).count(); };
     const bool root = mpi.rank() == 0;
     Evaluator evaluator(scene.scorer(), s.threads);
-    GeneticAlgorithm ga(grammar, s.ga, s.limits, islandSeed(s.seed, mpi.rank()));
+    const std::unique_ptr<SearchMethod> method = makeSearchMethod(s.search, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()));
+    SearchMethod& ga = *method;
     RingMigration migration(mpi, s.migration, grammar, s.limits);
     installStopSignalHandlers();
     std::vector<GenerationStats> localCurve = restored ? restored->curve : std::vector<GenerationStats>{};

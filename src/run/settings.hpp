@@ -9,6 +9,7 @@
 #include "genome/chromosome.hpp"
 #include "io/vdb_target_file.hpp"
 #include "score/volume_fitness.hpp"
+#include "search/search_settings.hpp"
 
 namespace shapevo {
 
@@ -52,6 +53,7 @@ struct RunSettings {
 
     VolumeFitnessSettings fitness;
     GenomeLimits limits;
+    SearchSettings search;  ///< which method runs ([search]); [ga] sizes apply to all
     GaSettings ga;
     MigrationSettings migration;
     CheckpointSettings checkpoint;

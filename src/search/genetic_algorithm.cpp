@@ -3,7 +3,6 @@
 #include "search/genetic_algorithm.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace shapevo {
 
@@ -84,21 +83,6 @@ void GeneticAlgorithm::step(Evaluator& evaluator) {
     evaluator.evaluate(pop_, elite);
     evaluations_ += n - elite;
     ++generation_;
-}
-
-GenerationStats GeneticAlgorithm::stats() const {
-    GenerationStats s;
-    s.generation = generation_;
-    s.evaluations = evaluations_;
-    const auto& f = pop_.fitness;
-    s.best = *std::max_element(f.begin(), f.end());
-    double sum = 0;
-    for (double v : f) sum += v;
-    s.mean = sum / double(f.size());
-    double var = 0;
-    for (double v : f) var += (v - s.mean) * (v - s.mean);
-    s.std = std::sqrt(var / double(f.size()));
-    return s;
 }
 
 }  // namespace shapevo

@@ -8,39 +8,30 @@
 #include <vector>
 
 #include "genome/operators.hpp"
-#include "run/settings.hpp"
-#include "search/evaluator.hpp"
-#include "search/population.hpp"
+#include "search/search_method.hpp"
 #include "search/selection.hpp"
 
 namespace shapevo {
 
-struct GenerationStats {
-    std::uint32_t generation = 0;
-    double seconds = 0;
-    std::uint64_t evaluations = 0;  ///< cumulative fitness evaluations
-    double best = 0, mean = 0, std = 0;
-};
-
-class GeneticAlgorithm {
+class GeneticAlgorithm final : public SearchMethod {
 public:
     GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits, std::uint64_t seed);
 
     /// Generation 1: grow and evaluate the initial population.
-    void initialize(Evaluator& evaluator);
+    void initialize(Evaluator& evaluator) override;
     /// Breed and evaluate the next generation.
-    void step(Evaluator& evaluator);
+    void step(Evaluator& evaluator) override;
     /// Continue from a saved state (a checkpoint): population with fitness, RNG, counters.
     void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                 std::uint64_t evaluations);
+                 std::uint64_t evaluations) override;
 
-    const Population& population() const { return pop_; }
-    Population& population() { return pop_; }
-    std::uint32_t generation() const { return generation_; }
-    std::uint64_t evaluations() const { return evaluations_; }
-    /// best, mean, std of the current population (seconds and generation filled by the caller).
-    GenerationStats stats() const;
-    Rng& rng() { return rng_; }
+    const Population& population() const override { return pop_; }
+    Population& population() override { return pop_; }
+    std::uint32_t generation() const override { return generation_; }
+    std::uint64_t evaluations() const override { return evaluations_; }
+    /// best, mean, std of the current population (seconds filled by the caller).
+    GenerationStats stats() const override { return populationStats(pop_, generation_, evaluations_); }
+    Rng& rng() override { return rng_; }
 
 private:
     void mutate(Chromosome& c);

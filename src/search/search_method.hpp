@@ -1,0 +1,45 @@
+// SearchMethod: what the island loop needs from a search method (ShapeGenetics §7: GA, SMC,
+// SOSMC and RJMCMC in one framework). Every method's whole state is its population with fitness,
+// its Rng, the generation number and the evaluation count, so a checkpoint of those resumes any
+// method exactly. Fitness is only ever computed through the Evaluator (thread count never changes
+// results); all randomness comes from rng() in a fixed order.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include "genome/chromosome.hpp"
+#include "genome/random.hpp"
+#include "run/settings.hpp"
+#include "search/evaluator.hpp"
+#include "search/generation_stats.hpp"
+#include "search/population.hpp"
+
+namespace shapevo {
+
+class SearchMethod {
+public:
+    virtual ~SearchMethod() = default;
+    /// Generation 1: create and evaluate the first population.
+    virtual void initialize(Evaluator& evaluator) = 0;
+    /// One population-wide step (about one evaluation per individual).
+    virtual void step(Evaluator& evaluator) = 0;
+    /// Continue from a saved state (a checkpoint): population with fitness, RNG, counters.
+    virtual void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
+                         std::uint64_t evaluations) = 0;
+    virtual const Population& population() const = 0;
+    /// Migration replaces individuals in place, with their fitness; methods read fitness from here.
+    virtual Population& population() = 0;
+    virtual std::uint32_t generation() const = 0;
+    virtual std::uint64_t evaluations() const = 0;
+    /// best, mean, std of the current population (seconds filled by the caller).
+    virtual GenerationStats stats() const = 0;
+    virtual Rng& rng() = 0;
+};
+
+/// The method `search.method` names, seeded with `seed`; `ga` gives population size and initial
+/// lengths to every method.
+std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
+                                               const GenomeLimits& limits, std::uint64_t seed);
+
+}  // namespace shapevo

@@ -1,0 +1,38 @@
+// SearchSettings: which search method an island runs (config [search] method = "ga" | "smc" |
+// "sosmc" | "rjmcmc") and the settings of the baselines. Population size, generation count and
+// the initial lengths stay in [ga] and apply to every method. Defaults and their sources are in
+// docs/search-methods.md.
+#pragma once
+#include <cstdint>
+
+namespace shapevo {
+
+enum class SearchMethodKind : std::uint8_t { Ga, Smc, Sosmc, Rjmcmc };
+
+/// SMC and SOSMC (Ritchie et al. 2015): particles grow one geometric object per generation and
+/// are resampled with weights exp((f_new - f_old) / temperature).
+struct SmcSettings {
+    double temperature = 0.01;  ///< fitness units per factor e of particle weight
+};
+
+/// RJMCMC (Talton et al. 2011): one chain per individual, target prior(x) * exp(f(x) / T).
+struct RjmcmcSettings {
+    double jumpProbability = 0.5;       ///< jump (cut + regrow) vs diffusion (alter), per proposal
+    std::uint32_t diffusionAlters = 1;  ///< alter mutations in one diffusion proposal
+    double temperature = 0.002;         ///< coldest chain's temperature at generation 1
+    /// hottest / coldest temperature: a move with 70 % acceptance in the hottest chain has 1 % in
+    /// the coldest (ShapeGenetics §8): ln(0.01) / ln(0.7)
+    double temperatureRatio = 12.911;
+    double annealing = 1.1;                 ///< every temperature is divided by this ...
+    std::uint32_t annealingInterval = 10;   ///< ... once per this many generations (1 = every sweep)
+    double depthBias = 1.0;                 ///< non-terminal selection weight depth_bias^depth
+    bool delayedRejection = false;          ///< second stage after a rejected jump (Green & Mira)
+};
+
+struct SearchSettings {
+    SearchMethodKind method = SearchMethodKind::Ga;
+    SmcSettings smc;
+    RjmcmcSettings rjmcmc;
+};
+
+}  // namespace shapevo

@@ -1,0 +1,23 @@
+// FunctionScorer: a Scorer whose fitness is any function of the chromosome, so the search tests
+// can use tiny grammars with a made-up fitness whose exact target distribution is known.
+#pragma once
+#include <functional>
+#include <memory>
+
+#include "score/scorer.hpp"
+
+namespace shapevo::test {
+
+class FunctionScorer final : public Scorer {
+public:
+    FunctionScorer(const Grammar& g, std::function<double(const Chromosome&)> f) : grammar_(g), f_(std::move(f)) {}
+    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<ScoreWorkspace>(); }
+    double fitness(const Chromosome& c, ScoreWorkspace&) const override { return f_(c); }
+    const Grammar& grammar() const override { return grammar_; }
+
+private:
+    const Grammar& grammar_;
+    std::function<double(const Chromosome&)> f_;
+};
+
+}  // namespace shapevo::test

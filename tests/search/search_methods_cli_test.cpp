@@ -1,0 +1,81 @@
+// The search-method switch end to end: `search.method` = smc / sosmc / rjmcmc runs on two MPI
+// islands, writes the usual outputs and checkpoints, and a run resumed from its checkpoint equals
+// the uninterrupted one; a bad method name or [search] key is an input error (exit 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../test_support.hpp"
+#include "checkpoint/checkpoint_file.hpp"
+#include "grammar/parser.hpp"
+
+namespace shapevo {
+namespace {
+
+using test::curveWithoutTime;
+using test::readFile;
+using test::runShapevo;
+using test::runShapevoMpi;
+using test::sourcePath;
+using test::TempDir;
+
+const std::string kSmall = " --set ga.population=24 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
+                           " --set migration.count=3 --set checkpoint.interval=5 --set checkpoint.keep=10 -q";
+
+std::string config() { return sourcePath("configs/spaceship.toml"); }
+
+void expectSameIslands(const std::string& a, const std::string& b) {
+    const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
+    for (int r = 0; r < 2; ++r) {
+        const IslandState x = readIslandFile(a + "/" + islandFileName(r), g, GenomeLimits{100});
+        const IslandState y = readIslandFile(b + "/" + islandFileName(r), g, GenomeLimits{100});
+        EXPECT_EQ(x.generation, y.generation);
+        EXPECT_EQ(x.evaluations, y.evaluations);
+        EXPECT_EQ(x.rng, y.rng);
+        ASSERT_EQ(x.population.size(), y.population.size());
+        for (std::size_t i = 0; i < x.population.size(); ++i) {
+            EXPECT_EQ(x.population.individuals[i], y.population.individuals[i]) << "island " << r << " individual " << i;
+            EXPECT_EQ(x.population.fitness[i], y.population.fitness[i]);
+        }
+    }
+}
+
+class SearchMethodCli : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SearchMethodCli, TwoIslandRunResumedFromItsCheckpointEqualsTheUninterruptedOne) {
+    TempDir dir;
+    const std::string method = std::string(" --set search.method=") + GetParam();
+    const std::string extra = std::string(GetParam()) == "rjmcmc" ? " --set search.rjmcmc_delayed_rejection=true" : "";
+    auto whole = runShapevoMpi(2, "run " + config() + " --seed 4 --set ga.generations=14 --out " + dir.file("whole") + method +
+                                      extra + kSmall);
+    ASSERT_EQ(whole.exitCode, 0) << whole.output;
+    auto half = runShapevoMpi(2, "run " + config() + " --seed 4 --set ga.generations=7 --out " + dir.file("half") + method +
+                                     extra + kSmall);
+    ASSERT_EQ(half.exitCode, 0) << half.output;
+    auto rest = runShapevoMpi(2, "resume " + dir.file("half") + " --generations 14 -q");
+    ASSERT_EQ(rest.exitCode, 0) << rest.output;
+    expectSameIslands(dir.file("whole/checkpoint-000014"), dir.file("half/checkpoint-000014"));
+    EXPECT_EQ(readFile(dir.file("whole/best.genome")), readFile(dir.file("half/best.genome")));
+    EXPECT_EQ(curveWithoutTime(readFile(dir.file("whole/curve.csv"))), curveWithoutTime(readFile(dir.file("half/curve.csv"))));
+    EXPECT_TRUE(std::filesystem::exists(dir.file("whole/best.obj")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SearchMethodCli, ::testing::Values("smc", "sosmc", "rjmcmc"),
+                         [](const auto& info) { return std::string(info.param); });
+
+TEST(SearchMethodCli, UnknownMethodOrKeyIsAnInputError) {
+    TempDir dir;
+    const auto bad = runShapevo("run " + config() + " --set search.method=annealing --out " + dir.file("a") + " -q");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("search.method must be \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"annealing\""),
+              std::string::npos) << bad.output;
+    const auto key = runShapevo("run " + config() + " --set search.rjmcmc_temprature=1 --out " + dir.file("b") + " -q");
+    EXPECT_EQ(key.exitCode, 2) << key.output;
+    EXPECT_NE(key.output.find("unknown key 'rjmcmc_temprature' in [search]"), std::string::npos) << key.output;
+    const auto flag = runShapevo("run " + config() + " --set search.rjmcmc_delayed_rejection=1 --out " + dir.file("c") + " -q");
+    EXPECT_EQ(flag.exitCode, 2) << flag.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a")));
+}
+
+}  // namespace
+}  // namespace shapevo
