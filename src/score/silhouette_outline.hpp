@@ -1,0 +1,105 @@
+// Silhouette outlines: the projected points whose convex hulls make up a primitive's silhouette.
+// This is the definition of "covered" for image targets; the rasterizer (silhouette_raster.hpp)
+// and the brute-force reference in the tests both start from these points.
+//
+// A primitive's silhouette is the union of the convex hulls of its pieces. Points are snapped
+// to fixed point, 1/256 pixel (FixedPoint), so everything after the snap is exact integer
+// arithmetic: a pixel (i, j) is covered when its centre (256 i + 128, 256 j + 128) lies in the
+// closed hull of a piece; a hull of zero area covers nothing.
+//  - Box: one piece, its 8 corners.
+//  - Cylinder, Cone: one piece, the vertices of the kRoundSides-gon prism / frustum (rings at
+//    u.y = -1 and +1, vertices at angles 2 pi k / kRoundSides from +x towards +z; the top ring
+//    has radius `taper`), or the ring and the apex for a pointed cone (taper <= 0).
+//  - Sphere: one piece, 2 * kRoundSides points on the ellipsoid's contact curve (where the rays
+//    from the eye, or the parallel rays, graze it), evenly spaced in the ellipsoid's own unit
+//    sphere frame: a polygon inscribed in the exact outline (about 0.6 % less area). A sphere that
+//    is cut by the near plane / the ground, or that is flat (a half extent of 0), is drawn as its
+//    UV polyhedron instead: kRoundSides meridians, kRoundSides / 2 latitude bands.
+//  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
+// Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
+// whose vertices are its vertices in front plus the points where its edges cross the plane.
+// Guard band: points more than kGuardBand pixels beyond the picture's edges would overflow the
+// fixed-point range, so a piece reaching that far is clipped to the guard rectangle first (in
+// double precision); nothing inside the picture changes.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "geometry/primitive.hpp"
+#include "score/camera.hpp"
+
+namespace shapevo {
+
+struct FixedPoint {
+    std::int32_t x, y;  ///< pixel coordinates * kSubpixels
+    bool operator==(const FixedPoint&) const = default;
+};
+inline constexpr std::int64_t kSubpixels = 256;
+inline constexpr double kGuardBand = 16384.0;
+inline constexpr int kSphereSides = 2 * kRoundSides;
+
+/// Points [first, first + count) of an Outline. The first rings * ringSize of them are `rings`
+/// rings of ringSize points each, in cyclic order around a convex polygon before snapping (a
+/// hint a hull algorithm may use; it must not rely on it); the rest come in no order.
+struct OutlinePiece {
+    std::uint32_t first = 0, count = 0;
+    std::uint16_t rings = 0, ringSize = 0;
+};
+
+struct Outline {
+    std::vector<FixedPoint> points;
+    std::vector<OutlinePiece> pieces;
+    void clear() {
+        points.clear();
+        pieces.clear();
+    }
+};
+
+/// Builds outlines for one camera; holds the unit shapes and scratch space (no allocation once warm).
+class OutlineBuilder {
+public:
+    explicit OutlineBuilder(const Camera& camera);
+    /// Append the pieces of p's silhouette to `out` (nothing for a primitive with non-finite
+    /// numbers or a Mesh primitive without its mesh).
+    void add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out);
+    const Camera& camera() const { return camera_; }
+
+    struct Homogeneous {
+        double x, y, w, clip;  ///< homogeneous pixel coordinates and the signed clip distance
+    };
+    struct UnitShape {
+        std::vector<glm::dvec3> vertices;  ///< local (u) coordinates; rings first, then loose points
+        std::vector<std::uint16_t> edges;  ///< pairs of vertex indices
+        std::uint16_t rings = 0, ringSize = 0;
+    };
+
+private:
+    /// Local -> homogeneous map of one primitive: h = m * (u, 1).
+    struct LocalMap {
+        double m[4][4];  ///< rows: x, y, w, clip
+        Homogeneous apply(const glm::dvec3& u) const;
+    };
+    void addConvex(const LocalMap& map, const UnitShape& shape, Outline& out);
+    void addSphere(const LocalMap& map, const Primitive& p, Outline& out);
+    void addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out);
+    /// Points with clip >= 0, already cut: project, hull, clip to the guard band, snap, append.
+    void addClippedPiece(const Homogeneous* h, std::size_t n, bool convexCycle, Outline& out);
+    bool insideGuard(double x, double y) const {
+        return x >= -kGuardBand && x <= width_ + kGuardBand && y >= -kGuardBand && y <= height_ + kGuardBand;
+    }
+
+    const Camera& camera_;
+    double width_, height_;
+    UnitShape box_, prism_, pyramid_, uvSphere_;
+    UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
+    std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
+    std::vector<Homogeneous> h_, cut_;
+    std::vector<glm::dvec2> xy_, hull_, clipped_;
+    std::vector<FixedPoint> snapped_;   ///< mesh vertices, snapped once per primitive
+    std::vector<std::uint8_t> fast_;    ///< mesh vertices: in front and inside the guard band
+};
+
+}  // namespace shapevo
