@@ -47,6 +47,43 @@ void insertionSort(FixedPoint* a, int n) {
     }
 }
 
+/// If the cycle p[0..n) is a strictly convex polygon winding once, write it counter-clockwise
+/// to `out` and return its size; else 0 (or -1 for zero area: a triangle whose corners line up).
+int convexCycle(const FixedPoint* p, int n, FixedPoint* out) {
+    if (n < 3) return 0;
+    int left = 0, right = 0, ySwaps = 0, lastDy = 0;
+    for (int i = 0; i < n; ++i) {
+        const FixedPoint a = p[i == 0 ? n - 1 : i - 1], b = p[i], c = p[i + 1 == n ? 0 : i + 1];
+        const std::int64_t o = orientation(a, b, c);
+        left += o > 0;
+        right += o < 0;
+        const int dy = (c.y > b.y) - (c.y < b.y);
+        if (dy != 0) {
+            ySwaps += lastDy != 0 && dy != lastDy;
+            lastDy = dy;
+        }
+    }
+    for (int i = 0; i < n && lastDy != 0; ++i) {  // close the cycle: compare with the first non-zero dy
+        const FixedPoint b = p[i], c = p[i + 1 == n ? 0 : i + 1];
+        const int dy = (c.y > b.y) - (c.y < b.y);
+        if (dy != 0) {
+            ySwaps += dy != lastDy;
+            break;
+        }
+    }
+    if (n == 3 && left == 0 && right == 0) return -1;
+    if (ySwaps != 2) return 0;  // winds more than once (every turn of the same sense, yet not convex)
+    if (left == n) {
+        std::copy(p, p + n, out);
+        return n;
+    }
+    if (right == n) {
+        std::reverse_copy(p, p + n, out);
+        return n;
+    }
+    return 0;
+}
+
 }  // namespace
 
 std::span<const FixedPoint> FixedHull::of(const FixedPoint* points, const OutlinePiece& piece) {
@@ -56,6 +93,11 @@ std::span<const FixedPoint> FixedHull::of(const FixedPoint* points, const Outlin
         sorted_.resize(std::size_t(n));
         merged_.resize(std::size_t(n));
         hull_.resize(2 * std::size_t(n) + 1);
+    }
+    if (piece.rings == 1 && piece.ringSize == piece.count) {  // maybe already a convex polygon in order
+        const int m = convexCycle(p, n, hull_.data());
+        if (m > 0) return {hull_.data(), std::size_t(m)};
+        if (m < 0) return {};
     }
     FixedPoint *s = sorted_.data(), *spare = merged_.data(), *ring = hull_.data();  // hull_ is free until the chain
     const int ringSize = piece.ringSize, rings = ringSize > 0 ? std::min<int>(piece.rings, n / ringSize) : 0;

@@ -51,10 +51,6 @@ std::vector<glm::dvec2> roundTable(int sides) {
     return t;
 }
 
-FixedPoint snap(double x, double y) {
-    return {std::int32_t(std::lrint(x * double(kSubpixels))), std::int32_t(std::lrint(y * double(kSubpixels)))};
-}
-
 /// Convex hull (counter-clockwise) of points in double precision; a pre-step only: the exact
 /// hull is taken again after snapping.
 void doubleHull(std::vector<glm::dvec2>& pts, std::vector<glm::dvec2>& hull) {
@@ -114,6 +110,17 @@ OutlineBuilder::OutlineBuilder(const Camera& camera)
     uvSphere_ = ringShape(round, latitudes, {{{0, -1, 0}, 0}, {{0, 1, 0}, bands - 2}});
     cone_ = prism_;
     sphereRing_ = roundTable(kSphereSides);
+    squareRing_.corners = square;
+    squareRing_.normals = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    squareRing_.apothem = 1.0;
+    squareRing_.reach = std::sqrt(2.0);
+    roundRing_.corners = round;
+    for (int k = 0; k < kRoundSides; ++k) {
+        const double a = 2.0 * M_PI * (k + 0.5) / kRoundSides;
+        roundRing_.normals.push_back({std::cos(a), std::sin(a)});
+    }
+    roundRing_.apothem = std::cos(M_PI / kRoundSides);
+    roundRing_.reach = 1.0;
 }
 
 void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
@@ -134,9 +141,14 @@ void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshe
         }
     }
     switch (p.kind) {
-    case PrimitiveKind::Box: addConvex(map, box_, out); break;
-    case PrimitiveKind::Cylinder: addConvex(map, prism_, out); break;
+    case PrimitiveKind::Box:
+        if (!addRingsFast(map, squareRing_, 1.0, out)) addConvex(map, box_, out);
+        break;
+    case PrimitiveKind::Cylinder:
+        if (!addRingsFast(map, roundRing_, 1.0, out)) addConvex(map, prism_, out);
+        break;
     case PrimitiveKind::Cone:
+        if (addRingsFast(map, roundRing_, p.taper > 0.0f ? double(p.taper) : 0.0, out)) break;
         if (!(p.taper > 0.0f)) {
             addConvex(map, pyramid_, out);
         } else {
@@ -153,6 +165,23 @@ void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshe
     }
 }
 
+bool OutlineBuilder::localEye(const LocalMap& map, glm::dvec3& e, double& ew) const {
+    const glm::dvec3 r0(map.m[0][0], map.m[0][1], map.m[0][2]), r1(map.m[1][0], map.m[1][1], map.m[1][2]);
+    if (camera_.parallel()) {
+        e = glm::cross(r0, r1);  // the direction the x and y rows do not see
+        ew = 0.0;
+    } else {
+        const glm::dvec3 r2(map.m[2][0], map.m[2][1], map.m[2][2]);
+        const glm::dvec3 t(map.m[0][3], map.m[1][3], map.m[2][3]);
+        const glm::dvec3 c12 = glm::cross(r1, r2), c20 = glm::cross(r2, r0), c01 = glm::cross(r0, r1);
+        const double det = glm::dot(r0, c12);
+        e = -(t.x * c12 + t.y * c20 + t.z * c01) / det;  // rows * (e, 1) = 0
+        ew = 1.0;
+    }
+    const double len = glm::length(e);
+    return len > 0.0 && std::isfinite(len);
+}
+
 void OutlineBuilder::addConvex(const LocalMap& map, const UnitShape& shape, Outline& out) {
     const std::size_t n = shape.vertices.size();
     h_.resize(n);
@@ -166,7 +195,7 @@ void OutlineBuilder::addConvex(const LocalMap& map, const UnitShape& shape, Outl
         for (std::size_t i = 0; i < n && fast; ++i) {
             const double x = h_[i].x / h_[i].w, y = h_[i].y / h_[i].w;
             fast = insideGuard(x, y);
-            out.points.push_back(snap(x, y));
+            out.points.push_back(snapToFixed(x, y));
         }
         if (fast) {
             out.pieces.push_back({std::uint32_t(first), std::uint32_t(n), shape.rings, shape.ringSize});
@@ -210,7 +239,7 @@ void OutlineBuilder::addClippedPiece(const Homogeneous* h, std::size_t n, bool c
             out.points.resize(first);
             return;
         }
-        out.points.push_back(snap(std::clamp(v.x, lo, width_ + kGuardBand), std::clamp(v.y, lo, height_ + kGuardBand)));
+        out.points.push_back(snapToFixed(std::clamp(v.x, lo, width_ + kGuardBand), std::clamp(v.y, lo, height_ + kGuardBand)));
     }
     const auto count = std::uint32_t(xy_.size());
     out.pieces.push_back({std::uint32_t(first), count, 1, std::uint16_t(count)});
@@ -220,24 +249,14 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
     // In the primitive's own frame the solid is the unit ball. The contact curve seen from the
     // homogeneous eye (e, ew) (ew = 1: a point; ew = 0: parallel rays along e) is the circle
     // u . e = ew on the unit sphere.
-    const glm::dvec3 r0(map.m[0][0], map.m[0][1], map.m[0][2]), r1(map.m[1][0], map.m[1][1], map.m[1][2]);
     const glm::dvec3 clipNormal(map.m[3][0], map.m[3][1], map.m[3][2]);
     const bool inFront = map.m[3][3] - glm::length(clipNormal) >= 0.0;
     const bool solid = p.half.x != 0.0f && p.half.y != 0.0f && p.half.z != 0.0f;
     glm::dvec3 e(0.0);
     double ew = 0.0;
-    if (camera_.parallel()) {
-        e = glm::cross(r0, r1);  // the direction the x and y rows do not see
-    } else {
-        const glm::dvec3 r2(map.m[2][0], map.m[2][1], map.m[2][2]);
-        const glm::dvec3 t(map.m[0][3], map.m[1][3], map.m[2][3]);
-        const glm::dvec3 c12 = glm::cross(r1, r2), c20 = glm::cross(r2, r0), c01 = glm::cross(r0, r1);
-        const double det = glm::dot(r0, c12);
-        e = -(t.x * c12 + t.y * c20 + t.z * c01) / det;  // the eye: rows * (e, 1) = 0
-        ew = 1.0;
-    }
+    const bool eye = localEye(map, e, ew);
     const double len = glm::length(e);
-    if (!inFront || !solid || !(len > 0.0) || !std::isfinite(len) || !(len > ew)) {
+    if (!inFront || !solid || !eye || !(len > ew)) {
         addConvex(map, uvSphere_, out);
         return;
     }
@@ -247,16 +266,29 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
                             : std::fabs(n.y) <= std::fabs(n.z)                                   ? glm::dvec3(0, 1, 0)
                                                                                                  : glm::dvec3(0, 0, 1);
     const glm::dvec3 a = glm::normalize(glm::cross(n, axis)), b = glm::cross(n, a);
+    // h(k) = map(centre) + cos_k * map'(radius a) + sin_k * map'(radius b), map' the linear part
+    const Homogeneous hc = map.apply(offset * n);
+    const glm::dvec3 ra = radius * a, rb = radius * b;
+    Homogeneous ha{}, hb{};
+    double* pa = &ha.x;
+    double* pb = &hb.x;
+    for (int r = 0; r < 4; ++r) {
+        pa[r] = map.m[r][0] * ra.x + map.m[r][1] * ra.y + map.m[r][2] * ra.z;
+        pb[r] = map.m[r][0] * rb.x + map.m[r][1] * rb.y + map.m[r][2] * rb.z;
+    }
     h_.resize(kSphereSides);
     const std::size_t first = out.points.size();
+    out.points.resize(first + kSphereSides);
+    FixedPoint* pts = out.points.data() + first;
     bool fast = true;
     for (int k = 0; k < kSphereSides; ++k) {
         const glm::dvec2 cs = sphereRing_[std::size_t(k)];
-        h_[std::size_t(k)] = map.apply(offset * n + radius * (cs.x * a + cs.y * b));
-        const Homogeneous& q = h_[std::size_t(k)];
-        const double x = q.x / q.w, y = q.y / q.w;
+        Homogeneous& q = h_[std::size_t(k)];
+        q = {hc.x + cs.x * ha.x + cs.y * hb.x, hc.y + cs.x * ha.y + cs.y * hb.y, hc.w + cs.x * ha.w + cs.y * hb.w,
+             hc.clip + cs.x * ha.clip + cs.y * hb.clip};
+        const double inv = 1.0 / q.w, x = q.x * inv, y = q.y * inv;
         fast = fast && insideGuard(x, y);
-        out.points.push_back(snap(x, y));
+        pts[k] = snapToFixed(x, y);
     }
     if (fast) {
         out.pieces.push_back({std::uint32_t(first), std::uint32_t(kSphereSides), 1, std::uint16_t(kSphereSides)});
@@ -276,7 +308,7 @@ void OutlineBuilder::addMesh(const LocalMap& map, const MeshShape& mesh, Outline
         h_[i] = map.apply(glm::dvec3(v.x, v.y, v.z));
         const double x = h_[i].x / h_[i].w, y = h_[i].y / h_[i].w;
         fast_[i] = h_[i].clip >= 0.0 && insideGuard(x, y);
-        if (fast_[i]) snapped_[i] = snap(x, y);
+        if (fast_[i]) snapped_[i] = snapToFixed(x, y);
     }
     Homogeneous polygon[4];
     for (const auto& tri : mesh.triangles) {

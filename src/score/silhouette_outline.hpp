@@ -10,6 +10,12 @@
 //  - Cylinder, Cone: one piece, the vertices of the kRoundSides-gon prism / frustum (rings at
 //    u.y = -1 and +1, vertices at angles 2 pi k / kRoundSides from +x towards +z; the top ring
 //    has radius `taper`), or the ring and the apex for a pointed cone (taper <= 0).
+//    Of a box's, cylinder's or cone's vertices only the silhouette vertices are kept: those
+//    where a face turned towards the eye (or the light) meets a face turned away; a face exactly
+//    edge-on counts as both. In exact arithmetic they span the same hull as all vertices; after
+//    rounding the hulls can differ only within rounding error of the outline. A primitive that is
+//    cut (below), reaches beyond the guard band, or is flat (a half extent of 0) keeps all of its
+//    vertices.
 //  - Sphere: one piece, 2 * kRoundSides points on the ellipsoid's contact curve (where the rays
 //    from the eye, or the parallel rays, graze it), evenly spaced in the ellipsoid's own unit
 //    sphere frame: a polygon inscribed in the exact outline (about 0.6 % less area). A sphere that
@@ -22,6 +28,7 @@
 // fixed-point range, so a piece reaching that far is clipped to the guard rectangle first (in
 // double precision); nothing inside the picture changes.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -38,8 +45,14 @@ struct FixedPoint {
     bool operator==(const FixedPoint&) const = default;
 };
 inline constexpr std::int64_t kSubpixels = 256;
+/// Pixel coordinates -> fixed point, rounded to nearest, halves up (|x|, |y| well below 2^23;
+/// exact: scaling by 256 and adding 0.5 round nothing in that range).
+inline FixedPoint snapToFixed(double x, double y) {
+    return {std::int32_t(std::floor(x * double(kSubpixels) + 0.5)), std::int32_t(std::floor(y * double(kSubpixels) + 0.5))};
+}
 inline constexpr double kGuardBand = 16384.0;
 inline constexpr int kSphereSides = 2 * kRoundSides;
+static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 32-bit masks");
 
 /// Points [first, first + count) of an Outline. The first rings * ringSize of them are `rings`
 /// rings of ringSize points each, in cyclic order around a convex polygon before snapping (a
@@ -76,12 +89,27 @@ public:
         std::uint16_t rings = 0, ringSize = 0;
     };
 
+    /// A ring of a box / prism / frustum: radius-1 corners (x, z) in cyclic order and the outward
+    /// normals (x, z) of the side faces between corners k and k + 1.
+    struct RingTable {
+        std::vector<glm::dvec2> corners, normals;
+        double apothem = 1.0;  ///< distance of the side faces from the axis
+        double reach = 1.0;    ///< largest distance of a corner from the axis
+    };
+
 private:
     /// Local -> homogeneous map of one primitive: h = m * (u, 1).
     struct LocalMap {
         double m[4][4];  ///< rows: x, y, w, clip
         Homogeneous apply(const glm::dvec3& u) const;
     };
+    /// The eye in the primitive's local coordinates, homogeneous: (e, 1) for a perspective
+    /// camera, (e, 0) with e along the rays for parallel ones. False if the frame is degenerate.
+    bool localEye(const LocalMap& map, glm::dvec3& e, double& ew) const;
+    /// Silhouette vertices of a two-ring shape (bottom ring radius 1 at u.y = -1, top ring radius
+    /// topScale at u.y = 1; topScale 0: an apex), in loop order. False (nothing added) if the
+    /// shape reaches behind the clip plane or beyond the guard band, or the frame is degenerate.
+    bool addRingsFast(const LocalMap& map, const RingTable& table, double topScale, Outline& out);
     void addConvex(const LocalMap& map, const UnitShape& shape, Outline& out);
     void addSphere(const LocalMap& map, const Primitive& p, Outline& out);
     void addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out);
@@ -94,11 +122,13 @@ private:
     const Camera& camera_;
     double width_, height_;
     UnitShape box_, prism_, pyramid_, uvSphere_;
+    RingTable squareRing_, roundRing_;
     UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
     std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
     std::vector<Homogeneous> h_, cut_;
     std::vector<glm::dvec2> xy_, hull_, clipped_;
     std::vector<FixedPoint> snapped_;   ///< mesh vertices, snapped once per primitive
+    std::vector<glm::dvec3> loop_;      ///< silhouette vertices (u) in loop order
     std::vector<std::uint8_t> fast_;    ///< mesh vertices: in front and inside the guard band
 };
 

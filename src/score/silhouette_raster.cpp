@@ -11,20 +11,6 @@ namespace shapevo {
 
 namespace {
 
-/// floor(num / d) for d > 0 and |num| < 2^53, with the remainder in [0, d). The double quotient
-/// is within one of the true one; the integer check makes it exact.
-inline void floorDivide(std::int64_t num, std::int64_t d, std::int64_t& q, std::int64_t& r) {
-    q = std::int64_t(std::floor(double(num) / double(d)));
-    r = num - q * d;
-    if (r < 0) {
-        --q;
-        r += d;
-    } else if (r >= d) {
-        ++q;
-        r -= d;
-    }
-}
-
 /// Rows j with 256 j + 128 in [lo, hi] (pixel-centre rows of a fixed-point y range).
 inline std::int64_t firstRow(std::int64_t lo) { return -((kSubpixels / 2 - lo) >> 8); }  // ceil((lo - 128) / 256)
 inline std::int64_t lastRow(std::int64_t hi) { return (hi - kSubpixels / 2) >> 8; }     // floor((hi - 128) / 256)
@@ -34,8 +20,9 @@ inline std::int64_t lastRow(std::int64_t hi) { return (hi - kSubpixels / 2) >> 8
 SilhouetteRaster::SilhouetteRaster(const Camera& camera)
     : width_(camera.width()), height_(camera.height()), words_((camera.width() + 63) / 64), camera_(camera),
       outline_(camera_), left_(std::size_t(height_)), right_(std::size_t(height_)),
-      bits_(std::size_t(words_) * std::size_t(height_), 0), wordLo_(std::size_t(height_), std::int16_t(words_)),
-      wordHi_(std::size_t(height_), -1), yMin_(INT_MAX), yMax_(-1) {}
+      bits_(std::size_t(words_) * std::size_t(height_), 0) {
+    forget();
+}
 
 void SilhouetteRaster::add(const Primitive& p, const std::vector<MeshShape>* meshes) {
     pieces_.clear();
@@ -43,76 +30,9 @@ void SilhouetteRaster::add(const Primitive& p, const std::vector<MeshShape>* mes
     for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));
 }
 
-void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
-    const std::size_t n = hull.size();
-    if (n < 3) return;  // no area
-    std::int64_t ymin = hull[0].y, ymax = hull[0].y;
-    for (const FixedPoint& v : hull) {
-        ymin = std::min<std::int64_t>(ymin, v.y);
-        ymax = std::max<std::int64_t>(ymax, v.y);
-    }
-    const std::int64_t top = std::max<std::int64_t>(firstRow(ymin), 0);
-    const std::int64_t bottom = std::min<std::int64_t>(lastRow(ymax), height_ - 1);
-    if (top > bottom) return;
-    // Edge a -> b keeps the pixel centres p with E(p) = dx (p.y - a.y) - dy (p.x - a.x) >= 0.
-    // With p.x = 256 i + 128: E = C - 256 dy i, C = dx (p.y - a.y) - dy (128 - a.x), so
-    // dy < 0 gives i >= ceil(-C / (256 |dy|)) (a left edge), dy > 0 gives i <= floor(C / (256 dy)).
-    // On a row, the left and the right edge that span it bound the convex hull exactly.
-    for (std::size_t e = 0; e < n; ++e) {
-        const FixedPoint a = hull[e], b = hull[e + 1 == n ? 0 : e + 1];
-        const std::int64_t dy = std::int64_t(b.y) - a.y;
-        if (dy == 0) continue;
-        const std::int64_t j0 = std::max(firstRow(std::min<std::int64_t>(a.y, b.y)), top);
-        const std::int64_t j1 = std::min(lastRow(std::max<std::int64_t>(a.y, b.y)), bottom);
-        if (j0 > j1) continue;
-        const std::int64_t dx = std::int64_t(b.x) - a.x;
-        const std::int64_t py = kSubpixels * j0 + kSubpixels / 2;
-        const std::int64_t c = dx * (py - a.y) - dy * (kSubpixels / 2 - a.x);
-        const bool isLeft = dy < 0;
-        const std::int64_t d = kSubpixels * (isLeft ? -dy : dy);
-        const std::int64_t num = isLeft ? -c : c, step = isLeft ? -kSubpixels * dx : kSubpixels * dx;
-        std::int64_t q, r, sq, sr;
-        floorDivide(num, d, q, r);
-        floorDivide(step, d, sq, sr);
-        std::int32_t* out = (isLeft ? left_.data() : right_.data()) + j0;
-        const std::int64_t rows = j1 - j0 + 1;
-        if (isLeft) {
-            for (std::int64_t k = 0; k < rows; ++k) {
-                out[k] = std::int32_t(q + (r != 0));
-                q += sq;
-                r += sr;
-                if (r >= d) {
-                    r -= d;
-                    ++q;
-                }
-            }
-        } else {
-            for (std::int64_t k = 0; k < rows; ++k) {
-                out[k] = std::int32_t(q);
-                q += sq;
-                r += sr;
-                if (r >= d) {
-                    r -= d;
-                    ++q;
-                }
-            }
-        }
-    }
-    rows_ += std::uint64_t(bottom - top + 1);
-    for (std::int64_t j = top; j <= bottom; ++j) {
-        const int lo = std::max(left_[std::size_t(j)], 0), hi = std::min(right_[std::size_t(j)], width_ - 1);
-        if (lo <= hi) markRow(int(j), lo, hi);
-    }
-}
-
-void SilhouetteRaster::markRow(int y, int lo, int hi) {
-    yMin_ = std::min(yMin_, y);
-    yMax_ = std::max(yMax_, y);
+inline void SilhouetteRaster::markRow(int y, int lo, int hi) {
     const int w0 = lo >> 6, w1 = hi >> 6;
-    const std::size_t row = std::size_t(y);
-    wordLo_[row] = std::min<std::int16_t>(wordLo_[row], std::int16_t(w0));
-    wordHi_[row] = std::max<std::int16_t>(wordHi_[row], std::int16_t(w1));
-    std::uint64_t* words = &bits_[row * std::size_t(words_)];
+    std::uint64_t* words = &bits_[std::size_t(y) * std::size_t(words_)];
     const std::uint64_t first = ~0ULL << (lo & 63), last = ~0ULL >> (63 - (hi & 63));
     if (w0 == w1) {
         words[w0] |= first & last;
@@ -123,6 +43,73 @@ void SilhouetteRaster::markRow(int y, int lo, int hi) {
     words[w1] |= last;
 }
 
+void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
+    const std::size_t n = hull.size();
+    if (n < 3) return;  // no area
+    std::int32_t xmin = hull[0].x, xmax = hull[0].x, ymin = hull[0].y, ymax = hull[0].y;
+    for (const FixedPoint& v : hull) {
+        xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
+        ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
+    }
+    const std::int64_t top = std::max<std::int64_t>(firstRow(ymin), 0);
+    const std::int64_t bottom = std::min<std::int64_t>(lastRow(ymax), height_ - 1);
+    const std::int64_t leftmost = std::max<std::int64_t>(firstRow(xmin), 0);  // the same rounding for columns
+    const std::int64_t rightmost = std::min<std::int64_t>(lastRow(xmax), width_ - 1);
+    if (top > bottom || leftmost > rightmost) return;  // no pixel centre in the bounding box
+    // Edge a -> b keeps the pixel centres p with E(p) = dx (p.y - a.y) - dy (p.x - a.x) >= 0.
+    // With p.x = 256 i + 128: E = C - 256 dy i, C = dx (p.y - a.y) - dy (128 - a.x), so
+    // dy < 0 gives i >= ceil(-C / (256 |dy|)) (a left edge), dy > 0 gives i <= floor(C / (256 dy)).
+    // On a row, the left and the right edge that span it bound the convex hull exactly.
+    // Per edge, the first row's bound and the per-row step are quotients taken in double
+    // precision, and exact: numerators are integers below 2^53 in magnitude (coordinates stay
+    // within +-2^23 fixed units), so they are exact doubles; a true quotient that is not an
+    // integer lies at least 1/d from one, more than the division's rounding error |num| 2^-53 / d,
+    // so the floor of the rounded quotient is that of the true one. Further rows step quotient
+    // and remainder in integers.
+    for (std::size_t e = 0; e < n; ++e) {
+        const FixedPoint a = hull[e], b = hull[e + 1 == n ? 0 : e + 1];
+        const std::int64_t dy = std::int64_t(b.y) - a.y;
+        if (dy == 0) continue;
+        const std::int64_t j0 = std::max(firstRow(std::min<std::int64_t>(a.y, b.y)), top);
+        const std::int64_t j1 = std::min(lastRow(std::max<std::int64_t>(a.y, b.y)), bottom);
+        if (j0 > j1) continue;
+        const std::int64_t dx = std::int64_t(b.x) - a.x;
+        const std::int64_t py = kSubpixels * j0 + kSubpixels / 2;
+        const std::int64_t c = dx * (py - a.y) - dy * (kSubpixels / 2 - a.x);
+        const int rows = int(j1 - j0 + 1);
+        // left: i >= ceil(num / d); right: i <= floor(num / d); num grows by `step` per row
+        const bool isLeft = dy < 0;
+        const std::int64_t d = kSubpixels * (isLeft ? -dy : dy), num = isLeft ? -c : c;
+        const std::int64_t step = isLeft ? -kSubpixels * dx : kSubpixels * dx;
+        std::int32_t* out = (isLeft ? left_.data() : right_.data()) + j0;
+        std::int64_t q = std::int64_t(std::floor(double(num) / double(d))), r = num - q * d;  // r in [0, d)
+        if (isLeft) out[0] = std::int32_t(q + (r != 0));
+        else out[0] = std::int32_t(q);
+        if (rows == 1) continue;
+        // further rows: step quotient and remainder exactly (the remainder stays in [0, d))
+        const std::int64_t sq = std::int64_t(std::floor(double(step) / double(d))), sr = step - sq * d;
+        const std::int64_t ceilBias = isLeft ? 1 : 0;
+        for (int k = 1; k < rows; ++k) {
+            q += sq;
+            r += sr;
+            const bool carry = r >= d;
+            q += carry;
+            r -= carry ? d : 0;
+            out[k] = std::int32_t(q + (r != 0 ? ceilBias : 0));
+        }
+    }
+    rows_ += std::uint64_t(bottom - top + 1);
+    bool drawn = false;
+    for (std::int64_t j = top; j <= bottom; ++j) {
+        const int lo = std::max(left_[std::size_t(j)], int(leftmost)), hi = std::min(right_[std::size_t(j)], int(rightmost));
+        if (lo <= hi) markRow(int(j), lo, hi), drawn = true;
+    }
+    if (drawn) {  // the rectangle counting and clearing must sweep
+        yMin_ = std::min(yMin_, int(top)), yMax_ = std::max(yMax_, int(bottom));
+        wordMin_ = std::min(wordMin_, int(leftmost >> 6)), wordMax_ = std::max(wordMax_, int(rightmost >> 6));
+    }
+}
+
 SilhouetteCounts SilhouetteRaster::score(const ImageTarget& target) {
     if (target.width != width_ || target.height != height_)
         throw std::invalid_argument("SilhouetteRaster::score: target size differs from the camera's");
@@ -130,9 +117,8 @@ SilhouetteCounts SilhouetteRaster::score(const ImageTarget& target) {
     c.rows = rows_;
     const std::size_t W = std::size_t(words_);
     for (int y = yMin_; y <= yMax_; ++y) {
-        const std::size_t row = std::size_t(y);
         std::uint64_t covered = 0, hit = 0, avoided = 0;
-        for (std::size_t i = row * W + std::size_t(wordLo_[row]), end = row * W + std::size_t(wordHi_[row]) + 1; i < end; ++i) {
+        for (std::size_t i = std::size_t(y) * W + std::size_t(wordMin_), end = std::size_t(y) * W + std::size_t(wordMax_) + 1; i < end; ++i) {
             const std::uint64_t m = bits_[i];
             covered += std::uint64_t(std::popcount(m));
             hit += std::uint64_t(std::popcount(m & target.hit[i]));
@@ -142,13 +128,15 @@ SilhouetteCounts SilhouetteRaster::score(const ImageTarget& target) {
         c.covered += covered;
         c.hit += hit;
         c.avoided += avoided;
-        wordLo_[row] = std::int16_t(words_);
-        wordHi_[row] = -1;
     }
-    yMin_ = INT_MAX;
-    yMax_ = -1;
-    rows_ = 0;
+    forget();
     return c;
+}
+
+void SilhouetteRaster::forget() {
+    yMin_ = wordMin_ = INT_MAX;
+    yMax_ = wordMax_ = -1;
+    rows_ = 0;
 }
 
 void SilhouetteRaster::fillMask(std::vector<std::uint8_t>& mask) const {
@@ -161,17 +149,10 @@ void SilhouetteRaster::fillMask(std::vector<std::uint8_t>& mask) const {
 
 void SilhouetteRaster::clear() {
     const std::size_t W = std::size_t(words_);
-    for (int y = yMin_; y <= yMax_; ++y) {
-        const std::size_t row = std::size_t(y);
-        if (wordLo_[row] <= wordHi_[row])
-            std::fill(bits_.begin() + std::ptrdiff_t(row * W + std::size_t(wordLo_[row])),
-                      bits_.begin() + std::ptrdiff_t(row * W + std::size_t(wordHi_[row]) + 1), 0);
-        wordLo_[row] = std::int16_t(words_);
-        wordHi_[row] = -1;
-    }
-    yMin_ = INT_MAX;
-    yMax_ = -1;
-    rows_ = 0;
+    for (int y = yMin_; y <= yMax_; ++y)
+        std::fill(bits_.begin() + std::ptrdiff_t(std::size_t(y) * W + std::size_t(wordMin_)),
+                  bits_.begin() + std::ptrdiff_t(std::size_t(y) * W + std::size_t(wordMax_) + 1), 0);
+    forget();
 }
 
 }  // namespace shapevo

@@ -6,8 +6,8 @@
 // in as word masks. So a pixel is set exactly when its centre lies in the closed hull, the same
 // answer a point-in-polygon test gives pixel by pixel.
 //
-// Bookkeeping: the rows written since the last count and, per row, the range of words written,
-// so counting and clearing touch only what was drawn.
+// Bookkeeping: the rectangle of rows and words written since the last count, so counting and
+// clearing touch only that rectangle.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -58,6 +58,7 @@ public:
 
 private:
     void markRow(int y, int lo, int hi);
+    void forget();  ///< mark everything clear (after the words were zeroed)
 
     int width_, height_, words_;
     const Camera camera_;
@@ -66,8 +67,7 @@ private:
     FixedHull hull_;
     std::vector<std::int32_t> left_, right_;  ///< per row: covered pixel bounds of the piece being drawn
     std::vector<std::uint64_t> bits_;
-    std::vector<std::int16_t> wordLo_, wordHi_;  ///< per row: words written (lo > hi if none)
-    int yMin_, yMax_;                            ///< rows written (yMin_ > yMax_ if none)
+    int yMin_, yMax_, wordMin_, wordMax_;  ///< the rectangle of rows and words written (empty: min > max)
     std::uint64_t rows_ = 0;
 };
 
