@@ -195,7 +195,7 @@ void OutlineBuilder::addConvex(const LocalMap& map, const UnitShape& shape, Outl
         for (std::size_t i = 0; i < n && fast; ++i) {
             const double x = h_[i].x / h_[i].w, y = h_[i].y / h_[i].w;
             fast = insideGuard(x, y);
-            out.points.push_back(snapToFixed(x, y));
+            if (fast) out.points.push_back(snapToFixed(x, y));
         }
         if (fast) {
             out.pieces.push_back({std::uint32_t(first), std::uint32_t(n), shape.rings, shape.ringSize});
@@ -288,7 +288,7 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
              hc.clip + cs.x * ha.clip + cs.y * hb.clip};
         const double inv = 1.0 / q.w, x = q.x * inv, y = q.y * inv;
         fast = fast && insideGuard(x, y);
-        pts[k] = snapToFixed(x, y);
+        if (fast) pts[k] = snapToFixed(x, y);
     }
     if (fast) {
         out.pieces.push_back({std::uint32_t(first), std::uint32_t(kSphereSides), 1, std::uint16_t(kSphereSides)});

@@ -178,6 +178,35 @@ TEST(SilhouetteExactness, PixelCentresExactlyOnSlantedEdgesAreCovered) {
     EXPECT_GT(stats.onSlanted, 1000);
 }
 
+TEST(SilhouetteExactness, ExtremeAndBrokenPrimitivesStayExactOrDrawNothing) {
+    const std::vector<MeshShape> meshes = starMesh();
+    const float huge = 1e30f, tiny = 1e-30f, inf = INFINITY, nan = NAN;
+    for (const Scene& scene : scenes()) {
+        SCOPED_TRACE(scene.name);
+        const Camera camera = Camera::compile(scene.spec, "test");
+        SilhouetteRaster raster(camera);
+        OutlineBuilder builder(camera);
+        Rng rng(13);
+        const ImageTarget target = randomTarget(camera.width(), camera.height(), rng);
+        BruteStats stats;
+        long covered = 0;
+        for (int k = 0; k < kPrimitiveKinds; ++k)
+            for (int i = 0; i < 60; ++i) {
+                Primitive p = randomPrimitive(PrimitiveKind(k), scene, rng);
+                switch (i % 6) {
+                case 0: p.half *= huge; break;                  // covers everything or is cut everywhere
+                case 1: p.half *= tiny; break;                  // a point
+                case 2: p.centre[int(rng.below(3))] = (rng.below(2) ? 1 : -1) * huge; break;
+                case 3: p.centre.x += 1e4f * float(rng.normal()); break;  // beyond the guard band
+                case 4: p.half[int(rng.below(3))] = rng.below(2) ? inf : nan; break;
+                case 5: p.axes[int(rng.below(3))][int(rng.below(3))] = nan; break;
+                }
+                ASSERT_TRUE(agrees(raster, builder, {p}, meshes, target, stats, covered)) << "kind " << k << " case " << i;
+            }
+        EXPECT_GT(covered, 0);
+    }
+}
+
 TEST(SilhouetteExactness, UnionsOfPrimitivesMatchBruteForce) {
     const std::vector<MeshShape> meshes = starMesh();
     for (const Scene& scene : scenes()) {
