@@ -27,7 +27,7 @@ using namespace shapevo;
 // After the papers' tree grammar (reference-targets/README.md): a trunk of height 1.4..1.8, up to
 // three branches per branch (turn about the parent's axis, inclination 35..85 degrees, sizes
 // 0.6..0.7 of the parent's), attached at 0.38 of the parent's height; a leaf cluster at 0.75 of
-// the height of every branch without children.
+// the height of every branch without children, five times as wide as that branch.
 std::string treeGrammar(const char* leaf) {
     return std::string(R"(
 start Trunk
@@ -52,7 +52,7 @@ rule Branch {
   child Branch prob 0.75 max 3
   terminal {
     translate (0, scope.size.y * 0.25, 0)
-    size (0.6, 0.6, 0.6)
+    size (scope.size.x * 5, scope.size.x * 5, scope.size.x * 5)
     )") + leaf + R"(
   }
 }
@@ -66,9 +66,9 @@ const Grammar& tree(bool cylinderLeaves) {
 }
 
 Camera paperCamera() {
-    CameraSpec s;  // 800 x 600, 60 degrees, near 0.1
-    s.eye = {0.0, 2.2, 6.5};
-    s.lookAt = {0.0, 2.2, 0.0};
+    CameraSpec s;  // 800 x 600, 60 degrees, near 0.1; the tree spans about 250 x 200 pixels, like the logo
+    s.eye = {0.0, 1.4, 5.0};
+    s.lookAt = {0.0, 1.4, 0.0};
     return Camera::compile(s, "bench");
 }
 

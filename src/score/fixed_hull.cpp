@@ -47,41 +47,35 @@ void insertionSort(FixedPoint* a, int n) {
     }
 }
 
-/// If the cycle p[0..n) is a strictly convex polygon winding once, write it counter-clockwise
-/// to `out` and return its size; else 0 (or -1 for zero area: a triangle whose corners line up).
+/// If the cycle p[0..n) is a convex polygon winding once (repeated points and points along an
+/// edge allowed), write it counter-clockwise without repeats to `out` and return its size; 0 if
+/// it is not (`out` then holds scratch), -1 if it has no area (all points on one line).
 int convexCycle(const FixedPoint* p, int n, FixedPoint* out) {
-    if (n < 3) return 0;
-    int left = 0, right = 0, ySwaps = 0, lastDy = 0;
-    for (int i = 0; i < n; ++i) {
-        const FixedPoint a = p[i == 0 ? n - 1 : i - 1], b = p[i], c = p[i + 1 == n ? 0 : i + 1];
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+        if (m == 0 || !(p[i] == out[m - 1])) out[m++] = p[i];
+    while (m > 1 && out[m - 1] == out[0]) --m;
+    if (m < 3) return -1;
+    int left = 0, right = 0, ySwaps = 0, firstDy = 0, lastDy = 0;
+    for (int i = 0; i < m; ++i) {
+        const FixedPoint a = out[i == 0 ? m - 1 : i - 1], b = out[i], c = out[i + 1 == m ? 0 : i + 1];
         const std::int64_t o = orientation(a, b, c);
-        left += o > 0;
-        right += o < 0;
+        if (o > 0) ++left;
+        else if (o < 0) ++right;
+        else if ((std::int64_t(b.x) - a.x) * (std::int64_t(c.x) - b.x) + (std::int64_t(b.y) - a.y) * (std::int64_t(c.y) - b.y) < 0)
+            return 0;  // turns back along a line
         const int dy = (c.y > b.y) - (c.y < b.y);
         if (dy != 0) {
+            if (lastDy == 0) firstDy = dy;
             ySwaps += lastDy != 0 && dy != lastDy;
             lastDy = dy;
         }
     }
-    for (int i = 0; i < n && lastDy != 0; ++i) {  // close the cycle: compare with the first non-zero dy
-        const FixedPoint b = p[i], c = p[i + 1 == n ? 0 : i + 1];
-        const int dy = (c.y > b.y) - (c.y < b.y);
-        if (dy != 0) {
-            ySwaps += dy != lastDy;
-            break;
-        }
-    }
-    if (n == 3 && left == 0 && right == 0) return -1;
-    if (ySwaps != 2) return 0;  // winds more than once (every turn of the same sense, yet not convex)
-    if (left == n) {
-        std::copy(p, p + n, out);
-        return n;
-    }
-    if (right == n) {
-        std::reverse_copy(p, p + n, out);
-        return n;
-    }
-    return 0;
+    ySwaps += lastDy != 0 && firstDy != lastDy;  // close the cycle
+    if (left == 0 && right == 0) return -1;
+    if ((left != 0 && right != 0) || ySwaps != 2) return 0;  // a dent, or winding more than once
+    if (right != 0) std::reverse(out, out + m);
+    return m;
 }
 
 }  // namespace

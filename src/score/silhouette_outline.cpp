@@ -123,23 +123,52 @@ OutlineBuilder::OutlineBuilder(const Camera& camera)
     roundRing_.reach = 1.0;
 }
 
-void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
-    if (p.kind == PrimitiveKind::Mesh && (!meshes || p.mesh >= meshes->size())) return;
+bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
     // local u -> world: centre + axes * (half * u); world -> homogeneous: camera rows / clip plane
     double a[3][4];  // a[j] = world coordinate j as a function of (u, 1)
     for (int j = 0; j < 3; ++j) {
         for (int k = 0; k < 3; ++k) a[j][k] = double(p.axes[k][j]) * double(p.half[k]);
         a[j][3] = p.centre[j];
     }
-    LocalMap map;
     const double(*rows)[4] = camera_.rows();
     for (int r = 0; r < 4; ++r) {
         const double* c = r < 3 ? rows[r] : camera_.clipPlane();
         for (int k = 0; k < 4; ++k) {
             map.m[r][k] = c[0] * a[0][k] + c[1] * a[1][k] + c[2] * a[2][k] + (k == 3 ? c[3] : 0.0);
-            if (!std::isfinite(map.m[r][k])) return;
+            if (!std::isfinite(map.m[r][k])) return false;
         }
     }
+    return true;
+}
+
+bool OutlineBuilder::coverBound(const Primitive& p, int& x0, int& x1, int& y0, int& y1) const {
+    LocalMap map;
+    if (!localMap(p, map)) return false;
+    const double(*m)[4] = map.m;
+    // The box u in [-1, 1]^3 holds every kind's points; all of its corners in front?
+    if (!(m[3][3] - std::fabs(m[3][0]) - std::fabs(m[3][1]) - std::fabs(m[3][2]) >= 0.0)) return false;
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    for (int c = 0; c < 8; ++c) {
+        const double u = c & 1 ? 1.0 : -1.0, v = c & 2 ? 1.0 : -1.0, w = c & 4 ? 1.0 : -1.0;
+        const double hw = m[2][0] * u + m[2][1] * v + m[2][2] * w + m[2][3];
+        const double x = (m[0][0] * u + m[0][1] * v + m[0][2] * w + m[0][3]) / hw;
+        const double y = (m[1][0] * u + m[1][1] * v + m[1][2] * w + m[1][3]) / hw;
+        xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+    }
+    if (!(xmin <= xmax && ymin <= ymax)) return false;  // NaN
+    // Pixel centres i + 0.5 in [min, max], with a margin far above snapping and rounding errors.
+    constexpr double kMargin = 1.0 / 64.0;
+    auto first = [](double v, int size) { return int(std::clamp(std::ceil(v - 0.5 - kMargin), 0.0, double(size))); };
+    auto last = [](double v, int size) { return int(std::clamp(std::floor(v - 0.5 + kMargin), -1.0, double(size) - 1.0)); };
+    x0 = first(xmin, int(width_)), x1 = last(xmax, int(width_));
+    y0 = first(ymin, int(height_)), y1 = last(ymax, int(height_));
+    return true;
+}
+
+void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
+    if (p.kind == PrimitiveKind::Mesh && (!meshes || p.mesh >= meshes->size())) return;
+    LocalMap map;
+    if (!localMap(p, map)) return;
     switch (p.kind) {
     case PrimitiveKind::Box:
         if (!addRingsFast(map, squareRing_, 1.0, out)) addConvex(map, box_, out);
@@ -148,14 +177,15 @@ void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshe
         if (!addRingsFast(map, roundRing_, 1.0, out)) addConvex(map, prism_, out);
         break;
     case PrimitiveKind::Cone:
-        if (addRingsFast(map, roundRing_, p.taper > 0.0f ? double(p.taper) : 0.0, out)) break;
+        if (addRingsFast(map, roundRing_, std::clamp(double(p.taper), 0.0, 1.0), out)) break;  // (NaN: 0)
         if (!(p.taper > 0.0f)) {
             addConvex(map, pyramid_, out);
         } else {
             const std::size_t n = prism_.ringSize;
             for (std::size_t k = 0; k < n; ++k) {
                 const glm::dvec3& v = prism_.vertices[n + k];
-                cone_.vertices[n + k] = {v.x * double(p.taper), v.y, v.z * double(p.taper)};
+                const double t = std::min(double(p.taper), 1.0);
+                cone_.vertices[n + k] = {v.x * t, v.y, v.z * t};
             }
             addConvex(map, cone_, out);
         }
@@ -221,7 +251,9 @@ void OutlineBuilder::addClippedPiece(const Homogeneous* h, std::size_t n, bool c
     xy_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         if (!(h[i].w > 0.0)) return;  // cannot happen after the cut (w >= near); guards NaN
-        xy_.push_back({h[i].x / h[i].w, h[i].y / h[i].w});
+        const glm::dvec2 v(h[i].x / h[i].w, h[i].y / h[i].w);
+        if (!std::isfinite(v.x) || !std::isfinite(v.y)) return;  // (the sort below needs numbers)
+        xy_.push_back(v);
     }
     if (!convexCycle) {
         doubleHull(xy_, hull_);
@@ -234,13 +266,8 @@ void OutlineBuilder::addClippedPiece(const Homogeneous* h, std::size_t n, bool c
     clipPolygon(clipped_, xy_, 1, height_ + kGuardBand, true);
     if (xy_.empty()) return;
     const std::size_t first = out.points.size();
-    for (const glm::dvec2& v : xy_) {
-        if (!std::isfinite(v.x) || !std::isfinite(v.y)) {
-            out.points.resize(first);
-            return;
-        }
+    for (const glm::dvec2& v : xy_)  // clamped: clipping leaves points on the bounds up to rounding
         out.points.push_back(snapToFixed(std::clamp(v.x, lo, width_ + kGuardBand), std::clamp(v.y, lo, height_ + kGuardBand)));
-    }
     const auto count = std::uint32_t(xy_.size());
     out.pieces.push_back({std::uint32_t(first), count, 1, std::uint16_t(count)});
 }

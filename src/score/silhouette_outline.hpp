@@ -9,7 +9,7 @@
 //  - Box: one piece, its 8 corners.
 //  - Cylinder, Cone: one piece, the vertices of the kRoundSides-gon prism / frustum (rings at
 //    u.y = -1 and +1, vertices at angles 2 pi k / kRoundSides from +x towards +z; the top ring
-//    has radius `taper`), or the ring and the apex for a pointed cone (taper <= 0).
+//    has radius `taper`, clamped to [0, 1]), or the ring and the apex for a pointed cone (taper 0).
 //    Of a box's, cylinder's or cone's vertices only the silhouette vertices are kept: those
 //    where a face turned towards the eye (or the light) meets a face turned away; a face exactly
 //    edge-on counts as both. In exact arithmetic they span the same hull as all vertices; after
@@ -78,6 +78,11 @@ public:
     /// Append the pieces of p's silhouette to `out` (nothing for a primitive with non-finite
     /// numbers or a Mesh primitive without its mesh).
     void add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out);
+    /// Pixel centres that p's outline can cover at most: columns x0..x1, rows y0..y1, clamped to
+    /// the picture (empty if x0 > x1 or y0 > y1): the projected corners of its box u in [-1, 1]^3
+    /// with a margin of 1/64 pixel. False (no bound) if a corner is behind the clip plane or a
+    /// number is not finite.
+    bool coverBound(const Primitive& p, int& x0, int& x1, int& y0, int& y1) const;
     const Camera& camera() const { return camera_; }
 
     struct Homogeneous {
@@ -103,6 +108,7 @@ private:
         double m[4][4];  ///< rows: x, y, w, clip
         Homogeneous apply(const glm::dvec3& u) const;
     };
+    bool localMap(const Primitive& p, LocalMap& map) const;  ///< false if not finite
     /// The eye in the primitive's local coordinates, homogeneous: (e, 1) for a perspective
     /// camera, (e, 0) with e along the rays for parallel ones. False if the frame is degenerate.
     bool localEye(const LocalMap& map, glm::dvec3& e, double& ew) const;

@@ -24,7 +24,26 @@ SilhouetteRaster::SilhouetteRaster(const Camera& camera)
     forget();
 }
 
+bool SilhouetteRaster::allSet(int x0, int x1, int y0, int y1) const {
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    const std::uint64_t first = ~0ULL << (x0 & 63), last = ~0ULL >> (63 - (x1 & 63));
+    for (int y = y0; y <= y1; ++y) {
+        const std::uint64_t* words = &bits_[std::size_t(y) * std::size_t(words_)];
+        if (w0 == w1) {
+            if ((words[w0] & first & last) != (first & last)) return false;
+            continue;
+        }
+        if ((words[w0] & first) != first || (words[w1] & last) != last) return false;
+        for (int w = w0 + 1; w < w1; ++w)
+            if (words[w] != ~0ULL) return false;
+    }
+    return true;
+}
+
 void SilhouetteRaster::add(const Primitive& p, const std::vector<MeshShape>* meshes) {
+    int x0, x1, y0, y1;
+    if (outline_.coverBound(p, x0, x1, y0, y1) && (x0 > x1 || y0 > y1 || allSet(x0, x1, y0, y1)))
+        return;  // no pixel centre within reach, or every one already covered: nothing would change
     pieces_.clear();
     outline_.add(p, meshes, pieces_);
     for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));

@@ -6,6 +6,8 @@
 // in as word masks. So a pixel is set exactly when its centre lies in the closed hull, the same
 // answer a point-in-polygon test gives pixel by pixel.
 //
+// A primitive is skipped before any of that when the projected corners of its box reach no pixel
+// centre, or only pixels already drawn (the union would not change).
 // Bookkeeping: the rectangle of rows and words written since the last count, so counting and
 // clearing touch only that rectangle.
 #pragma once
@@ -40,7 +42,8 @@ public:
     void add(const Geometry& g) {
         for (const Primitive& p : g.primitives) add(p, g.meshes);
     }
-    /// Draw one convex polygon given as its hull (counter-clockwise, strictly convex, fixed point).
+    /// Draw one convex polygon of positive area given as its hull (counter-clockwise, no repeated
+    /// points, every turn left or straight; fixed point).
     void fillConvex(std::span<const FixedPoint> hull);
 
     /// Count what was drawn against `target` (same size as the camera's picture) and clear.
@@ -58,6 +61,7 @@ public:
 
 private:
     void markRow(int y, int lo, int hi);
+    bool allSet(int x0, int x1, int y0, int y1) const;  ///< every pixel of the rectangle drawn?
     void forget();  ///< mark everything clear (after the words were zeroed)
 
     int width_, height_, words_;
