@@ -141,10 +141,17 @@ bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
     return true;
 }
 
-bool OutlineBuilder::coverBound(const Primitive& p, int& x0, int& x1, int& y0, int& y1) const {
-    LocalMap map;
-    if (!localMap(p, map)) return false;
-    const double(*m)[4] = map.m;
+bool OutlineBuilder::prepare(const Primitive& p, const std::vector<MeshShape>* meshes) {
+    prepared_ = nullptr;
+    if (p.kind == PrimitiveKind::Mesh && (!meshes || p.mesh >= meshes->size())) return false;
+    if (!localMap(p, map_)) return false;
+    prepared_ = &p;
+    meshes_ = meshes;
+    return true;
+}
+
+bool OutlineBuilder::coverBound(int& x0, int& x1, int& y0, int& y1) const {
+    const double(*m)[4] = map_.m;
     // The box u in [-1, 1]^3 holds every kind's points; all of its corners in front?
     if (!(m[3][3] - std::fabs(m[3][0]) - std::fabs(m[3][1]) - std::fabs(m[3][2]) >= 0.0)) return false;
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
@@ -165,10 +172,10 @@ bool OutlineBuilder::coverBound(const Primitive& p, int& x0, int& x1, int& y0, i
     return true;
 }
 
-void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
-    if (p.kind == PrimitiveKind::Mesh && (!meshes || p.mesh >= meshes->size())) return;
-    LocalMap map;
-    if (!localMap(p, map)) return;
+void OutlineBuilder::addPrepared(Outline& out) {
+    if (!prepared_) return;
+    const Primitive& p = *prepared_;
+    const LocalMap& map = map_;
     switch (p.kind) {
     case PrimitiveKind::Box:
         if (!addRingsFast(map, squareRing_, 1.0, out)) addConvex(map, box_, out);
@@ -191,7 +198,7 @@ void OutlineBuilder::add(const Primitive& p, const std::vector<MeshShape>* meshe
         }
         break;
     case PrimitiveKind::Sphere: addSphere(map, p, out); break;
-    case PrimitiveKind::Mesh: addMesh(map, (*meshes)[p.mesh], out); break;
+    case PrimitiveKind::Mesh: addMesh(map, (*meshes_)[p.mesh], out); break;
     }
 }
 

@@ -77,12 +77,19 @@ public:
     explicit OutlineBuilder(const Camera& camera);
     /// Append the pieces of p's silhouette to `out` (nothing for a primitive with non-finite
     /// numbers or a Mesh primitive without its mesh).
-    void add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out);
-    /// Pixel centres that p's outline can cover at most: columns x0..x1, rows y0..y1, clamped to
-    /// the picture (empty if x0 > x1 or y0 > y1): the projected corners of its box u in [-1, 1]^3
-    /// with a margin of 1/64 pixel. False (no bound) if a corner is behind the clip plane or a
-    /// number is not finite.
-    bool coverBound(const Primitive& p, int& x0, int& x1, int& y0, int& y1) const;
+    void add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
+        if (prepare(p, meshes)) addPrepared(out);
+    }
+    /// The same in steps: prepare p (false: it draws nothing: numbers not finite, or a Mesh
+    /// primitive without its mesh; p and meshes must stay alive until addPrepared), then
+    /// optionally ask for its bound, then add its pieces.
+    bool prepare(const Primitive& p, const std::vector<MeshShape>* meshes);
+    /// Pixel centres the prepared primitive's outline can cover at most: columns x0..x1, rows
+    /// y0..y1, clamped to the picture (empty if x0 > x1 or y0 > y1): the projected corners of its
+    /// box u in [-1, 1]^3 with a margin of 1/64 pixel. False (no bound) if a corner is behind the
+    /// clip plane.
+    bool coverBound(int& x0, int& x1, int& y0, int& y1) const;
+    void addPrepared(Outline& out);
     const Camera& camera() const { return camera_; }
 
     struct Homogeneous {
@@ -127,6 +134,9 @@ private:
 
     const Camera& camera_;
     double width_, height_;
+    LocalMap map_;                              ///< of the prepared primitive
+    const Primitive* prepared_ = nullptr;
+    const std::vector<MeshShape>* meshes_ = nullptr;
     UnitShape box_, prism_, pyramid_, uvSphere_;
     RingTable squareRing_, roundRing_;
     UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper

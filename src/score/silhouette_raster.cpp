@@ -11,6 +11,20 @@ namespace shapevo {
 
 namespace {
 
+/// q = floor(num / d), r = num - q d in [0, d), for d > 0 and |num| < 2^53: the estimate from the
+/// double reciprocal is within one of q (relative error about 2^-52), the remainder corrects it.
+inline void floorDivide(std::int64_t num, std::int64_t d, double inverse, std::int64_t& q, std::int64_t& r) {
+    q = std::int64_t(std::floor(double(num) * inverse));
+    r = num - q * d;
+    if (r < 0) {
+        --q;
+        r += d;
+    } else if (r >= d) {
+        ++q;
+        r -= d;
+    }
+}
+
 /// Rows j with 256 j + 128 in [lo, hi] (pixel-centre rows of a fixed-point y range).
 inline std::int64_t firstRow(std::int64_t lo) { return -((kSubpixels / 2 - lo) >> 8); }  // ceil((lo - 128) / 256)
 inline std::int64_t lastRow(std::int64_t hi) { return (hi - kSubpixels / 2) >> 8; }     // floor((hi - 128) / 256)
@@ -41,11 +55,12 @@ bool SilhouetteRaster::allSet(int x0, int x1, int y0, int y1) const {
 }
 
 void SilhouetteRaster::add(const Primitive& p, const std::vector<MeshShape>* meshes) {
+    if (!outline_.prepare(p, meshes)) return;
     int x0, x1, y0, y1;
-    if (outline_.coverBound(p, x0, x1, y0, y1) && (x0 > x1 || y0 > y1 || allSet(x0, x1, y0, y1)))
+    if (outline_.coverBound(x0, x1, y0, y1) && (x0 > x1 || y0 > y1 || allSet(x0, x1, y0, y1)))
         return;  // no pixel centre within reach, or every one already covered: nothing would change
     pieces_.clear();
-    outline_.add(p, meshes, pieces_);
+    outline_.addPrepared(pieces_);
     for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));
 }
 
@@ -79,12 +94,9 @@ void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
     // With p.x = 256 i + 128: E = C - 256 dy i, C = dx (p.y - a.y) - dy (128 - a.x), so
     // dy < 0 gives i >= ceil(-C / (256 |dy|)) (a left edge), dy > 0 gives i <= floor(C / (256 dy)).
     // On a row, the left and the right edge that span it bound the convex hull exactly.
-    // Per edge, the first row's bound and the per-row step are quotients taken in double
-    // precision, and exact: numerators are integers below 2^53 in magnitude (coordinates stay
-    // within +-2^23 fixed units), so they are exact doubles; a true quotient that is not an
-    // integer lies at least 1/d from one, more than the division's rounding error |num| 2^-53 / d,
-    // so the floor of the rounded quotient is that of the true one. Further rows step quotient
-    // and remainder in integers.
+    // Per edge, the first row's bound and the per-row step are integer quotients with remainders
+    // (floorDivide: exact); further rows step quotient and remainder in integers. Numerators stay
+    // below 2^53 in magnitude: coordinates are within +-2^23 fixed units.
     for (std::size_t e = 0; e < n; ++e) {
         const FixedPoint a = hull[e], b = hull[e + 1 == n ? 0 : e + 1];
         const std::int64_t dy = std::int64_t(b.y) - a.y;
@@ -101,12 +113,14 @@ void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
         const std::int64_t d = kSubpixels * (isLeft ? -dy : dy), num = isLeft ? -c : c;
         const std::int64_t step = isLeft ? -kSubpixels * dx : kSubpixels * dx;
         std::int32_t* out = (isLeft ? left_.data() : right_.data()) + j0;
-        std::int64_t q = std::int64_t(std::floor(double(num) / double(d))), r = num - q * d;  // r in [0, d)
+        const double inverse = 1.0 / double(d);
+        std::int64_t q, r, sq, sr;
+        floorDivide(num, d, inverse, q, r);
         if (isLeft) out[0] = std::int32_t(q + (r != 0));
         else out[0] = std::int32_t(q);
         if (rows == 1) continue;
         // further rows: step quotient and remainder exactly (the remainder stays in [0, d))
-        const std::int64_t sq = std::int64_t(std::floor(double(step) / double(d))), sr = step - sq * d;
+        floorDivide(step, d, inverse, sq, sr);
         const std::int64_t ceilBias = isLeft ? 1 : 0;
         for (int k = 1; k < rows; ++k) {
             q += sq;
