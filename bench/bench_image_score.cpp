@@ -1,0 +1,211 @@
+// bench_image_score: silhouette scoring against an 800 x 600 image target (the papers' tree
+// scene: perspective, 60 degrees, the mickey logo as target).
+//  - BM_ImageScore: SilhouetteRaster::add + score + imageFitness on pre-derived trees of about
+//    200 primitives (cylinder branches, sphere leaf clusters); 16 different trees round-robin.
+//  - BM_ImageDeriveScore: ImageScorer::fitness (derive + the above) on the same 16 chromosomes.
+//  - BM_ImageScoreCylinders: the same trees with cylinders for leaves too (all one kind).
+//  - BM_LargeTree/<part>: one 50,000-gene tree chromosome (every branch has three children,
+//    breadth first); part 0 = derive + score (ImageScorer::fitness), 1 = derive only, 2 = score only.
+// Counters: evals/s; primitives, covered pixels and rasterized rows per evaluation.
+//
+//   cd build && ninja bench_image_score && taskset -c 1 ./bench/bench_image_score --benchmark_min_time=1
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "genome/operators.hpp"
+#include "grammar/parser.hpp"
+#include "score/image_scorer.hpp"
+
+namespace {
+
+using namespace shapevo;
+
+// After the papers' tree grammar (reference-targets/README.md): a trunk of height 1.4..1.8, up to
+// three branches per branch (turn about the parent's axis, inclination 35..85 degrees, sizes
+// 0.6..0.7 of the parent's), attached at 0.38 of the parent's height; a leaf cluster at 0.75 of
+// the height of every branch without children, five times as wide as that branch.
+std::string treeGrammar(const char* leaf) {
+    return std::string(R"(
+start Trunk
+rule Trunk {
+  param height = uniform(1.4, 1.8)
+  size (0.25, height, 0.25)
+  translate (0, scope.size.y * 0.5, 0)
+  cylinder
+  translate (0, scope.size.y * -0.12, 0)
+  child Branch prob 0.9 max 3
+}
+rule Branch {
+  param turn = uniform(0, 360)
+  param tilt = uniform(35, 85)
+  param shrink = uniform((0.6, 0.6, 0.6), (0.7, 0.8, 0.7))
+  rotate y turn
+  rotate x tilt
+  scale shrink
+  translate (0, scope.size.y * 0.5, 0)
+  cylinder
+  translate (0, scope.size.y * -0.12, 0)
+  child Branch prob 0.75 max 3
+  terminal {
+    translate (0, scope.size.y * 0.25, 0)
+    size (scope.size.x * 5, scope.size.x * 5, scope.size.x * 5)
+    )") + leaf + R"(
+  }
+}
+)";
+}
+
+const Grammar& tree(bool cylinderLeaves) {
+    static const Grammar spheres = parseGrammar(treeGrammar("sphere"), "bench-tree.grammar");
+    static const Grammar cylinders = parseGrammar(treeGrammar("cylinder"), "bench-tree-cylinders.grammar");
+    return cylinderLeaves ? cylinders : spheres;
+}
+
+Camera paperCamera() {
+    CameraSpec s;  // 800 x 600, 60 degrees, near 0.1; the tree spans about 250 x 200 pixels, like the logo
+    s.eye = {0.0, 1.4, 5.0};
+    s.lookAt = {0.0, 1.4, 0.0};
+    return Camera::compile(s, "bench");
+}
+
+const ImageTarget& mickey() {
+    static const ImageTarget t =
+        loadImageTarget(SHAPEVO_SOURCE_DIR "/targets/shapegenetics/tree_target_mickey.png", PixelRule{}, 800, 600);
+    return t;
+}
+
+/// Chromosomes grown with fixed seeds until their trees have about 200 primitives.
+const std::vector<Chromosome>& trees() {
+    static const std::vector<Chromosome> pop = [] {
+        std::vector<Chromosome> v;
+        DeriveScratch scratch;
+        Geometry geometry;
+        for (std::uint64_t seed = 1; v.size() < 16; ++seed) {
+            Rng rng(seed);
+            Chromosome c;
+            const GenomeLimits limits{1000};
+            do {
+                if (!grow(tree(false), c, rng, limits)) break;
+                derive(tree(false), c, geometry, scratch);
+            } while (geometry.primitives.size() < 195);
+            if (geometry.primitives.size() >= 195 && geometry.primitives.size() <= 215) v.push_back(c);
+        }
+        return v;
+    }();
+    return pop;
+}
+
+void setCounters(benchmark::State& state, std::uint64_t primitives, std::uint64_t covered, std::uint64_t rows) {
+    state.SetItemsProcessed(state.iterations());
+    state.counters["evals/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["primitives/eval"] = benchmark::Counter(double(primitives), benchmark::Counter::kAvgIterations);
+    state.counters["pixels/eval"] = benchmark::Counter(double(covered), benchmark::Counter::kAvgIterations);
+    state.counters["rows/eval"] = benchmark::Counter(double(rows), benchmark::Counter::kAvgIterations);
+}
+
+void scoreOnly(benchmark::State& state, bool cylinderLeaves) {
+    const Grammar& g = tree(cylinderLeaves);
+    const Camera camera = paperCamera();
+    const VolumeFitnessSettings settings;
+    std::vector<Geometry> models(trees().size());
+    DeriveScratch scratch;
+    for (std::size_t k = 0; k < models.size(); ++k) derive(g, trees()[k], models[k], scratch);
+    SilhouetteRaster raster(camera);
+    for (const Geometry& m : models) raster.add(m), raster.score(mickey());  // warm
+    std::uint64_t primitives = 0, covered = 0, rows = 0;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        raster.add(models[i]);
+        const SilhouetteCounts counts = raster.score(mickey());
+        const double f = imageFitness(settings, counts, mickey().hitCount, trees()[i].genes);
+        benchmark::DoNotOptimize(f);
+        primitives += models[i].primitives.size();
+        covered += counts.covered;
+        rows += counts.rows;
+        if (++i == models.size()) i = 0;
+    }
+    setCounters(state, primitives, covered, rows);
+}
+
+void BM_ImageScore(benchmark::State& state) { scoreOnly(state, false); }
+void BM_ImageScoreCylinders(benchmark::State& state) { scoreOnly(state, true); }
+
+void BM_ImageDeriveScore(benchmark::State& state) {
+    const Camera camera = paperCamera();
+    const ImageScorer scorer(tree(false), camera, mickey(), VolumeFitnessSettings{});
+    ImageScorer::Workspace ws(camera);
+    SilhouetteCounts counts;
+    for (const Chromosome& c : trees()) scorer.fitness(c, ws, &counts);  // warm
+    std::uint64_t primitives = 0, covered = 0, rows = 0;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const double f = scorer.fitness(trees()[i], ws, &counts);
+        benchmark::DoNotOptimize(f);
+        primitives += ws.geometry.primitives.size();
+        covered += counts.covered;
+        rows += counts.rows;
+        if (++i == trees().size()) i = 0;
+    }
+    setCounters(state, primitives, covered, rows);
+}
+
+/// A full ternary tree of `genes` genes, built breadth first (every branch gets three children
+/// until the count is reached), parameters drawn from the priors with a fixed seed.
+Chromosome largeTree(std::uint32_t genes) {
+    const Grammar& g = tree(false);
+    Rng rng(2024);
+    Chromosome c;
+    plantRoot(g, c, rng);
+    std::uint16_t branch = 0;
+    while (g.rules[branch].name != "Branch") ++branch;
+    std::deque<std::uint32_t> open{0};
+    while (c.genes < genes && !open.empty()) {
+        const std::uint32_t parent = open.front();
+        open.pop_front();
+        const Rule& r = g.rules[c.rule(parent)];
+        for (std::uint32_t entry = 0; entry < r.childOffsets && c.genes < genes; ++entry)
+            open.push_back(appendGene(g, c, branch, parent, entry, rng));
+    }
+    return c;
+}
+
+void BM_LargeTree(benchmark::State& state) {
+    const int part = int(state.range(0));
+    const Camera camera = paperCamera();
+    const ImageScorer scorer(tree(false), camera, mickey(), VolumeFitnessSettings{});
+    static const Chromosome c = largeTree(50000);
+    ImageScorer::Workspace ws(camera);
+    SilhouetteCounts counts;
+    scorer.fitness(c, ws, &counts);  // warm
+    std::uint64_t primitives = 0, covered = 0, rows = 0;
+    for (auto _ : state) {
+        if (part == 0) {
+            benchmark::DoNotOptimize(scorer.fitness(c, ws, &counts));
+        } else if (part == 1) {
+            derive(scorer.grammar(), c, ws.geometry, ws.derive);
+            benchmark::DoNotOptimize(ws.geometry.primitives.data());
+        } else {
+            ws.raster.add(ws.geometry);
+            counts = ws.raster.score(mickey());
+        }
+        primitives += ws.geometry.primitives.size();
+        covered += counts.covered;
+        rows += counts.rows;
+    }
+    setCounters(state, primitives, covered, rows);
+    state.counters["genes"] = double(c.genes);
+    state.SetLabel(part == 0 ? "derive + score" : part == 1 ? "derive only" : "score only");
+}
+
+BENCHMARK(BM_ImageScore);
+BENCHMARK(BM_ImageScoreCylinders);
+BENCHMARK(BM_ImageDeriveScore);
+BENCHMARK(BM_LargeTree)->ArgName("part")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,62 @@
+// ImageScorer: chromosome -> geometry -> silhouette through a camera -> pixel counts against
+// one ImageTarget -> fitness (image_fitness.hpp). A pure function of the chromosome; each thread
+// brings its own Workspace (derive scratch, geometry, raster).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "score/camera.hpp"
+#include "score/image_fitness.hpp"
+#include "score/image_target.hpp"
+#include "score/scorer.hpp"
+#include "score/silhouette_raster.hpp"
+
+namespace shapevo {
+
+class ImageScorer final : public Scorer {
+public:
+    struct Workspace : ScoreWorkspace {
+        explicit Workspace(const Camera& camera) : raster(camera) {}
+        SilhouetteRaster raster;
+    };
+
+    /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
+    /// against the camera; a mismatch here is a programming error: std::invalid_argument).
+    ImageScorer(const Grammar& g, const Camera& camera, const ImageTarget& target, const VolumeFitnessSettings& settings)
+        : grammar_(g), camera_(camera), target_(target), settings_(settings) {
+        if (target.width != camera.width() || target.height != camera.height())
+            throw std::invalid_argument("ImageScorer: the target's size differs from the camera's");
+    }
+
+    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<Workspace>(camera_); }
+    double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
+        return fitness(c, static_cast<Workspace&>(w), nullptr);
+    }
+    double fitness(const Chromosome& c, Workspace& w, SilhouetteCounts* countsOut) const {
+        derive(grammar_, c, w.geometry, w.derive);
+        w.raster.add(w.geometry);
+        const SilhouetteCounts counts = w.raster.score(target_);
+        if (countsOut) *countsOut = counts;
+        return imageFitness(settings_, counts, target_.hitCount, c.genes);
+    }
+    /// The chromosome's silhouette, one byte per pixel (rows from the top): 0 = empty, 1 = model.
+    void modelMask(const Chromosome& c, Workspace& w, std::vector<std::uint8_t>& mask) const;
+
+    const Camera& camera() const { return camera_; }
+    const ImageTarget& target() const { return target_; }
+    const Grammar& grammar() const override { return grammar_; }
+
+private:
+    const Grammar& grammar_;
+    Camera camera_;
+    const ImageTarget& target_;
+    VolumeFitnessSettings settings_;
+};
+
+/// The silhouette of `geometry` through `camera`, one byte per pixel (rows from the top):
+/// 0 = empty, 1 = model; `mask` is resized to width * height.
+void silhouetteMask(const Geometry& geometry, const Camera& camera, std::vector<std::uint8_t>& mask);
+
+}  // namespace shapevo

@@ -1,0 +1,151 @@
+// Silhouette outlines: the projected points whose convex hulls make up a primitive's silhouette.
+// This is the definition of "covered" for image targets; the rasterizer (silhouette_raster.hpp)
+// and the brute-force reference in the tests both start from these points.
+//
+// A primitive's silhouette is the union of the convex hulls of its pieces. Points are snapped
+// to fixed point, 1/256 pixel (FixedPoint), so everything after the snap is exact integer
+// arithmetic: a pixel (i, j) is covered when its centre (256 i + 128, 256 j + 128) lies in the
+// closed hull of a piece; a hull of zero area covers nothing.
+//  - Box: one piece, its 8 corners.
+//  - Cylinder, Cone: one piece, the vertices of the kRoundSides-gon prism / frustum (rings at
+//    u.y = -1 and +1, vertices at angles 2 pi k / kRoundSides from +x towards +z; the top ring
+//    has radius `taper`, clamped to [0, 1]), or the ring and the apex for a pointed cone (taper 0).
+//    Of a box's, cylinder's or cone's vertices only the silhouette vertices are kept: those
+//    where a face turned towards the eye (or the light) meets a face turned away; a face exactly
+//    edge-on counts as both. In exact arithmetic they span the same hull as all vertices; after
+//    rounding the hulls can differ only within rounding error of the outline. A primitive that is
+//    cut (below), reaches beyond the guard band, or is flat (a half extent of 0) keeps all of its
+//    vertices.
+//  - Sphere: one piece, 2 * kRoundSides points on the ellipsoid's contact curve (where the rays
+//    from the eye, or the parallel rays, graze it), evenly spaced in the ellipsoid's own unit
+//    sphere frame: a polygon inscribed in the exact outline (about 0.6 % less area). A sphere that
+//    is cut by the near plane / the ground, or that is flat (a half extent of 0), is drawn as its
+//    UV polyhedron instead: kRoundSides meridians, kRoundSides / 2 latitude bands.
+//  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
+// Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
+// whose vertices are its vertices in front plus the points where its edges cross the plane.
+// Guard band: points more than kGuardBand pixels beyond the picture's edges would overflow the
+// fixed-point range, so a piece reaching that far is clipped to the guard rectangle first (in
+// double precision); nothing inside the picture changes.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "geometry/primitive.hpp"
+#include "score/camera.hpp"
+
+namespace shapevo {
+
+struct FixedPoint {
+    std::int32_t x, y;  ///< pixel coordinates * kSubpixels
+    bool operator==(const FixedPoint&) const = default;
+};
+inline constexpr std::int64_t kSubpixels = 256;
+/// Pixel coordinates -> fixed point, rounded to nearest, halves up (|x|, |y| well below 2^23;
+/// exact: scaling by 256 and adding 0.5 round nothing in that range).
+inline FixedPoint snapToFixed(double x, double y) {
+    return {std::int32_t(std::floor(x * double(kSubpixels) + 0.5)), std::int32_t(std::floor(y * double(kSubpixels) + 0.5))};
+}
+inline constexpr double kGuardBand = 16384.0;
+inline constexpr int kSphereSides = 2 * kRoundSides;
+static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 32-bit masks");
+
+/// Points [first, first + count) of an Outline. The first rings * ringSize of them are `rings`
+/// rings of ringSize points each, in cyclic order around a convex polygon before snapping (a
+/// hint a hull algorithm may use; it must not rely on it); the rest come in no order.
+struct OutlinePiece {
+    std::uint32_t first = 0, count = 0;
+    std::uint16_t rings = 0, ringSize = 0;
+};
+
+struct Outline {
+    std::vector<FixedPoint> points;
+    std::vector<OutlinePiece> pieces;
+    void clear() {
+        points.clear();
+        pieces.clear();
+    }
+};
+
+/// Builds outlines for one camera; holds the unit shapes and scratch space (no allocation once warm).
+class OutlineBuilder {
+public:
+    explicit OutlineBuilder(const Camera& camera);
+    /// Append the pieces of p's silhouette to `out` (nothing for a primitive with non-finite
+    /// numbers or a Mesh primitive without its mesh).
+    void add(const Primitive& p, const std::vector<MeshShape>* meshes, Outline& out) {
+        if (prepare(p, meshes)) addPrepared(out);
+    }
+    /// The same in steps: prepare p (false: it draws nothing: numbers not finite, or a Mesh
+    /// primitive without its mesh; p and meshes must stay alive until addPrepared), then
+    /// optionally ask for its bound, then add its pieces.
+    bool prepare(const Primitive& p, const std::vector<MeshShape>* meshes);
+    /// Pixel centres the prepared primitive's outline can cover at most: columns x0..x1, rows
+    /// y0..y1, clamped to the picture (empty if x0 > x1 or y0 > y1): the projected corners of its
+    /// box u in [-1, 1]^3 with a margin of 1/64 pixel. False (no bound) if a corner is behind the
+    /// clip plane.
+    bool coverBound(int& x0, int& x1, int& y0, int& y1) const;
+    void addPrepared(Outline& out);
+    const Camera& camera() const { return camera_; }
+
+    struct Homogeneous {
+        double x, y, w, clip;  ///< homogeneous pixel coordinates and the signed clip distance
+    };
+    struct UnitShape {
+        std::vector<glm::dvec3> vertices;  ///< local (u) coordinates; rings first, then loose points
+        std::vector<std::uint16_t> edges;  ///< pairs of vertex indices
+        std::uint16_t rings = 0, ringSize = 0;
+    };
+
+    /// A ring of a box / prism / frustum: radius-1 corners (x, z) in cyclic order and the outward
+    /// normals (x, z) of the side faces between corners k and k + 1.
+    struct RingTable {
+        std::vector<glm::dvec2> corners, normals;
+        double apothem = 1.0;  ///< distance of the side faces from the axis
+        double reach = 1.0;    ///< largest distance of a corner from the axis
+    };
+
+private:
+    /// Local -> homogeneous map of one primitive: h = m * (u, 1).
+    struct LocalMap {
+        double m[4][4];  ///< rows: x, y, w, clip
+        Homogeneous apply(const glm::dvec3& u) const;
+    };
+    bool localMap(const Primitive& p, LocalMap& map) const;  ///< false if not finite
+    /// The eye in the primitive's local coordinates, homogeneous: (e, 1) for a perspective
+    /// camera, (e, 0) with e along the rays for parallel ones. False if the frame is degenerate.
+    bool localEye(const LocalMap& map, glm::dvec3& e, double& ew) const;
+    /// Silhouette vertices of a two-ring shape (bottom ring radius 1 at u.y = -1, top ring radius
+    /// topScale at u.y = 1; topScale 0: an apex), in loop order. False (nothing added) if the
+    /// shape reaches behind the clip plane or beyond the guard band, or the frame is degenerate.
+    bool addRingsFast(const LocalMap& map, const RingTable& table, double topScale, Outline& out);
+    void addConvex(const LocalMap& map, const UnitShape& shape, Outline& out);
+    void addSphere(const LocalMap& map, const Primitive& p, Outline& out);
+    void addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out);
+    /// Points with clip >= 0, already cut: project, hull, clip to the guard band, snap, append.
+    void addClippedPiece(const Homogeneous* h, std::size_t n, bool convexCycle, Outline& out);
+    bool insideGuard(double x, double y) const {
+        return x >= -kGuardBand && x <= width_ + kGuardBand && y >= -kGuardBand && y <= height_ + kGuardBand;
+    }
+
+    const Camera& camera_;
+    double width_, height_;
+    LocalMap map_;                              ///< of the prepared primitive
+    const Primitive* prepared_ = nullptr;
+    const std::vector<MeshShape>* meshes_ = nullptr;
+    UnitShape box_, prism_, pyramid_, uvSphere_;
+    RingTable squareRing_, roundRing_;
+    UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
+    std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
+    std::vector<Homogeneous> h_, cut_;
+    std::vector<glm::dvec2> xy_, hull_, clipped_;
+    std::vector<FixedPoint> snapped_;   ///< mesh vertices, snapped once per primitive
+    std::vector<glm::dvec3> loop_;      ///< silhouette vertices (u) in loop order
+    std::vector<std::uint8_t> fast_;    ///< mesh vertices: in front and inside the guard band
+};
+
+}  // namespace shapevo

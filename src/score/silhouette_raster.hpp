@@ -1,0 +1,78 @@
+// SilhouetteRaster: draws a model's silhouette into bit rows (one bit per pixel) and counts it
+// against an image target. Each primitive becomes convex pieces (silhouette_outline.hpp); each
+// piece's exact hull (fixed_hull.hpp) is filled row by row: on pixel row j the covered pixels are
+// the integers i between the bounds of the hull's left and right edges at y = 256 j + 128,
+// computed with exact integer steps (a quotient and remainder per edge, no rounding), then OR-ed
+// in as word masks. So a pixel is set exactly when its centre lies in the closed hull, the same
+// answer a point-in-polygon test gives pixel by pixel.
+//
+// A primitive is skipped before any of that when the projected corners of its box reach no pixel
+// centre, or only pixels already drawn (the union would not change).
+// Bookkeeping: the rectangle of rows and words written since the last count, so counting and
+// clearing touch only that rectangle.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/primitive.hpp"
+#include "score/camera.hpp"
+#include "score/fixed_hull.hpp"
+#include "score/image_target.hpp"
+#include "score/silhouette_outline.hpp"
+
+namespace shapevo {
+
+struct SilhouetteCounts {
+    std::uint64_t covered = 0;  ///< pixels the model covers
+    std::uint64_t hit = 0;      ///< covered pixels that are hit pixels of the target
+    std::uint64_t avoided = 0;  ///< covered pixels that are avoid pixels of the target
+    std::uint64_t rows = 0;     ///< pixel rows convex pieces were drawn into (a work measure)
+    bool operator==(const SilhouetteCounts&) const = default;
+};
+
+class SilhouetteRaster {
+public:
+    explicit SilhouetteRaster(const Camera& camera);
+    SilhouetteRaster(const SilhouetteRaster&) = delete;  // holds a reference into itself (the outline builder's camera)
+    SilhouetteRaster& operator=(const SilhouetteRaster&) = delete;
+
+    /// Draw one primitive (`meshes`: the grammar's meshes, for Mesh primitives; may be null).
+    void add(const Primitive& p, const std::vector<MeshShape>* meshes);
+    void add(const Geometry& g) {
+        for (const Primitive& p : g.primitives) add(p, g.meshes);
+    }
+    /// Draw one convex polygon of positive area given as its hull (counter-clockwise, no repeated
+    /// points, every turn left or straight; fixed point).
+    void fillConvex(std::span<const FixedPoint> hull);
+
+    /// Count what was drawn against `target` (same size as the camera's picture) and clear.
+    SilhouetteCounts score(const ImageTarget& target);
+    /// The drawing as one byte per pixel, rows from the top: 0 = empty, 1 = model. `mask` is
+    /// resized to width * height. Does not clear.
+    void fillMask(std::vector<std::uint8_t>& mask) const;
+    void clear();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int wordsPerRow() const { return words_; }
+    /// Bit rows of the current drawing (row y starts at word y * wordsPerRow(); bit i = pixel x).
+    const std::vector<std::uint64_t>& bits() const { return bits_; }
+
+private:
+    void markRow(int y, int lo, int hi);
+    bool allSet(int x0, int x1, int y0, int y1) const;  ///< every pixel of the rectangle drawn?
+    void forget();  ///< mark everything clear (after the words were zeroed)
+
+    int width_, height_, words_;
+    const Camera camera_;
+    OutlineBuilder outline_;
+    Outline pieces_;
+    FixedHull hull_;
+    std::vector<std::int32_t> left_, right_;  ///< per row: covered pixel bounds of the piece being drawn
+    std::vector<std::uint64_t> bits_;
+    int yMin_, yMax_, wordMin_, wordMax_;  ///< the rectangle of rows and words written (empty: min > max)
+    std::uint64_t rows_ = 0;
+};
+
+}  // namespace shapevo

@@ -1,0 +1,63 @@
+// Test helper: write a PNG of any colour type, bit depth and interlacing with libpng directly
+// (independent of io/png_image.cpp), and CRC-32 for hand-made chunks.
+#pragma once
+#include <png.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shapevo::test {
+
+struct PngSpec {
+    int width = 0, height = 0;
+    int bitDepth = 8;
+    int colourType = PNG_COLOR_TYPE_GRAY;
+    bool interlaced = false;
+    std::vector<std::uint8_t> bytes;       ///< packed rows as libpng expects them (16-bit samples big-endian)
+    std::vector<png_color> palette;        ///< PNG_COLOR_TYPE_PALETTE
+    std::vector<std::uint8_t> paletteAlpha;  ///< tRNS for palettes
+};
+
+inline void writeTestPng(const std::string& path, const PngSpec& s) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw std::runtime_error("cannot write " + path);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, png_uint_32(s.width), png_uint_32(s.height), s.bitDepth, s.colourType,
+                 s.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (!s.palette.empty()) png_set_PLTE(png, info, s.palette.data(), int(s.palette.size()));
+    if (!s.paletteAlpha.empty()) png_set_tRNS(png, info, s.paletteAlpha.data(), int(s.paletteAlpha.size()), nullptr);
+    png_write_info(png, info);
+    const std::size_t stride = s.bytes.size() / std::size_t(s.height);
+    std::vector<png_bytep> rows;
+    for (int y = 0; y < s.height; ++y) rows.push_back(const_cast<png_bytep>(s.bytes.data() + std::size_t(y) * stride));
+    png_write_image(png, rows.data());
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+}
+
+inline std::uint32_t crc32(const std::string& bytes) {
+    std::uint32_t c = 0xffffffffu;
+    for (unsigned char b : bytes) {
+        c ^= b;
+        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xffffffffu;
+}
+
+inline std::string bigEndian(std::uint32_t v) {
+    return {char(v >> 24), char((v >> 16) & 0xff), char((v >> 8) & 0xff), char(v & 0xff)};
+}
+
+/// A PNG signature and an IHDR chunk (valid CRC) with the given size, and nothing else.
+inline std::string pngHeaderOnly(std::uint32_t width, std::uint32_t height) {
+    const std::string body = "IHDR" + bigEndian(width) + bigEndian(height) + std::string("\x08\x00\x00\x00\x00", 5);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + bigEndian(13) + body + bigEndian(crc32(body));
+}
+
+}  // namespace shapevo::test
