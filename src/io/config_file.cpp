@@ -88,6 +88,18 @@ public:
         }
         return true;
     }
+    bool vec2(const toml::table* t, const std::string& sec, const std::string& k, glm::dvec2& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return false;
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 2) fail(*n, sec + "." + k + " must be an array of 2 numbers");
+        for (int i = 0; i < 2; ++i) {
+            const auto& e = (*a)[std::size_t(i)];
+            if (auto v = e.value<double>()) out[i] = *v;
+            else fail(e, sec + "." + k + " must be an array of 2 numbers");
+        }
+        return true;
+    }
     /// Every key present must have been asked for.
     void rejectUnknown() const {
         for (const auto& [k, v] : root_) {
@@ -180,6 +192,31 @@ void readSearch(Reader& rd, RunSettings& r) {
     }
 }
 
+/// [camera]: projection = "perspective" | "orthographic" | "shadow" and its settings; checked by
+/// Camera::compile when the scene is loaded.
+void readCamera(Reader& rd, const toml::table* t, CameraSpec& c, const std::string& path) {
+    const std::string sec = "camera";
+    std::string projection = "perspective";
+    rd.string(t, sec, "projection", projection);
+    if (projection == "perspective") c.projection = Projection::Perspective;
+    else if (projection == "orthographic") c.projection = Projection::Orthographic;
+    else if (projection == "shadow") c.projection = Projection::Shadow;
+    else rd.fail(*t->get("projection"), "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + projection + "\"");
+    rd.number(t, sec, "width", c.width, 1, 16384);
+    rd.number(t, sec, "height", c.height, 1, 16384);
+    rd.vec3(t, sec, "eye", c.eye);
+    rd.vec3(t, sec, "look_at", c.lookAt);
+    rd.vec3(t, sec, "up", c.up);
+    rd.number(t, sec, "fov_degrees", c.fovDegrees, -1e9, 1e9);
+    rd.number(t, sec, "view_height", c.viewHeight, -1e12, 1e12);
+    rd.number(t, sec, "near", c.near, -1e12, 1e12);
+    rd.vec3(t, sec, "light", c.light);
+    rd.number(t, sec, "ground_y", c.groundY, -1e12, 1e12);
+    rd.vec2(t, sec, "ground_min", c.groundMin);
+    rd.vec2(t, sec, "ground_max", c.groundMax);
+    Camera::compile(c, path, sec);  // located errors now, not when the run starts
+}
+
 }  // namespace
 
 RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
@@ -226,15 +263,34 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     const toml::table* target = rd.section("target");
     for (const auto& f : rd.strings(target, "target", "fill")) r.targets.push_back({resolve(f), false});
     for (const auto& f : rd.strings(target, "target", "avoid")) r.targets.push_back({resolve(f), true});
-    if (r.targets.empty() || r.targets.front().avoid)
-        throw InputError(path, "", "missing [target] fill = \"FILE.vdb\" (at least one fill target)");
     GridOverride grid;
     const bool hasMin = rd.vec3(target, "target", "grid_min", grid.min);
     const bool hasMax = rd.vec3(target, "target", "grid_max", grid.max);
     rd.number(target, "target", "voxel_size", grid.voxelSize, 1e-6, 1e6);
-    if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
-        throw InputError(path, "[target]", "grid_min, grid_max and voxel_size must be given together");
-    if (hasMin) r.grid = grid;
+    std::string image;
+    rd.string(target, "target", "image", image);
+    ImageSceneSettings pixels;
+    rd.number(target, "target", "hit_min", pixels.rule.hitMin, 0, 255);
+    rd.number(target, "target", "hit_max", pixels.rule.hitMax, 0, 255);
+    rd.number(target, "target", "avoid_min", pixels.rule.avoidMin, 0, 255);
+    rd.number(target, "target", "avoid_max", pixels.rule.avoidMax, 0, 255);
+    rd.number(target, "target", "alpha_threshold", pixels.rule.alphaThreshold, 0, 256);
+    const toml::table* camera = rd.section("camera");
+    if (!image.empty()) {
+        if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))
+            throw InputError(path, "[target]", "an image target cannot be combined with fill/avoid volumes or a grid");
+        pixels.png = resolve(image);
+        pixels.rule.check(path, "target");
+        readCamera(rd, camera, pixels.camera, path);
+        r.image = pixels;
+    } else {
+        if (camera) throw InputError(path, "[camera]", "a camera is only used with an image target ([target] image = \"FILE.png\")");
+        if (r.targets.empty() || r.targets.front().avoid)
+            throw InputError(path, "", "missing [target] fill = \"FILE.vdb\" (at least one fill target) or image = \"FILE.png\"");
+        if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
+            throw InputError(path, "[target]", "grid_min, grid_max and voxel_size must be given together");
+        if (hasMin) r.grid = grid;
+    }
 
     const toml::table* score = rd.section("score");
     std::string form = "smootherstep";

@@ -3,6 +3,8 @@
 
 #include "io/input_error.hpp"
 #include "io/model_volume.hpp"
+#include "io/overlay_image.hpp"
+#include "score/image_scorer.hpp"
 #include "io/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 
@@ -12,6 +14,22 @@ Scene::~Scene() = default;
 
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     std::unique_ptr<Scene> scene(new Scene);
+    if (s.image) {
+        scene->camera_ = Camera::compile(s.image->camera, s.configPath);
+        scene->image_ = loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height());
+        const ImageTarget& t = *scene->image_;
+        auto scorer = std::make_unique<ImageScorer>(g, *scene->camera_, t, s.fitness);
+        scene->imageScorer_ = scorer.get();
+        scene->scorer_ = std::move(scorer);
+        scene->hash_ = t.hash;
+        scene->primaryFile_ = s.image->png;
+        const char* kind = s.image->camera.projection == Projection::Shadow ? "shadow"
+                           : s.image->camera.projection == Projection::Orthographic ? "orthographic silhouette"
+                                                                                      : "perspective silhouette";
+        scene->description_ = s.image->png + " (" + std::to_string(t.width) + "x" + std::to_string(t.height) + " pixels, " +
+                              std::to_string(t.hitCount) + " to cover, " + kind + ")";
+        return scene;
+    }
     scene->volume_ = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
     const VolumeTarget& t = *scene->volume_;
     auto scorer = std::make_unique<VolumeScorer>(g, t, s.fitness);
@@ -24,7 +42,26 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     return scene;
 }
 
+void Scene::writeOverlay(const Chromosome& best, const std::string& path, double* iou) const {
+    ImageScorer::Workspace ws(*camera_);
+    SilhouetteCounts counts;
+    imageScorer_->fitness(best, ws, &counts);
+    if (iou) *iou = silhouetteIoU(counts, image_->hitCount);
+    std::vector<std::uint8_t> model, target(std::size_t(image_->width) * std::size_t(image_->height));
+    imageScorer_->modelMask(best, ws, model);
+    for (int y = 0; y < image_->height; ++y)
+        for (int x = 0; x < image_->width; ++x)
+            target[std::size_t(y) * std::size_t(image_->width) + std::size_t(x)] = image_->isHit(x, y) ? 1 : image_->isAvoid(x, y) ? 2 : 0;
+    writeOverlayPng(path, image_->width, image_->height, target.data(), model.data());
+}
+
 void Scene::reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const {
+    if (image_) {
+        double iou = 0;
+        writeOverlay(best, folder + "/best-overlay.png", &iou);
+        summary.silhouetteIoU = iou;
+        return;
+    }
     VolumeScorer::Workspace ws(volume_->grid);
     VoxelCounts counts;
     volumeScorer_->fitness(best, ws, &counts);
@@ -33,6 +70,11 @@ void Scene::reportBest(const Chromosome& best, const std::string& folder, RunSum
 }
 
 void Scene::exportBest(const Chromosome& best, const std::string& format, const std::string& path) const {
+    if (image_) {
+        if (format != "png") throw InputError(path, "", "an image target's run exports obj, ply, glb or png, not " + format);
+        writeOverlay(best, path, nullptr);
+        return;
+    }
     if (format != "vdb") throw InputError(path, "", "a volume target's run exports obj, ply, glb or vdb, not " + format);
     VolumeScorer::Workspace ws(volume_->grid);
     volumeScorer_->fitness(best, ws, nullptr);

@@ -1,5 +1,5 @@
 // Scene: what a run scores against, loaded once from its settings: a volume (VDB fill/avoid
-// grids baked into bit rows) or, later in this file's life, an image seen through a camera. It
+// grids baked into bit rows) or an image (a PNG target seen through a camera). It
 // owns the target and the scorer, says what it is in the log, and writes the target-specific
 // outputs of the best model (IoU in summary.json, the model's voxels).
 #pragma once
@@ -10,11 +10,14 @@
 #include "io/run_report.hpp"
 #include "run/settings.hpp"
 #include "score/scorer.hpp"
+#include "score/camera.hpp"
+#include "score/image_target.hpp"
 #include "score/volume_target.hpp"
 
 namespace shapevo {
 
 class VolumeScorer;
+class ImageScorer;
 
 class Scene {
 public:
@@ -39,9 +42,14 @@ public:
 
 private:
     Scene() = default;
+    void writeOverlay(const Chromosome& best, const std::string& path, double* iou) const;
+
     std::optional<VolumeTarget> volume_;
+    std::optional<ImageTarget> image_;
+    std::optional<Camera> camera_;
     std::unique_ptr<Scorer> scorer_;
     const VolumeScorer* volumeScorer_ = nullptr;
+    const ImageScorer* imageScorer_ = nullptr;
     std::uint64_t hash_ = 0;
     std::string description_, primaryFile_;
 };

@@ -8,6 +8,8 @@
 
 #include "genome/chromosome.hpp"
 #include "io/vdb_target_file.hpp"
+#include "score/camera.hpp"
+#include "score/image_target.hpp"
 #include "score/volume_fitness.hpp"
 #include "search/search_settings.hpp"
 
@@ -37,6 +39,13 @@ struct CheckpointSettings {
     int keep = 3;                  ///< newest published checkpoints to keep
 };
 
+/// An image target: a PNG whose pixels are classified by `rule`, seen through `camera`.
+struct ImageSceneSettings {
+    std::string png;
+    PixelRule rule;
+    CameraSpec camera;
+};
+
 struct RunSettings {
     std::string configPath;   ///< the file it came from
     std::string configText;   ///< its text, with --set overrides applied, as stored in outputs
@@ -48,8 +57,9 @@ struct RunSettings {
     std::optional<double> targetFitness;  ///< stop when the best fitness of any island reaches it
 
     std::string grammarPath;
-    std::vector<TargetVolumeSpec> targets;
+    std::vector<TargetVolumeSpec> targets;   ///< volume targets (empty for an image target)
     std::optional<GridOverride> grid;
+    std::optional<ImageSceneSettings> image;  ///< image target instead of volumes
 
     VolumeFitnessSettings fitness;
     GenomeLimits limits;
