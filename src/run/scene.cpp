@@ -1,6 +1,7 @@
 // Scene: target loading and the best model's target-specific report.
 #include "run/scene.hpp"
 
+#include "genome/operators.hpp"
 #include "io/input_error.hpp"
 #include "io/model_volume.hpp"
 #include "io/overlay_image.hpp"
@@ -11,6 +12,32 @@
 namespace shapevo {
 
 Scene::~Scene() = default;
+
+namespace {
+/// A camera that sees nothing makes every fitness equal and the search blind: refuse it. Random
+/// models of the run's initial sizes (a fixed seed, so the check is repeatable) must cover at
+/// least one pixel between them.
+void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& scorer) {
+    constexpr int kModels = 64;
+    Rng rng(12345);
+    ImageScorer::Workspace ws(scorer.camera());
+    const std::uint32_t lo = std::min(s.ga.initialGenesMin, s.limits.maxGenes);
+    const std::uint32_t hi = std::max(lo, std::min(s.ga.initialGenesMax, s.limits.maxGenes));
+    for (int i = 0; i < kModels; ++i) {
+        Chromosome c;
+        const std::uint32_t length = lo + std::uint32_t(rng.below(hi - lo + 1));
+        while (c.genes < length && grow(g, c, rng, s.limits)) {
+        }
+        SilhouetteCounts counts;
+        scorer.fitness(c, ws, &counts);
+        if (counts.covered > 0) return;
+    }
+    throw InputError(s.configPath, "[camera]",
+                     "sees nothing: none of " + std::to_string(kModels) + " random models of " + g.path +
+                         " covers a single pixel of the picture; point the camera (or the shadow's ground rectangle) at "
+                         "where the grammar builds");
+}
+}  // namespace
 
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     std::unique_ptr<Scene> scene(new Scene);
@@ -26,6 +53,7 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
         const char* kind = s.image->camera.projection == Projection::Shadow ? "shadow"
                            : s.image->camera.projection == Projection::Orthographic ? "orthographic silhouette"
                                                                                       : "perspective silhouette";
+        requireVisible(s, g, *scene->imageScorer_);
         scene->description_ = s.image->png + " (" + std::to_string(t.width) + "x" + std::to_string(t.height) + " pixels, " +
                               std::to_string(t.hitCount) + " to cover, " + kind + ")";
         return scene;
