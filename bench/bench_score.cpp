@@ -113,11 +113,11 @@ void BM_ScoreOnly(benchmark::State& state) {
     DeriveScratch scratch;
     for (std::size_t k = 0; k < pop.size(); ++k) derive(spaceship(), pop[k], models[k], scratch);
     Voxelizer voxelizer(target.grid);
-    for (const Geometry& m : models) voxelizer.score(m.primitives, target);  // warm
+    for (const Geometry& m : models) voxelizer.score(m, target);  // warm
     std::uint64_t rows = 0;
     std::size_t i = 0;
     for (auto _ : state) {
-        const VoxelCounts counts = voxelizer.score(models[i].primitives, target);
+        const VoxelCounts counts = voxelizer.score(models[i], target);
         benchmark::DoNotOptimize(counts);
         rows += counts.rows;
         if (++i == models.size()) i = 0;
@@ -161,7 +161,9 @@ void BM_RandomBoxes(benchmark::State& state) {
     const VolumeTarget& target = reachableTarget();
     const GridSpec& grid = target.grid;
     Rng rng(2024);
-    std::vector<Primitive> boxes(20);
+    Geometry geometry;
+    std::vector<Primitive>& boxes = geometry.primitives;
+    boxes.resize(20);
     const glm::dvec3 extent(grid.nx * grid.voxelSize, grid.ny * grid.voxelSize, grid.nz * grid.voxelSize);
     for (Primitive& p : boxes) {
         p.axes = randomRotation(rng);
@@ -172,10 +174,10 @@ void BM_RandomBoxes(benchmark::State& state) {
         }
     }
     Voxelizer voxelizer(grid);
-    voxelizer.score(boxes, target);  // warm
+    voxelizer.score(geometry, target);  // warm
     std::uint64_t rows = 0;
     for (auto _ : state) {
-        const VoxelCounts counts = voxelizer.score(boxes, target);
+        const VoxelCounts counts = voxelizer.score(geometry, target);
         benchmark::DoNotOptimize(counts);
         rows += counts.rows;
     }

@@ -26,7 +26,7 @@ public:
     }
     double fitness(const Chromosome& c, Workspace& w, VoxelCounts* countsOut) const {
         derive(grammar_, c, w.geometry, w.derive);
-        const VoxelCounts counts = w.voxelizer.score(w.geometry.primitives, target_);
+        const VoxelCounts counts = w.voxelizer.score(w.geometry, target_);
         if (countsOut) *countsOut = counts;
         return volumeFitness(settings_, counts, target_.fillCount, c.genes);
     }

@@ -6,6 +6,9 @@
 #include <cmath>
 
 #include "score/box_rows.hpp"
+#include "score/cone_rows.hpp"
+#include "score/cylinder_rows.hpp"
+#include "score/sphere_rows.hpp"
 
 namespace shapevo {
 
@@ -76,22 +79,82 @@ void Voxelizer::addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
     if (lo <= hi) markRows(z, y, y, lo, hi);
 }
 
-void Voxelizer::add(const Primitive& p, VoxelCounts& counts) {
-    const BoxFrame b = BoxFrame::from(p);
-    if (!b.finite()) return;
+bool Voxelizer::indexBounds(const double c[3], const double reach[3], long first[3], long last[3]) const {
     const long n[3] = {grid_.nx, grid_.ny, grid_.nz};
-    long first[3], last[3];
     for (int j = 0; j < 3; ++j) {
-        const double reach = b.reach(j);
-        const double t0 = (b.c[j] - reach - grid_.origin[j]) / grid_.voxelSize - 0.5;
-        const double t1 = (b.c[j] + reach - grid_.origin[j]) / grid_.voxelSize - 0.5;
+        const double t0 = (c[j] - reach[j] - grid_.origin[j]) / grid_.voxelSize - 0.5;
+        const double t1 = (c[j] + reach[j] - grid_.origin[j]) / grid_.voxelSize - 0.5;
         // one voxel of padding: the exact per-row test decides, the bounds only limit the work;
-        // clamped as doubles first, so a box far away cannot overflow the conversion
+        // clamped as doubles first, so a primitive far away cannot overflow the conversion
         const double lo = std::max(std::floor(t0) - 1.0, double(-n[j])), hi = std::min(std::ceil(t1) + 1.0, double(2 * n[j] - 1));
-        if (!(lo <= hi)) return;  // outside the halo (or NaN)
+        if (!(lo <= hi)) return false;  // outside the halo (or NaN)
         first[j] = long(lo);
         last[j] = long(hi);
     }
+    return true;
+}
+
+void Voxelizer::add(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts) {
+    switch (p.kind) {
+    case PrimitiveKind::Box: addBox(p, counts); return;
+    case PrimitiveKind::Cylinder: addRound(CylinderSolid::from(p), counts); return;
+    case PrimitiveKind::Cone: addRound(ConeSolid::from(p), counts); return;
+    case PrimitiveKind::Sphere: addRound(SphereSolid::from(p), counts); return;
+    case PrimitiveKind::Mesh:
+        if (meshes && p.mesh < meshes->size()) addMesh(p, (*meshes)[p.mesh], counts);
+        return;
+    }
+}
+
+template <class Solid>
+void Voxelizer::addRound(const Solid& s, VoxelCounts& counts) {
+    if (!s.valid()) return;
+    const double reach[3] = {s.reach(0), s.reach(1), s.reach(2)};
+    long first[3], last[3];
+    if (!indexBounds(s.f.box.c, reach, first, last)) return;
+    for (long z = first[2]; z <= last[2]; ++z) {
+        const double cz = grid_.centre(2, z);
+        for (long y = first[1]; y <= last[1]; ++y) {
+            ++counts.rows;
+            long lo, hi;
+            if (chordInterval(s.chord(grid_.centre(1, y), cz), s.cx(), grid_, first[0], last[0], lo, hi))
+                addRow(y, z, lo, hi, counts);
+        }
+    }
+}
+
+void Voxelizer::addMesh(const Primitive& p, const MeshShape& shape, VoxelCounts& counts) {
+    if (!mesh_.place(p, shape)) return;
+    double c[3], reach[3];
+    for (int j = 0; j < 3; ++j) {
+        c[j] = 0.5 * (mesh_.lo(j) + mesh_.hi(j));
+        reach[j] = 0.5 * (mesh_.hi(j) - mesh_.lo(j));
+    }
+    long first[3], last[3];
+    if (!indexBounds(c, reach, first, last)) return;
+    counts.rows += std::uint64_t(last[1] - first[1] + 1) * std::uint64_t(last[2] - first[2] + 1);
+    crossings_.clear();
+    mesh_.collectCrossings(grid_, first[1], last[1], first[2], last[2], crossings_);
+    std::sort(crossings_.begin(), crossings_.end());
+    // Runs may start before a row's first crossing only if it crosses an odd number of
+    // triangles (never for a closed mesh); the whole halo keeps even that case exact.
+    const long xFirst = -long(grid_.nx), xLast = 2 * long(grid_.nx) - 1;
+    const std::uint32_t ny = std::uint32_t(last[1] - first[1] + 1);
+    for (std::size_t b = 0, e; b < crossings_.size(); b = e) {
+        const std::uint32_t row = crossings_[b].row;
+        for (e = b + 1; e < crossings_.size() && crossings_[e].row == row;) ++e;
+        const long y = first[1] + long(row % ny), z = first[2] + long(row / ny);
+        rowRuns(&crossings_[b], e - b, grid_, xFirst, xLast, [&](long lo, long hi) { addRow(y, z, lo, hi, counts); });
+    }
+}
+
+void Voxelizer::addBox(const Primitive& p, VoxelCounts& counts) {
+    const BoxFrame b = BoxFrame::from(p);
+    if (!b.finite()) return;
+    const long n[3] = {grid_.nx, grid_.ny, grid_.nz};
+    const double reach[3] = {b.reach(0), b.reach(1), b.reach(2)};
+    long first[3], last[3];
+    if (!indexBounds(b.c, reach, first, last)) return;
     if (axisAligned(b)) {
         // Each slab depends on one grid axis only (the other products are exact zeros, and
         // v + 0 == v), so the covered voxels are a box of index ranges, one per axis.
@@ -163,9 +226,9 @@ void countAndClear(std::uint64_t* occ, std::uint64_t* ovl, const std::uint64_t* 
 }
 }  // namespace
 
-VoxelCounts Voxelizer::score(const std::vector<Primitive>& primitives, const VolumeTarget& target) {
+VoxelCounts Voxelizer::score(const Geometry& geometry, const VolumeTarget& target) {
     VoxelCounts counts;
-    for (const Primitive& p : primitives) add(p, counts);
+    for (const Primitive& p : geometry.primitives) add(p, geometry.meshes, counts);
     const std::size_t W = std::size_t(words_), ny = std::size_t(grid_.ny);
     // Count and clear in one sweep over each slice's written rows (contiguous words).
     for (std::uint32_t z : slices_) {

@@ -1,6 +1,9 @@
 // Voxelizer: turns a model's primitives into bit rows over the target grid and counts them
 // against the target. For each voxel row a primitive crosses, the covered x-interval is computed
-// directly (box_rows.hpp) and OR-ed in as word masks; a voxel covered twice sets its overlap bit.
+// directly and OR-ed in as word masks; a voxel covered twice sets its overlap bit. Each kind's
+// inside test and row intervals live in their own header: box_rows.hpp, cylinder_rows.hpp,
+// cone_rows.hpp, sphere_rows.hpp (chord_rows.hpp for what the round kinds share) and
+// mesh_rows.hpp (runs between the sorted crossings of a row with the mesh's triangles).
 // Voxel centres outside the grid (within a halo of one grid extent on every side) count as
 // "outside", once per primitive that covers them.
 //
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "geometry/primitive.hpp"
+#include "score/mesh_rows.hpp"
 #include "score/volume_target.hpp"
 
 namespace shapevo {
@@ -28,16 +32,25 @@ struct VoxelCounts {
 class Voxelizer {
 public:
     explicit Voxelizer(const GridSpec& grid);
-    /// Voxelize all primitives and count them against `target` (same grid); leaves the
-    /// voxelizer empty for the next model.
-    VoxelCounts score(const std::vector<Primitive>& primitives, const VolumeTarget& target);
+    /// Voxelize all primitives of `geometry` and count them against `target` (same grid);
+    /// leaves the voxelizer empty for the next model.
+    VoxelCounts score(const Geometry& geometry, const VolumeTarget& target);
     /// Voxelize one primitive without counting; `occupancy()` holds the bit rows until clear().
-    void add(const Primitive& p, VoxelCounts& counts);
+    /// A Mesh primitive finds its mesh in `meshes` (it covers nothing if that is missing).
+    void add(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts);
     const std::vector<std::uint64_t>& occupancy() const { return occupied_; }
     void clear();
     const GridSpec& grid() const { return grid_; }
 
 private:
+    void addBox(const Primitive& p, VoxelCounts& counts);
+    /// Cylinder, cone or sphere: one chord per row (chord_rows.hpp).
+    template <class Solid>
+    void addRound(const Solid& s, VoxelCounts& counts);
+    void addMesh(const Primitive& p, const MeshShape& shape, VoxelCounts& counts);
+    /// Index ranges [first, last] per axis of the voxels within `reach` of `c` (plus one voxel of
+    /// padding), clamped to the halo; false if that is empty (or NaN).
+    bool indexBounds(const double c[3], const double reach[3], long first[3], long last[3]) const;
     /// Cover [lo, hi] of row (y, z), counting what falls outside the grid.
     void addRow(long y, long z, long lo, long hi, VoxelCounts& counts);
     /// OR the same x-interval [lo, hi] (inside the grid) into rows y0..y1 of slice z.
@@ -48,6 +61,8 @@ private:
     std::vector<std::uint64_t> occupied_, overlap_;
     std::vector<std::int32_t> yMin_, yMax_;  ///< per z slice: written rows, yMin > yMax if none
     std::vector<std::uint32_t> slices_;      ///< z slices with rows written, in first-touch order
+    MeshSolid mesh_;                         ///< the mesh being voxelized (its vertex buffer is reused)
+    std::vector<RowCrossing> crossings_;     ///< its row crossings (reused)
 };
 
 }  // namespace shapevo

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "../score/random_primitives.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
@@ -63,6 +64,32 @@ TEST(NoAllocation, DeriveScoreAndOperatorsAllocateNothingOnceWarm) {
     for (int r = 0; r < 200; ++r) round();
     EXPECT_EQ(gAllocations.load() - before, 0) << "allocations in 200 rounds of 16 evaluations and operators";
     EXPECT_NE(sink, 0.0);
+}
+
+TEST(NoAllocation, VoxelizingEveryPrimitiveKindIncludingMeshesAllocatesNothingOnceWarm) {
+    GridSpec grid;
+    grid.origin = {-1.3, -0.7, 0.25};
+    grid.voxelSize = 0.05;
+    grid.nx = 100;
+    grid.ny = 60;
+    grid.nz = 50;
+    Rng rng(23);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
+    std::vector<Geometry> models(50);
+    for (Geometry& m : models) {
+        m.meshes = &meshes;
+        for (int i = 0; i < 20; ++i)
+            m.primitives.push_back(test::randomPrimitive(PrimitiveKind(rng.below(kPrimitiveKinds)), grid, rng, 2));
+    }
+    Voxelizer vox(grid);
+    std::uint64_t sink = 0;
+    for (const Geometry& m : models) sink += vox.score(m, target).occupied;  // warm
+    const long before = gAllocations.load();
+    for (int r = 0; r < 5; ++r)
+        for (const Geometry& m : models) sink += vox.score(m, target).occupied;
+    EXPECT_EQ(gAllocations.load() - before, 0) << "allocations in 250 evaluations of 20 primitives of every kind";
+    EXPECT_NE(sink, 0u);
 }
 
 }  // namespace

@@ -14,6 +14,12 @@
 namespace shapevo {
 namespace {
 
+Geometry geometryOf(std::vector<Primitive> primitives) {
+    Geometry g;
+    g.primitives = std::move(primitives);
+    return g;
+}
+
 VolumeTarget randomTarget(const GridSpec& grid, Rng& rng) {
     VolumeTarget t;
     t.grid = grid;
@@ -117,7 +123,7 @@ TEST(VoxelizerExactness, MatchesBruteForceVoxelCentreTestOnAThousandRandomModels
         std::vector<Primitive> prims;
         const int n = 1 + int(rng.below(8));
         for (int i = 0; i < n; ++i) prims.push_back(randomBox(grid, rng));
-        VoxelCounts fast = vox.score(prims, target);
+        VoxelCounts fast = vox.score(geometryOf(prims), target);
         const VoxelCounts slow = bruteForce(prims, target);
         fast.rows = 0;
         ASSERT_EQ(fast.occupied, slow.occupied) << "model " << model;
@@ -165,7 +171,7 @@ TEST(VoxelizerExactness, FarHugeNegativeAndNearlyPerpendicularBoxesAreSafeAndExa
         models.push_back({tilted});
     }
     for (std::size_t m = 0; m < models.size(); ++m) {
-        VoxelCounts fast = vox.score(models[m], target);
+        VoxelCounts fast = vox.score(geometryOf(models[m]), target);
         const VoxelCounts slow = bruteForce(models[m], target);
         fast.rows = 0;
         EXPECT_EQ(fast, slow) << "model " << m;
@@ -185,12 +191,12 @@ TEST(VoxelizerExactness, AxisAlignedUnitCubeCoversExactlyTheExpectedVoxels) {
     Primitive p;
     p.centre = {1.0f, 1.0f, 1.0f};
     p.half = {0.5f, 0.5f, 0.5f};  // [0.5, 1.5]^3 holds centres 0.625 .. 1.375: 4 per axis
-    const VoxelCounts c = vox.score({p}, t);
+    const VoxelCounts c = vox.score(geometryOf({p}), t);
     EXPECT_EQ(c.occupied, 64u);
     EXPECT_EQ(c.outside, 0u);
     EXPECT_EQ(c.overlap, 0u);
     // the same box twice overlaps itself everywhere
-    const VoxelCounts twice = vox.score({p, p}, t);
+    const VoxelCounts twice = vox.score(geometryOf({p, p}), t);
     EXPECT_EQ(twice.overlap, 64u);
 }
 

@@ -1,0 +1,102 @@
+// ConeSolid: the Cone primitive, a frustum u.x^2 + u.z^2 <= r(u.y)^2, |u.y| <= 1 with
+// r(y) = (1 + taper)/2 + (taper - 1)/2 * y (radius 1 at the bottom, `taper` at the top), its
+// voxel-centre inside test and the chord of a voxel row (chord_rows.hpp explains why the test is
+// written per row and why that makes the row interval exact).
+//
+// Along a row, with dx an offset along it: (u.x, u.z) = A dx + B and r = rho dx + sigma, so the lateral
+// surface is one quadratic f(dx) = |A dx + B|^2 - (rho dx + sigma)^2 <= 0. Its solutions lie on
+// both nappes of the double cone; the frustum's nappe is the one with r >= 0.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "score/chord_rows.hpp"
+
+namespace shapevo {
+
+/// dx with k dx^2 + 2 b dx + c <= 0 on the side where rho dx + sigma grows (for k < 0 the
+/// solutions are two rays, one per nappe), intersected with rho dx + sigma >= 0.
+inline Chord nappeChord(double k, double b, double c, double rho, double sigma) {
+    Chord q;
+    if (std::isnan(k) || std::isnan(b) || std::isnan(c)) return Chord::none();
+    if (k == 0.0) {  // the row is parallel to a generator: one ray (or everything, or nothing)
+        if (b == 0.0) {
+            q = c <= 0.0 ? Chord::all() : Chord::none();
+        } else {
+            const double r = -c / (2.0 * b);
+            q = b > 0.0 ? Chord{-INFINITY, r} : Chord{r, INFINITY};
+        }
+    } else {
+        const double disc = b * b - k * c;
+        if (std::isnan(disc)) return Chord::none();
+        if (k > 0.0) {  // an interval, on one nappe
+            if (disc < 0.0) return Chord::none();
+            const double s = -(b + std::copysign(std::sqrt(disc), b));  // no cancellation
+            if (s == 0.0) {
+                q = {0.0, 0.0};
+            } else {
+                const double r1 = s / k, r2 = c / s;
+                q = {std::min(r1, r2), std::max(r1, r2)};
+            }
+        } else if (!(disc > 0.0)) {  // k < 0 and no real roots: f <= 0 on the whole line
+            q = Chord::all();
+        } else {  // k < 0 (so rho != 0): keep the ray on the side where r grows
+            const double s = -(b + std::copysign(std::sqrt(disc), b));
+            const double r1 = s / k, r2 = c / s;
+            q = rho > 0.0 ? Chord{std::max(r1, r2), INFINITY} : Chord{-INFINITY, std::min(r1, r2)};
+        }
+    }
+    Chord positive;  // r >= 0
+    if (rho > 0.0) positive = {-sigma / rho, INFINITY};
+    else if (rho < 0.0) positive = {-INFINITY, -sigma / rho};
+    else positive = sigma >= 0.0 ? Chord::all() : Chord::none();
+    return q & positive;
+}
+
+struct ConeSolid {
+    RoundFrame f;
+    double radialSlope[2];  ///< du_x / dx and du_z / dx along every row
+    double axialSlope;      ///< du_y / dx
+    double r0, r1;          ///< r(y) = r0 + r1 * y
+    double radialSq;        ///< |A|^2: squared radial slope
+    double rho, kk;         ///< dr / dx along a row; the quadratic's leading coefficient |A|^2 - rho^2
+
+    static ConeSolid from(const Primitive& p) {
+        ConeSolid s{RoundFrame::from(p), {}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        const double taper = p.taper >= 0.0f ? std::min(double(p.taper), 1.0) : 0.0;  // NaN -> 0, as derive
+        s.r0 = (1.0 + taper) * 0.5;
+        s.r1 = (taper - 1.0) * 0.5;
+        s.radialSlope[0] = s.f.slope(0);
+        s.radialSlope[1] = s.f.slope(2);
+        s.axialSlope = s.f.slope(1);
+        s.rho = s.r1 * s.axialSlope;
+        s.radialSq = s.radialSlope[0] * s.radialSlope[0] + s.radialSlope[1] * s.radialSlope[1];
+        s.kk = s.radialSq - s.rho * s.rho;
+        return s;
+    }
+    bool valid() const { return f.valid(); }
+    double cx() const { return f.cx(); }
+    /// World-space half extent of the bounding box along grid axis j (that of the cylinder
+    /// around the frustum: the radius is at most 1).
+    double reach(int j) const { return std::fabs(f.box.a[1][j]) * f.box.h[1] + f.ellipseReach(0, 2, j); }
+    /// Offsets x - c.x inside the frustum on row (y, z).
+    Chord chord(double y, double z) const {
+        const double v = f.atCentre(1, y, z);
+        const Chord caps = slabChord(axialSlope, v);
+        if (caps.empty()) return caps;
+        // The quadratic is set up around the point of the row closest to the axis (offset mid),
+        // so its coefficients stay small and nothing cancels.
+        const double bx = f.atCentre(0, y, z), bz = f.atCentre(2, y, z);
+        const double mid = radialSq > 0.0 ? -(radialSlope[0] * bx + radialSlope[1] * bz) / radialSq : 0.0;
+        const double ux = radialSlope[0] * mid + bx, uz = radialSlope[1] * mid + bz;
+        const double sigma = r0 + r1 * (axialSlope * mid + v);
+        const double b = radialSlope[0] * ux + radialSlope[1] * uz - rho * sigma;
+        const double c = ux * ux + uz * uz - sigma * sigma;
+        const Chord lateral = nappeChord(kk, b, c, rho, sigma);
+        return caps & Chord{lateral.lo + mid, lateral.hi + mid};
+    }
+    /// The voxel-centre test: is point (x, y, z) inside the closed frustum? (Never, if not valid().)
+    bool contains(double x, double y, double z) const { return valid() && chord(y, z).contains(x - cx()); }
+};
+
+}  // namespace shapevo

@@ -1,0 +1,173 @@
+// MeshSolid: a Mesh primitive placed in world space, its voxel-centre inside test and the
+// crossings of voxel rows with its triangles.
+//
+// The inside test (the definition): a ray from the voxel centre along +x; the centre is inside
+// iff the ray crosses an odd number of triangles. A row (fixed y, z) crosses a triangle iff the
+// point (y, z) lies in the triangle's projection onto the y-z plane, decided by these rules:
+//  - which side of an edge the point lies on is computed from the edge's two end points in a
+//    canonical order (by (y, z)), so the two triangles that share an edge always put the point on
+//    opposite sides of it, even with rounding;
+//  - an exact hit on an edge or a vertex is broken by symbolic perturbation: the point is moved
+//    to (y + e, z + e^2) for an infinitesimal e > 0, so a point on an edge belongs to exactly one
+//    side (half-open edges) and a triangle seen edge-on (zero projected area) is never crossed;
+//  - the point must lie in the half-open bounding box [y_min, y_max) x [z_min, z_max) of the
+//    triangle's projection (the same perturbation), which also makes every crossing local.
+// The crossing's x is the barycentric interpolation of the triangle's x coordinates (it always
+// lies between them); a crossing at exactly the voxel centre is not "ahead" of it (counted if
+// x_cross > x), so each run of covered voxels is half-open: [x_cross_0, x_cross_1).
+//
+// Per row the crossings are computed once, sorted, and the runs where the number of crossings
+// ahead is odd are filled (rowRuns): the same voxels as the test, without testing each one.
+// For a closed mesh every row crosses an even number of triangles (the two triangles at an edge
+// never both claim it), so the runs are the pairs [c_0, c_1), [c_2, c_3), ...
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/mesh_shape.hpp"
+#include "score/box_rows.hpp"
+#include "score/chord_rows.hpp"
+
+namespace shapevo {
+
+/// One crossing of a row with a triangle: row key and x.
+struct RowCrossing {
+    std::uint32_t row;
+    double x;
+    bool operator<(const RowCrossing& o) const { return row < o.row || (row == o.row && x < o.x); }
+};
+
+class MeshSolid {
+public:
+    using Vertex = std::array<double, 3>;
+
+    /// Place `shape` in `p`'s frame: world = c + sum_k axis_k * (|half_k| * u_k), in double.
+    /// Reuses the vertex buffer. False (covers nothing) for a non-finite frame or a zero half
+    /// extent (a flat mesh has no volume).
+    bool place(const Primitive& p, const MeshShape& shape) {
+        shape_ = &shape;
+        placed_ = false;
+        const BoxFrame b = BoxFrame::from(p);
+        if (!b.finite()) return false;
+        for (int k = 0; k < 3; ++k)
+            if (!(b.h[k] > 0.0)) return false;
+        world_.resize(shape.vertices.size());
+        for (int j = 0; j < 3; ++j) lo_[j] = INFINITY, hi_[j] = -INFINITY;
+        for (std::size_t v = 0; v < shape.vertices.size(); ++v) {
+            const glm::vec3& u = shape.vertices[v];
+            for (int j = 0; j < 3; ++j) {
+                const double w = b.c[j] + b.a[0][j] * (b.h[0] * double(u[0])) + b.a[1][j] * (b.h[1] * double(u[1])) +
+                                 b.a[2][j] * (b.h[2] * double(u[2]));
+                world_[v][j] = w;
+                lo_[j] = std::min(lo_[j], w);
+                hi_[j] = std::max(hi_[j], w);
+            }
+        }
+        for (int j = 0; j < 3; ++j)
+            if (!std::isfinite(lo_[j]) || !std::isfinite(hi_[j])) return false;
+        placed_ = !shape.triangles.empty();
+        return placed_;
+    }
+    double lo(int j) const { return lo_[j]; }
+    double hi(int j) const { return hi_[j]; }
+    std::size_t triangles() const { return placed_ ? shape_->triangles.size() : 0; }
+
+    /// Does row (y, z) cross triangle t, and where? (The crossing rule described above.)
+    bool crossing(std::size_t t, double y, double z, double& x) const {
+        const auto& tri = shape_->triangles[t];
+        const Vertex& v0 = world_[tri[0]];
+        const Vertex& v1 = world_[tri[1]];
+        const Vertex& v2 = world_[tri[2]];
+        if (!(y >= std::min({v0[1], v1[1], v2[1]}) && y < std::max({v0[1], v1[1], v2[1]}))) return false;
+        if (!(z >= std::min({v0[2], v1[2], v2[2]}) && z < std::max({v0[2], v1[2], v2[2]}))) return false;
+        double e0, e1, e2;  // edge functions; e_i belongs to the edge opposite vertex i
+        const int s0 = edgeSide(v1, v2, y, z, e0);
+        const int s1 = edgeSide(v2, v0, y, z, e1);
+        if (s1 != s0) return false;
+        const int s2 = edgeSide(v0, v1, y, z, e2);
+        if (s2 != s0) return false;
+        const double sum = e0 + e1 + e2;
+        x = sum != 0.0 ? (e0 * v0[0] + e1 * v1[0] + e2 * v2[0]) / sum : v0[0];
+        return true;
+    }
+
+    /// The voxel-centre test: does the +x ray from (x, y, z) cross an odd number of triangles?
+    /// (Never, if the last place() failed.)
+    bool contains(double x, double y, double z) const {
+        bool inside = false;
+        double xc;
+        for (std::size_t t = 0; t < triangles(); ++t)
+            if (crossing(t, y, z, xc) && xc > x) inside = !inside;
+        return inside;
+    }
+
+    /// Append the crossings of rows y in [y0, y1], z in [z0, z1] (grid indices) to `out`, with
+    /// row key (z - z0) * (y1 - y0 + 1) + (y - y0). Visits only the rows in each triangle's
+    /// bounding box, so the work is proportional to the rows the surface covers.
+    void collectCrossings(const GridSpec& grid, long y0, long y1, long z0, long z1, std::vector<RowCrossing>& out) const {
+        const std::uint32_t ny = std::uint32_t(y1 - y0 + 1);
+        const double perUnit = 1.0 / grid.voxelSize;
+        auto rowRange = [&](int axis, long first, long last, double vmin, double vmax, long& a, long& b) {
+            const double base = -grid.origin[axis] * perUnit - 0.5;
+            a = firstTrue(first, last, base + vmin * perUnit, [&](long i) { return grid.centre(axis, i) >= vmin; });
+            b = firstTrue(first, last, base + vmax * perUnit, [&](long i) { return grid.centre(axis, i) >= vmax; }) - 1;
+            return a <= b;
+        };
+        for (std::size_t t = 0; t < triangles(); ++t) {
+            const auto& tri = shape_->triangles[t];
+            const Vertex& v0 = world_[tri[0]];
+            const Vertex& v1 = world_[tri[1]];
+            const Vertex& v2 = world_[tri[2]];
+            long ya, yb, za, zb;
+            if (!rowRange(1, y0, y1, std::min({v0[1], v1[1], v2[1]}), std::max({v0[1], v1[1], v2[1]}), ya, yb)) continue;
+            if (!rowRange(2, z0, z1, std::min({v0[2], v1[2], v2[2]}), std::max({v0[2], v1[2], v2[2]}), za, zb)) continue;
+            for (long z = za; z <= zb; ++z) {
+                const double cz = grid.centre(2, z);
+                for (long y = ya; y <= yb; ++y) {
+                    double x;
+                    if (crossing(t, grid.centre(1, y), cz, x))
+                        out.push_back({std::uint32_t(z - z0) * ny + std::uint32_t(y - y0), x});
+                }
+            }
+        }
+    }
+
+private:
+    /// Side of the directed edge a -> b that point (y, z) lies on in the y-z plane (+1 left,
+    /// -1 right) and the edge function e (twice the signed area of a, b, point).
+    static int edgeSide(const Vertex& a, const Vertex& b, double y, double z, double& e) {
+        const bool flip = b[1] < a[1] || (b[1] == a[1] && b[2] < a[2]);
+        const Vertex& p = flip ? b : a;
+        const Vertex& q = flip ? a : b;
+        const double dy = q[1] - p[1], dz = q[2] - p[2];
+        e = dy * (z - p[2]) - dz * (y - p[1]);
+        // exact hit: the sign at (y + eps, z + eps^2) is that of -dz * eps + dy * eps^2
+        int s = e > 0.0 ? 1 : e < 0.0 ? -1 : (dz != 0.0 ? (dz > 0.0 ? -1 : 1) : (dy > 0.0 ? 1 : -1));
+        if (flip) s = -s, e = -e;
+        return s;
+    }
+
+    const MeshShape* shape_ = nullptr;
+    bool placed_ = false;
+    std::vector<Vertex> world_;
+    double lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};
+};
+
+/// The covered runs of one row from its sorted crossings c_0 <= ... <= c_{n-1}: voxel centres x
+/// with an odd number of crossings ahead (c > x), i.e. [c_{m-1}, c_m) for m = n-1, n-3, ...
+/// (and x < c_0 when n is odd, which a closed mesh never gives). Calls run(lo, hi) with the
+/// index interval of each non-empty run within [first, last].
+template <class Run>
+void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long first, long last, Run run) {
+    const double base = -grid.origin[0] / grid.voxelSize - 0.5, perUnit = 1.0 / grid.voxelSize;
+    for (long m = long(n) - 1; m >= 0; m -= 2) {
+        const double from = m >= 1 ? c[m - 1].x : -INFINITY, to = c[m].x;
+        const long lo = firstTrue(first, last, base + from * perUnit, [&](long i) { return grid.centre(0, i) >= from; });
+        const long hi = firstTrue(first, last, base + to * perUnit, [&](long i) { return grid.centre(0, i) >= to; }) - 1;
+        if (lo <= hi) run(lo, hi);
+    }
+}
+
+}  // namespace shapevo

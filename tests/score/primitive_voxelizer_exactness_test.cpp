@@ -1,0 +1,217 @@
+// Exactness of the voxelizer for every primitive kind: for 1,000 random primitives of each kind
+// (cylinders, cones, spheres, meshes; random rotations, mirrored frames, tapers 0 and 1, thin and
+// flat sizes, grid-aligned placements whose surfaces pass exactly through voxel centres, positions
+// leaving the grid) the bit rows and every count (occupied, inside, avoided, overlap, outside)
+// equal a brute-force loop that applies the kind's inside test to every voxel centre.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "random_primitives.hpp"
+#include "score/cone_rows.hpp"
+#include "score/cylinder_rows.hpp"
+#include "score/mesh_rows.hpp"
+#include "score/sphere_rows.hpp"
+#include "score/voxelizer.hpp"
+
+namespace shapevo {
+namespace {
+
+struct BruteForce {
+    VoxelCounts counts;
+    std::vector<std::uint64_t> bits;  ///< occupied bit rows, as Voxelizer::occupancy()
+};
+
+/// Every voxel centre of the grid and its one-extent halo that could be inside `p`, tested one
+/// by one with the kind's inside test. Boxes and round kinds: the ball through the box's corners
+/// bounds them.
+/// Meshes: rows within the vertices' bounding box; along a row, every centre between the
+/// vertices (+-3 voxels) is tested, and beyond that one test stands for all (no crossing lies
+/// there, so the ray test cannot change).
+void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, const GridSpec& g,
+                   std::vector<std::uint8_t>& hits, VoxelCounts& c) {
+    const long n[3] = {g.nx, g.ny, g.nz};
+    MeshSolid mesh;
+    std::function<bool(double, double, double)> inside;
+    double lo[3], hi[3];
+    if (p.kind == PrimitiveKind::Mesh) {
+        if (!mesh.place(p, meshes[p.mesh])) return;
+        for (int j = 0; j < 3; ++j) lo[j] = mesh.lo(j), hi[j] = mesh.hi(j);
+        inside = [&](double x, double y, double z) { return mesh.contains(x, y, z); };
+    } else {
+        const double r = std::sqrt(double(p.half.x) * p.half.x + double(p.half.y) * p.half.y + double(p.half.z) * p.half.z);
+        for (int j = 0; j < 3; ++j) lo[j] = p.centre[j] - r, hi[j] = p.centre[j] + r;
+        if (p.kind == PrimitiveKind::Box) inside = [s = BoxFrame::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+        if (p.kind == PrimitiveKind::Cylinder) inside = [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+        if (p.kind == PrimitiveKind::Cone) inside = [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+        if (p.kind == PrimitiveKind::Sphere) inside = [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    }
+    long first[3], last[3];
+    for (int j = 0; j < 3; ++j) {
+        first[j] = long(std::clamp(std::floor((lo[j] - g.origin[j]) / g.voxelSize) - 3, double(-n[j]), double(2 * n[j])));
+        last[j] = long(std::clamp(std::ceil((hi[j] - g.origin[j]) / g.voxelSize) + 3, double(-n[j] - 1), double(2 * n[j] - 1)));
+    }
+    auto cover = [&](long x, long y, long z) {
+        if (x < 0 || y < 0 || z < 0 || x >= n[0] || y >= n[1] || z >= n[2]) {
+            ++c.outside;
+            return;
+        }
+        auto& h = hits[(std::size_t(z) * g.ny + y) * g.nx + x];
+        if (h < 2) ++h;
+    };
+    const bool isMesh = p.kind == PrimitiveKind::Mesh;
+    for (long z = first[2]; z <= last[2]; ++z)
+        for (long y = first[1]; y <= last[1]; ++y) {
+            const double cy = g.centre(1, y), cz = g.centre(2, z);
+            if (isMesh && first[0] > -n[0] && inside(g.centre(0, first[0] - 1), cy, cz))
+                for (long x = -n[0]; x < first[0]; ++x) cover(x, y, z);
+            for (long x = first[0]; x <= last[0]; ++x)
+                if (inside(g.centre(0, x), cy, cz)) cover(x, y, z);
+            if (isMesh && last[0] < 2 * n[0] - 1 && inside(g.centre(0, last[0] + 1), cy, cz))
+                for (long x = last[0] + 1; x <= 2 * n[0] - 1; ++x) cover(x, y, z);
+        }
+}
+
+BruteForce bruteForce(const Geometry& geometry, const VolumeTarget& t) {
+    const GridSpec& g = t.grid;
+    BruteForce b;
+    b.bits.assign(g.words(), 0);
+    std::vector<std::uint8_t> hits(std::size_t(g.nx) * g.ny * g.nz, 0);
+    for (const Primitive& p : geometry.primitives) bruteForceAdd(p, *geometry.meshes, g, hits, b.counts);
+    for (int z = 0; z < g.nz; ++z)
+        for (int y = 0; y < g.ny; ++y)
+            for (int x = 0; x < g.nx; ++x) {
+                const auto h = hits[(std::size_t(z) * g.ny + y) * g.nx + x];
+                if (!h) continue;
+                const std::size_t w = (std::size_t(z) * g.ny + y) * g.wordsPerRow() + (x >> 6);
+                const std::uint64_t bit = 1ULL << (x & 63);
+                b.bits[w] |= bit;
+                ++b.counts.occupied;
+                if (h >= 2) ++b.counts.overlap;
+                if (t.fill[w] & bit) ++b.counts.inside;
+                if (t.avoid[w] & bit) ++b.counts.avoided;
+            }
+    return b;
+}
+
+struct Totals {
+    std::uint64_t occupied = 0, outside = 0, overlap = 0, empty = 0;
+};
+
+/// `primitives` random primitives of `kinds` (cycled), in models of one to four, compared with
+/// the brute force: bit rows after add(), then every count of score().
+Totals compareWithBruteForce(const std::vector<PrimitiveKind>& kinds, const GridSpec& grid, int primitives,
+                             std::uint64_t seed, bool gridAligned = false) {
+    Rng rng(seed);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
+    Voxelizer vox(grid);
+    Geometry geometry;
+    geometry.meshes = &meshes;
+    Totals totals;
+    for (int made = 0, model = 0; made < primitives; ++model) {
+        geometry.primitives.clear();
+        const int n = std::min(1 + int(rng.below(4)), primitives - made);
+        for (int i = 0; i < n; ++i, ++made) {
+            Primitive p = test::randomPrimitive(kinds[std::size_t(made) % kinds.size()], grid, rng, 2, gridAligned);
+            if (i > 0 && rng.below(2))  // near the previous one, so that they overlap
+                for (int j = 0; j < 3; ++j) p.centre[j] = geometry.primitives.back().centre[j] + float(0.4 * rng.uniform() - 0.2);
+            geometry.primitives.push_back(p);
+        }
+        const BruteForce slow = bruteForce(geometry, target);
+        VoxelCounts added;
+        for (const Primitive& p : geometry.primitives) vox.add(p, geometry.meshes, added);
+        const auto& bits = vox.occupancy();
+        const auto diff = std::mismatch(bits.begin(), bits.end(), slow.bits.begin());
+        const bool sameBits = diff.first == bits.end();
+        EXPECT_TRUE(sameBits) << "model " << model << ": bit rows differ at word " << (diff.first - bits.begin()) << ": "
+                              << std::hex << (sameBits ? 0 : *diff.first) << " vs " << (sameBits ? 0 : *diff.second);
+        EXPECT_EQ(added.outside, slow.counts.outside) << "model " << model;
+        vox.clear();
+        VoxelCounts fast = vox.score(geometry, target);
+        fast.rows = 0;
+        EXPECT_EQ(fast, slow.counts) << "model " << model << " occupied " << fast.occupied << " vs " << slow.counts.occupied
+                                     << ", overlap " << fast.overlap << " vs " << slow.counts.overlap << ", outside "
+                                     << fast.outside << " vs " << slow.counts.outside;
+        if (!sameBits || added.outside != slow.counts.outside || !(fast == slow.counts)) return totals;  // one report is enough
+        totals.occupied += slow.counts.occupied;
+        totals.outside += slow.counts.outside;
+        totals.overlap += slow.counts.overlap;
+        totals.empty += slow.counts.occupied + slow.counts.outside == 0 ? 1 : 0;
+    }
+    return totals;
+}
+
+GridSpec testGrid() {
+    GridSpec grid;
+    grid.origin = {-1.3, -0.7, 0.25};
+    grid.voxelSize = 0.1;
+    grid.nx = 70;  // two words per row, the second partly used
+    grid.ny = 23;
+    grid.nz = 17;
+    return grid;
+}
+
+/// The random models really exercise every term (and are not mostly empty).
+void expectEveryTerm(const Totals& t) {
+    EXPECT_GT(t.occupied, 20000u);
+    EXPECT_GT(t.outside, 20000u);
+    EXPECT_GT(t.overlap, 1000u);
+    EXPECT_LT(t.empty, 100u);
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomCylindersMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Cylinder}, testGrid(), 1000, 11));
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomConesWithTapersZeroToOneMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Cone}, testGrid(), 1000, 12));
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomSpheresMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Sphere}, testGrid(), 1000, 13));
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomOctahedraAndLPrismsMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Mesh}, testGrid(), 1000, 14));
+}
+
+TEST(PrimitiveVoxelizerExactness, ModelsMixingAllKindsMatchBruteForceIncludingOverlapsBetweenKinds) {
+    const std::vector<PrimitiveKind> all = {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone,
+                                            PrimitiveKind::Sphere, PrimitiveKind::Mesh};
+    expectEveryTerm(compareWithBruteForce(all, testGrid(), 1000, 15));
+}
+
+TEST(PrimitiveVoxelizerExactness, GridAlignedPrimitivesWithSurfacesThroughVoxelCentresMatchBruteForce) {
+    // Axis-aligned, centred on voxel centres or corners, half extents in half voxels: many row
+    // ends fall exactly on a voxel centre, where only the exact test can decide.
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh}) {
+        SCOPED_TRACE(int(kind));
+        expectEveryTerm(compareWithBruteForce({kind}, testGrid(), 1000, 16 + std::uint64_t(kind), true));
+    }
+}
+
+TEST(PrimitiveVoxelizerExactness, MeshPrimitiveWithoutItsMeshCoversNothing) {
+    const GridSpec grid = testGrid();
+    Rng rng(3);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    Voxelizer vox(grid);
+    Geometry geometry;
+    Primitive p;
+    p.kind = PrimitiveKind::Mesh;
+    p.centre = {2.0f, 0.5f, 1.0f};
+    geometry.primitives = {p};
+    EXPECT_EQ(vox.score(geometry, target), VoxelCounts{});  // no meshes at all
+    const std::vector<MeshShape> meshes = {test::octahedron()};
+    geometry.meshes = &meshes;
+    geometry.primitives[0].mesh = 1;  // out of range
+    EXPECT_EQ(vox.score(geometry, target), VoxelCounts{});
+    geometry.primitives[0].mesh = 0;
+    EXPECT_GT(vox.score(geometry, target).occupied, 0u);
+}
+
+}  // namespace
+}  // namespace shapevo

@@ -1,0 +1,124 @@
+// Test helpers for the voxelizer tests of every primitive kind: random frames (rotations,
+// mirrors, axis-aligned and grid-aligned placements), random primitives of a kind, two closed
+// meshes (an octahedron and a non-convex L-shaped prism) and a random fill/avoid target.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "genome/random.hpp"
+#include "geometry/primitive.hpp"
+#include "score/volume_target.hpp"
+
+namespace shapevo::test {
+
+/// Axes from a uniformly random rotation (a random unit quaternion).
+inline glm::mat3 randomRotation(Rng& rng) {
+    double q[4], n = 0;
+    for (double& v : q) v = rng.normal(), n += v * v;
+    n = std::sqrt(n);
+    const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
+    const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
+                            {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
+                            {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
+    glm::mat3 a;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) a[c][r] = float(m[c][r]);
+    return a;
+}
+
+/// Axes that are a signed permutation of the grid axes (exact zeros and ones).
+inline glm::mat3 randomAxisAligned(Rng& rng) {
+    static const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    const int* perm = perms[rng.below(6)];
+    glm::mat3 a(0.0f);
+    for (int c = 0; c < 3; ++c) a[c][perm[c]] = rng.below(2) ? 1.0f : -1.0f;
+    return a;
+}
+
+/// A random primitive of `kind` around `grid`: styles 0-1 rotated, 2 axis-aligned, 3 axis-aligned
+/// and grid-aligned (centre on a voxel centre or corner, half extents in half voxels, so surfaces
+/// pass exactly through voxel centres); centres may leave the grid; one frame axis in four is
+/// mirrored; sizes are sometimes thin (a thousandth of a voxel) or flat (zero). Cone tapers are
+/// 0, 1 or uniform in between. `gridAligned` forces style 3.
+inline Primitive randomPrimitive(PrimitiveKind kind, const GridSpec& grid, Rng& rng, std::uint16_t meshes = 0,
+                                 bool gridAligned = false) {
+    Primitive p;
+    p.kind = kind;
+    const double n[3] = {double(grid.nx), double(grid.ny), double(grid.nz)};
+    const int style = gridAligned ? 3 : int(rng.below(4));
+    for (int j = 0; j < 3; ++j) {
+        const double ext = n[j] * grid.voxelSize;
+        if (style == 3) {
+            p.centre[j] = float(grid.centre(j, long(rng.below(std::uint32_t(n[j])))) - (rng.below(2) ? 0.5 * grid.voxelSize : 0.0));
+            p.half[j] = float(grid.voxelSize * 0.5 * double(1 + rng.below(12)));
+        } else {
+            p.centre[j] = float(grid.origin[j] - 0.3 * ext + 1.6 * ext * rng.uniform());
+            p.half[j] = float(0.02 + 0.6 * rng.uniform());
+        }
+    }
+    const std::uint32_t size = rng.below(40);
+    if (size == 0) p.half[int(rng.below(3))] = float(grid.voxelSize * 1e-3);  // thin
+    if (size == 1) p.half[int(rng.below(3))] = 0.0f;                         // flat
+    if (style <= 1) p.axes = randomRotation(rng);
+    else p.axes = randomAxisAligned(rng);
+    if (rng.below(4) == 0) p.axes[int(rng.below(3))] *= -1.0f;  // a mirrored frame
+    const std::uint32_t t = rng.below(4);
+    p.taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
+    if (kind == PrimitiveKind::Mesh) p.mesh = std::uint16_t(rng.below(meshes));
+    return p;
+}
+
+/// The octahedron |u.x| + |u.y| + |u.z| <= 1, outward-facing.
+inline MeshShape octahedron() {
+    MeshShape m;
+    m.path = "octahedron";
+    m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (std::uint32_t sx = 0; sx < 2; ++sx)
+        for (std::uint32_t sy = 0; sy < 2; ++sy)
+            for (std::uint32_t sz = 0; sz < 2; ++sz) {
+                std::array<std::uint32_t, 3> t{sx, 2 + sy, 4 + sz};
+                if ((sx + sy + sz) % 2 == 1) std::swap(t[1], t[2]);  // counter-clockwise from outside
+                m.triangles.push_back(t);
+            }
+    return m;
+}
+
+/// An L-shaped prism: the L {[-1,1]x[-1,0]} u {[-1,0]x[-1,1]} in x-y, extruded over z in [-1, 1].
+inline MeshShape lPrism() {
+    MeshShape m;
+    m.path = "l-prism";
+    const float l[6][2] = {{-1, -1}, {1, -1}, {1, 0}, {0, 0}, {0, 1}, {-1, 1}};  // counter-clockwise
+    for (int z = 0; z < 2; ++z)
+        for (const auto& v : l) m.vertices.push_back({v[0], v[1], z ? 1.0f : -1.0f});
+    const std::uint32_t fan[4][2] = {{4, 5}, {5, 0}, {0, 1}, {1, 2}};  // caps: fans around vertex 3
+    for (const auto& f : fan) {
+        m.triangles.push_back({6 + 3, 6 + f[0], 6 + f[1]});  // top, facing +z
+        m.triangles.push_back({3, f[1], f[0]});              // bottom, facing -z
+    }
+    for (std::uint32_t i = 0; i < 6; ++i) {  // walls
+        const std::uint32_t j = (i + 1) % 6;
+        m.triangles.push_back({i, j, 6 + j});
+        m.triangles.push_back({i, 6 + j, 6 + i});
+    }
+    return m;
+}
+
+inline VolumeTarget randomTarget(const GridSpec& grid, Rng& rng) {
+    VolumeTarget t;
+    t.grid = grid;
+    t.fill.assign(grid.words(), 0);
+    t.avoid.assign(grid.words(), 0);
+    for (int z = 0; z < grid.nz; ++z)
+        for (int y = 0; y < grid.ny; ++y)
+            for (int x = 0; x < grid.nx; ++x) {
+                const std::size_t w = (std::size_t(z) * grid.ny + y) * grid.wordsPerRow() + (x >> 6);
+                const double u = rng.uniform();
+                if (u < 0.3) t.fill[w] |= 1ULL << (x & 63), ++t.fillCount;
+                else if (u < 0.4) t.avoid[w] |= 1ULL << (x & 63), ++t.avoidCount;
+            }
+    return t;
+}
+
+}  // namespace shapevo::test
