@@ -18,7 +18,7 @@ namespace {
 openvdb::FloatGrid::Ptr modelGrid(const Geometry& geometry, const GridSpec& grid) {
     Voxelizer voxelizer(grid);
     VoxelCounts counts;
-    for (const Primitive& p : geometry.primitives) voxelizer.add(p, counts);
+    for (const Primitive& p : geometry.primitives) voxelizer.add(p, geometry.meshes, counts);
     const std::vector<std::uint64_t>& bits = voxelizer.occupancy();
 
     openvdb::FloatGrid::Ptr out = openvdb::FloatGrid::create(0.0f);

@@ -53,7 +53,7 @@ Geometry testModel() {
 std::vector<std::uint64_t> occupancy(const Geometry& model, const GridSpec& grid) {
     Voxelizer v(grid);
     VoxelCounts counts;
-    for (const Primitive& p : model.primitives) v.add(p, counts);
+    for (const Primitive& p : model.primitives) v.add(p, model.meshes, counts);
     return v.occupancy();
 }
 
