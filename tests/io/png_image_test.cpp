@@ -21,11 +21,11 @@ struct Picture {
     int w, h;
     std::vector<int> r, g, b, a;  // 0..65535
     Picture(int w_, int h_) : w(w_), h(h_) {
-        for (int i = 0; i < w * h; ++i) {
-            r.push_back((i * 7919) % 256 * 257);
-            g.push_back((i * 104729 + 31) % 256 * 257);
-            b.push_back((i * 1299709 + 97) % 256 * 257);
-            a.push_back((i * 15485863 + 5) % 256 * 257);
+        for (long long i = 0; i < w * h; ++i) {
+            r.push_back(int((i * 7919) % 256 * 257));
+            g.push_back(int((i * 104729 + 31) % 256 * 257));
+            b.push_back(int((i * 1299709 + 97) % 256 * 257));
+            a.push_back(int((i * 15485863 + 5) % 256 * 257));
         }
     }
 };
