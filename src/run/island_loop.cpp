@@ -110,7 +110,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     bool bySignal = false;
     // After each generation: migrate, agree on global statistics and on stopping, checkpoint.
     double migrationSeconds = 0, checkpointSeconds = 0;  // this rank's time in each, for the summary
-    auto lastCheckpoint = Clock::now();
+    auto lastCheckpoint = Clock::now(), lastProgress = Clock::now();
     auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     auto afterGeneration = [&]() -> bool {
         const auto migrationStart = Clock::now();
@@ -139,20 +139,24 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         meta.curve.push_back(global);
         meta.generation = ga.generation();
         meta.wallSeconds = global.seconds;
-        if (root && !options.quiet) {
+        if (maxima[1] > 0) stopReason = signalName(int(maxima[1])), bySignal = true;
+        else if (maxima[2] > 0) stopReason = "the wall-time budget";
+        else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
+        else if (ga.generation() >= s.ga.generations) stopReason = "done";
+        // Progress: every one of the first 20 generations, then at most one line a second, and
+        // always the last one, so hour-long runs stay readable.
+        if (root && !options.quiet && (global.generation <= 20 || since(lastProgress) >= 1.0 || !stopReason.empty())) {
+            lastProgress = Clock::now();
             const double rate = global.seconds > wallBefore ? double(global.evaluations) / global.seconds : 0;
             const double perGeneration = global.seconds / std::max(1u, global.generation);
-            const double eta = perGeneration * double(s.ga.generations > global.generation ? s.ga.generations - global.generation : 0);
+            double eta = perGeneration * double(s.ga.generations > global.generation ? s.ga.generations - global.generation : 0);
+            if (s.wallTime > 0) eta = std::min(eta, std::max(0.0, s.wallTime - global.seconds));
             char line[220];
             std::snprintf(line, sizeof line, "gen %*u/%u  best %.5f  mean %.5f  %.0f evals/s  elapsed %s  ETA %s\n",
                           int(std::to_string(s.ga.generations).size()), global.generation, s.ga.generations, global.best,
                           global.mean, rate, humanSeconds(global.seconds).c_str(), humanSeconds(eta).c_str());
             log << line << std::flush;
         }
-        if (maxima[1] > 0) stopReason = signalName(int(maxima[1])), bySignal = true;
-        else if (maxima[2] > 0) stopReason = "the wall-time budget";
-        else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
-        else if (ga.generation() >= s.ga.generations) stopReason = "done";
         const bool due = (s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0) || maxima[3] > 0;
         if (due || !stopReason.empty()) {
             const auto checkpointStart = Clock::now();
