@@ -11,6 +11,7 @@
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "io/vdb_target_file.hpp"
+#include "score/image_scorer.hpp"
 #include "score/volume_scorer.hpp"
 
 #if !defined(__SANITIZE_ADDRESS__)
@@ -90,6 +91,39 @@ TEST(NoAllocation, VoxelizingEveryPrimitiveKindIncludingMeshesAllocatesNothingOn
         for (const Geometry& m : models) sink += vox.score(m, target).occupied;
     EXPECT_EQ(gAllocations.load() - before, 0) << "allocations in 250 evaluations of 20 primitives of every kind";
     EXPECT_NE(sink, 0u);
+}
+
+TEST(NoAllocation, ImageScoringOfTreesAllocatesNothingOnceWarm) {
+    const Grammar g = loadGrammar(test::sourcePath("grammars/tree.grammar"));
+    for (Projection projection : {Projection::Perspective, Projection::Orthographic, Projection::Shadow}) {
+        CameraSpec spec;
+        spec.projection = projection;
+        spec.eye = {0.0, 2.0, 12.0};
+        spec.lookAt = {0.0, 2.0, 0.0};
+        spec.viewHeight = 12.0;
+        spec.groundY = -2.0;
+        spec.groundMin = {-8.0, -6.0};
+        spec.groundMax = {8.0, 6.0};
+        const Camera camera = Camera::compile(spec, "test");
+        const ImageTarget target =
+            loadImageTarget(test::sourcePath("targets/shapegenetics/tree_target_sketch1.png"), PixelRule{}, 800, 600);
+        const ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
+        auto ws = scorer.makeWorkspace();
+        Rng rng(23);
+        const GenomeLimits limits{300};
+        std::vector<Chromosome> pop(12);
+        for (auto& c : pop)
+            while (c.genes < 300 && grow(g, c, rng, limits)) {
+            }
+        double sink = 0;
+        for (int warm = 0; warm < 3; ++warm)
+            for (const auto& c : pop) sink += scorer.fitness(c, *ws);
+        const long before = gAllocations.load();
+        for (int r = 0; r < 20; ++r)
+            for (const auto& c : pop) sink += scorer.fitness(c, *ws);
+        EXPECT_EQ(gAllocations.load() - before, 0) << "projection " << int(projection);
+        EXPECT_NE(sink, 0.0);
+    }
 }
 
 }  // namespace
