@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "grammar/expression.hpp"
 
@@ -40,44 +41,63 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
     out.meshes = &g.meshes;
     if (c.empty()) return true;
     auto& stack = scratch.stack;
+    auto& scopes = scratch.scopes;
     stack.clear();
+    scopes.clear();
     scratch.params.resize(256);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
-    stack.push_back({0, 0, Scope{}, Scope{}});
+    scopes.push_back(Scope{});
+    stack.push_back({0, 0, 0, 0});
     std::size_t tasks = 0;
     while (!stack.empty()) {
         if (++tasks > 4 * maxPrimitives + 1024) return false;  // mirrors without boxes multiply too
         const DeriveScratch::Task task = stack.back();
         stack.pop_back();
+        // Every task still on the stack refers to scopes at or below this task's own one.
+        scopes.resize(task.scope + 1);
         const Rule& r = g.rules[c.rule(task.gene)];
-        for (std::uint32_t i = 0; i < r.paramFloats; ++i) params[i] = c.param(task.gene, r, i);
-        Scope s = task.scope, beforeTerminal;
-        const float* parentSize = &task.parent.size.x;
-        auto eval = [&](ExprRef e) { return evaluate(g, e, params, &s.size.x, parentSize, evalStack); };
-        for (std::uint32_t i = task.statement; i < r.statements.size(); ++i) {
+        if (r.paramFloats > 0)
+            std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
+        Scope s = scopes[task.scope], beforeTerminal;
+        const glm::vec3 parentSize = scopes[task.parent].size;
+        // Index of the stored scope equal to `s`, if the last one stored still is (children of
+        // consecutive child statements share it); UINT32_MAX when `s` changed since.
+        std::uint32_t stored = UINT32_MAX;
+        auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+        const std::uint32_t statements = std::uint32_t(r.statements.size());
+        for (std::uint32_t i = task.statement; i < statements; ++i) {
             const Statement& st = r.statements[i];
             switch (st.kind) {
             case StatementKind::Scale: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
                 s.size *= v;
+                stored = UINT32_MAX;
                 break;
             }
             case StatementKind::Size: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
                 s.size = v;
+                stored = UINT32_MAX;
                 break;
             }
             case StatementKind::Translate: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
                 s.origin += s.axes * v;
+                stored = UINT32_MAX;
                 break;
             }
-            case StatementKind::Rotate: s.axes = s.axes * axisRotation(st.axis, eval(st.expr[0])); break;
+            case StatementKind::Rotate:
+                s.axes = s.axes * axisRotation(st.axis, eval(st.expr[0]));
+                stored = UINT32_MAX;
+                break;
             case StatementKind::Mirror: {
-                DeriveScratch::Task mirrored{task.gene, i + 1, s, task.parent};
-                mirrored.scope.axes[st.axis] = -mirrored.scope.axes[st.axis];
-                stack.push_back(mirrored);
+                Scope mirrored = s;
+                mirrored.axes[st.axis] = -mirrored.axes[st.axis];
+                scopes.push_back(mirrored);
+                // the parent scope stays where it is: at or below task.scope
+                stack.push_back({task.gene, i + 1, std::uint32_t(scopes.size() - 1), task.parent});
+                stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
             case StatementKind::Box:
@@ -87,14 +107,19 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             case StatementKind::Mesh: {
                 // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
                 if (out.primitives.size() >= maxPrimitives) return false;
-                Primitive p{primitiveKind(st.kind), 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
+                Primitive& p = out.primitives.emplace_back();
+                p.kind = primitiveKind(st.kind);
+                p.mesh = 0;
+                p.taper = 1.0f;
+                p.centre = s.origin;
+                p.axes = s.axes;
+                p.half = glm::abs(s.size) * 0.5f;
                 if (st.kind == StatementKind::Cone) {
                     const float top = eval(st.expr[0]);
                     p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
                 } else if (st.kind == StatementKind::Mesh) {
                     p.mesh = st.slot;
                 }
-                out.primitives.push_back(p);
                 break;
             }
             case StatementKind::TerminalBegin:
@@ -104,12 +129,21 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                     beforeTerminal = s;
                 }
                 break;
-            case StatementKind::TerminalEnd: s = beforeTerminal; break;
+            case StatementKind::TerminalEnd:
+                s = beforeTerminal;
+                stored = UINT32_MAX;
+                break;
             case StatementKind::Child: {
                 const Slot& slot = r.slots[st.slot];
                 for (std::uint32_t k = slot.maxCount; k-- > 0;) {
                     const std::int32_t off = c.child(task.gene, slot.firstChild + k);
-                    if (off > 0) stack.push_back({task.gene + std::uint32_t(off), 0, s, s});
+                    if (off > 0) {
+                        if (stored == UINT32_MAX) {
+                            scopes.push_back(s);
+                            stored = std::uint32_t(scopes.size() - 1);
+                        }
+                        stack.push_back({task.gene + std::uint32_t(off), 0, stored, stored});
+                    }
                 }
                 break;
             }
