@@ -57,9 +57,20 @@ glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) {
     _mm_storeu_ps(f, Columns(a).times(v));
     return {f[0], f[1], f[2]};
 }
+/// glm::abs(v) * 0.5f lane by lane: glm's abs is `x >= 0 ? x : -x` (so -0 stays -0 and NaN flips sign).
+glm::vec3 halfAbs(const glm::vec3& v) {
+    const __m128 x = _mm_setr_ps(v.x, v.y, v.z, 0.0f);
+    const __m128 keep = _mm_cmpge_ps(x, _mm_setzero_ps());
+    const __m128 negated = _mm_xor_ps(x, _mm_set1_ps(-0.0f));
+    const __m128 a = _mm_or_ps(_mm_and_ps(keep, x), _mm_andnot_ps(keep, negated));
+    float f[4];
+    _mm_storeu_ps(f, _mm_mul_ps(a, _mm_set1_ps(0.5f)));
+    return {f[0], f[1], f[2]};
+}
 #else
 glm::mat3 multiply(const glm::mat3& a, const glm::mat3& b) { return a * b; }
 glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) { return a * v; }
+glm::vec3 halfAbs(const glm::vec3& v) { return glm::abs(v) * 0.5f; }
 #endif
 
 PrimitiveKind primitiveKind(StatementKind k) {
@@ -87,6 +98,8 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
     auto& scopes = scratch.scopes;
     stack.clear();
     scopes.clear();
+    // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
+    if (scopes.capacity() < stack.capacity()) scopes.reserve(stack.capacity());
     scratch.params.resize(256);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
@@ -108,9 +121,12 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
         // consecutive child statements share it); UINT32_MAX when `s` changed since.
         std::uint32_t stored = UINT32_MAX;
         auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+        // Local copies of pointers the pushes below might otherwise make the compiler reload.
+        const Statement* const statementList = r.statements.data();
         const std::uint32_t statements = std::uint32_t(r.statements.size());
+        const std::int32_t* const childOffsets = reinterpret_cast<const std::int32_t*>(c.words.data() + task.gene + 2);
         for (std::uint32_t i = task.statement; i < statements; ++i) {
-            const Statement& st = r.statements[i];
+            const Statement& st = statementList[i];
             switch (st.kind) {
             case StatementKind::Scale: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
@@ -156,7 +172,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                 p.taper = 1.0f;
                 p.centre = s.origin;
                 p.axes = s.axes;
-                p.half = glm::abs(s.size) * 0.5f;
+                p.half = halfAbs(s.size);
                 if (st.kind == StatementKind::Cone) {
                     const float top = eval(st.expr[0]);
                     p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
@@ -179,7 +195,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             case StatementKind::Child: {
                 const Slot& slot = r.slots[st.slot];
                 for (std::uint32_t k = slot.maxCount; k-- > 0;) {
-                    const std::int32_t off = c.child(task.gene, slot.firstChild + k);
+                    const std::int32_t off = childOffsets[slot.firstChild + k];
                     if (off > 0) {
                         if (stored == UINT32_MAX) {
                             scopes.push_back(s);
