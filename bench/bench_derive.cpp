@@ -1,12 +1,14 @@
 // bench_derive: throughput of derive() (chromosome -> primitives), the first half of every
 // fitness evaluation. Spaceship chromosomes of ~20, ~50 and 100 genes and coral chromosomes of
-// 100 and 1000 genes, each grown with a fixed seed; one DeriveScratch and one Geometry reused.
+// 100 and 1000 genes, each grown with a fixed seed, and a 50,000-gene tree.grammar chromosome (a
+// full ternary tree built breadth first); one DeriveScratch and one Geometry reused.
 // items_per_second = derivations/s; "primitives/s" = primitives emitted per second.
 //
 //   cd build && ninja bench_derive && taskset -c 1 ./bench/bench_derive --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <deque>
 #include <string>
 
 #include "genome/operators.hpp"
@@ -36,8 +38,32 @@ Chromosome grown(const Grammar& g, std::uint32_t genes, std::uint64_t seed) {
     return c;
 }
 
-void runDerive(benchmark::State& state, const Grammar& g) {
-    const Chromosome c = grown(g, std::uint32_t(state.range(0)), 42);
+const Grammar& tree() {
+    static const Grammar g = loadGrammar(SHAPEVO_SOURCE_DIR "/grammars/tree.grammar");
+    return g;
+}
+
+/// A full ternary tree.grammar chromosome of `genes` genes, built breadth first (child k of every
+/// branch is rule Bk), parameters drawn from the priors with a fixed seed.
+Chromosome fullTree(std::uint32_t genes) {
+    const Grammar& g = tree();
+    Rng rng(2024);
+    Chromosome c;
+    plantRoot(g, c, rng);
+    const std::uint16_t branch[3] = {std::uint16_t(g.findRule("B0")), std::uint16_t(g.findRule("B1")),
+                                     std::uint16_t(g.findRule("B2"))};
+    std::deque<std::uint32_t> open{0};
+    while (c.genes < genes && !open.empty()) {
+        const std::uint32_t parent = open.front();
+        open.pop_front();
+        const Rule& r = g.rules[c.rule(parent)];
+        for (std::uint32_t entry = 0; entry < r.childOffsets && c.genes < genes; ++entry)
+            open.push_back(appendGene(g, c, branch[entry % 3], parent, entry, rng));
+    }
+    return c;
+}
+
+void runDerive(benchmark::State& state, const Grammar& g, const Chromosome& c) {
     DeriveScratch scratch;
     Geometry geometry;
     derive(g, c, geometry, scratch);  // warm the buffers
@@ -55,11 +81,15 @@ void runDerive(benchmark::State& state, const Grammar& g) {
     state.counters["primitives"] = double(primitivesPerDerivation);
 }
 
-void BM_DeriveSpaceship(benchmark::State& state) { runDerive(state, spaceship()); }
-void BM_DeriveCoral(benchmark::State& state) { runDerive(state, coral()); }
+void BM_DeriveSpaceship(benchmark::State& state) {
+    runDerive(state, spaceship(), grown(spaceship(), std::uint32_t(state.range(0)), 42));
+}
+void BM_DeriveCoral(benchmark::State& state) { runDerive(state, coral(), grown(coral(), std::uint32_t(state.range(0)), 42)); }
+void BM_DeriveTree(benchmark::State& state) { runDerive(state, tree(), fullTree(std::uint32_t(state.range(0)))); }
 
 BENCHMARK(BM_DeriveSpaceship)->ArgName("genes")->Arg(20)->Arg(50)->Arg(100);
 BENCHMARK(BM_DeriveCoral)->ArgName("genes")->Arg(100)->Arg(1000);
+BENCHMARK(BM_DeriveTree)->ArgName("genes")->Arg(50000);
 
 }  // namespace
 

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "grammar/expression.hpp"
 
@@ -18,6 +22,57 @@ glm::mat3 axisRotation(int axis, float degrees) {
     default: return glm::mat3(c, s, 0, -s, c, 0, 0, 0, 1);
     }
 }
+#if defined(__SSE2__)
+// glm's mat3 * mat3 and mat3 * vec3 column by column in SSE lanes: every lane does the very same
+// float operations in the same order as glm (column j = (a0 * b[j].x + a1 * b[j].y) + a2 * b[j].z),
+// so the bits are the same, with a third of the instructions.
+static_assert(sizeof(glm::mat3) == 9 * sizeof(float), "glm::mat3 must be 9 packed floats");
+/// The three columns of `a` in lanes 0..2 (lane 3 is junk that no result uses).
+struct Columns {
+    __m128 c0, c1, c2;
+    explicit Columns(const glm::mat3& a) {
+        const float* f = &a[0][0];  // glm stores the 9 floats contiguously, column by column
+        c0 = _mm_loadu_ps(f);
+        c1 = _mm_loadu_ps(f + 3);
+        const __m128 tail = _mm_loadu_ps(f + 5);  // a12 a20 a21 a22: stays inside the matrix
+        c2 = _mm_shuffle_ps(tail, tail, _MM_SHUFFLE(0, 3, 2, 1));
+    }
+    __m128 times(const glm::vec3& b) const {
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(b.x)), _mm_mul_ps(c1, _mm_set1_ps(b.y))),
+                          _mm_mul_ps(c2, _mm_set1_ps(b.z)));
+    }
+};
+glm::mat3 multiply(const glm::mat3& a, const glm::mat3& b) {
+    const Columns ca(a);
+    float f[12];
+    _mm_storeu_ps(f, ca.times(b[0]));
+    _mm_storeu_ps(f + 3, ca.times(b[1]));
+    _mm_storeu_ps(f + 6, ca.times(b[2]));  // each store overwrites the junk lane of the one before
+    glm::mat3 r;
+    std::memcpy(&r[0][0], f, 9 * sizeof(float));
+    return r;
+}
+glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) {
+    float f[4];
+    _mm_storeu_ps(f, Columns(a).times(v));
+    return {f[0], f[1], f[2]};
+}
+/// glm::abs(v) * 0.5f lane by lane: glm's abs is `x >= 0 ? x : -x` (so -0 stays -0 and NaN flips sign).
+glm::vec3 halfAbs(const glm::vec3& v) {
+    const __m128 x = _mm_setr_ps(v.x, v.y, v.z, 0.0f);
+    const __m128 keep = _mm_cmpge_ps(x, _mm_setzero_ps());
+    const __m128 negated = _mm_xor_ps(x, _mm_set1_ps(-0.0f));
+    const __m128 a = _mm_or_ps(_mm_and_ps(keep, x), _mm_andnot_ps(keep, negated));
+    float f[4];
+    _mm_storeu_ps(f, _mm_mul_ps(a, _mm_set1_ps(0.5f)));
+    return {f[0], f[1], f[2]};
+}
+#else
+glm::mat3 multiply(const glm::mat3& a, const glm::mat3& b) { return a * b; }
+glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) { return a * v; }
+glm::vec3 halfAbs(const glm::vec3& v) { return glm::abs(v) * 0.5f; }
+#endif
+
 PrimitiveKind primitiveKind(StatementKind k) {
     switch (k) {
     case StatementKind::Cylinder: return PrimitiveKind::Cylinder;
@@ -40,44 +95,68 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
     out.meshes = &g.meshes;
     if (c.empty()) return true;
     auto& stack = scratch.stack;
+    auto& scopes = scratch.scopes;
     stack.clear();
+    scopes.clear();
+    // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
+    if (scopes.capacity() < stack.capacity()) scopes.reserve(stack.capacity());
     scratch.params.resize(256);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
-    stack.push_back({0, 0, Scope{}, Scope{}});
+    scopes.push_back(Scope{});
+    stack.push_back({0, 0, 0, 0});
     std::size_t tasks = 0;
     while (!stack.empty()) {
         if (++tasks > 4 * maxPrimitives + 1024) return false;  // mirrors without boxes multiply too
         const DeriveScratch::Task task = stack.back();
         stack.pop_back();
+        // Every task still on the stack refers to scopes at or below this task's own one.
+        scopes.resize(task.scope + 1);
         const Rule& r = g.rules[c.rule(task.gene)];
-        for (std::uint32_t i = 0; i < r.paramFloats; ++i) params[i] = c.param(task.gene, r, i);
-        Scope s = task.scope, beforeTerminal;
-        const float* parentSize = &task.parent.size.x;
-        auto eval = [&](ExprRef e) { return evaluate(g, e, params, &s.size.x, parentSize, evalStack); };
-        for (std::uint32_t i = task.statement; i < r.statements.size(); ++i) {
-            const Statement& st = r.statements[i];
+        if (r.paramFloats > 0)
+            std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
+        Scope s = scopes[task.scope], beforeTerminal;
+        const glm::vec3 parentSize = scopes[task.parent].size;
+        // Index of the stored scope equal to `s`, if the last one stored still is (children of
+        // consecutive child statements share it); UINT32_MAX when `s` changed since.
+        std::uint32_t stored = UINT32_MAX;
+        auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+        // Local copies of pointers the pushes below might otherwise make the compiler reload.
+        const Statement* const statementList = r.statements.data();
+        const std::uint32_t statements = std::uint32_t(r.statements.size());
+        const std::int32_t* const childOffsets = reinterpret_cast<const std::int32_t*>(c.words.data() + task.gene + 2);
+        for (std::uint32_t i = task.statement; i < statements; ++i) {
+            const Statement& st = statementList[i];
             switch (st.kind) {
             case StatementKind::Scale: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
                 s.size *= v;
+                stored = UINT32_MAX;
                 break;
             }
             case StatementKind::Size: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
                 s.size = v;
+                stored = UINT32_MAX;
                 break;
             }
             case StatementKind::Translate: {
                 const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
-                s.origin += s.axes * v;
+                s.origin += multiply(s.axes, v);
+                stored = UINT32_MAX;
                 break;
             }
-            case StatementKind::Rotate: s.axes = s.axes * axisRotation(st.axis, eval(st.expr[0])); break;
+            case StatementKind::Rotate:
+                s.axes = multiply(s.axes, axisRotation(st.axis, eval(st.expr[0])));
+                stored = UINT32_MAX;
+                break;
             case StatementKind::Mirror: {
-                DeriveScratch::Task mirrored{task.gene, i + 1, s, task.parent};
-                mirrored.scope.axes[st.axis] = -mirrored.scope.axes[st.axis];
-                stack.push_back(mirrored);
+                Scope mirrored = s;
+                mirrored.axes[st.axis] = -mirrored.axes[st.axis];
+                scopes.push_back(mirrored);
+                // the parent scope stays where it is: at or below task.scope
+                stack.push_back({task.gene, i + 1, std::uint32_t(scopes.size() - 1), task.parent});
+                stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
             case StatementKind::Box:
@@ -87,14 +166,19 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             case StatementKind::Mesh: {
                 // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
                 if (out.primitives.size() >= maxPrimitives) return false;
-                Primitive p{primitiveKind(st.kind), 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
+                Primitive& p = out.primitives.emplace_back();
+                p.kind = primitiveKind(st.kind);
+                p.mesh = 0;
+                p.taper = 1.0f;
+                p.centre = s.origin;
+                p.axes = s.axes;
+                p.half = halfAbs(s.size);
                 if (st.kind == StatementKind::Cone) {
                     const float top = eval(st.expr[0]);
                     p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
                 } else if (st.kind == StatementKind::Mesh) {
                     p.mesh = st.slot;
                 }
-                out.primitives.push_back(p);
                 break;
             }
             case StatementKind::TerminalBegin:
@@ -104,12 +188,21 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                     beforeTerminal = s;
                 }
                 break;
-            case StatementKind::TerminalEnd: s = beforeTerminal; break;
+            case StatementKind::TerminalEnd:
+                s = beforeTerminal;
+                stored = UINT32_MAX;
+                break;
             case StatementKind::Child: {
                 const Slot& slot = r.slots[st.slot];
                 for (std::uint32_t k = slot.maxCount; k-- > 0;) {
-                    const std::int32_t off = c.child(task.gene, slot.firstChild + k);
-                    if (off > 0) stack.push_back({task.gene + std::uint32_t(off), 0, s, s});
+                    const std::int32_t off = childOffsets[slot.firstChild + k];
+                    if (off > 0) {
+                        if (stored == UINT32_MAX) {
+                            scopes.push_back(s);
+                            stored = std::uint32_t(scopes.size() - 1);
+                        }
+                        stack.push_back({task.gene + std::uint32_t(off), 0, stored, stored});
+                    }
                 }
                 break;
             }

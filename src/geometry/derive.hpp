@@ -20,10 +20,13 @@ struct DeriveScratch {
     struct Task {
         std::uint32_t gene;
         std::uint32_t statement;  ///< first statement to run
-        Scope scope;              ///< current scope when the task starts
-        Scope parent;             ///< scope the gene received from its parent
+        std::uint32_t scope;      ///< index in `scopes`: current scope when the task starts
+        std::uint32_t parent;     ///< index in `scopes`: scope the gene received from its parent
     };
     std::vector<Task> stack;
+    /// Scopes the pending tasks start from, stored once per pushed batch of children (a stack:
+    /// entries above the popped task's own scope are no longer referenced).
+    std::vector<Scope> scopes;
     std::vector<float> params;
 };
 

@@ -62,6 +62,7 @@ void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::ve
         out[c].begin = std::uint32_t(code.size());
         emit(root, c, code);
         out[c].end = std::uint32_t(code.size());
+        classifyExpression(code, out[c]);
         int depth = 0, deepest = 0;
         for (std::uint32_t i = out[c].begin; i < out[c].end; ++i) {
             switch (code[i].op) {
@@ -261,8 +262,55 @@ void ExpressionCompiler::emit(int index, int c, std::vector<Instr>& code) const 
     }
 }
 
-float evaluate(const Grammar& g, ExprRef e, const float* params, const float* scopeSize, const float* parentSize,
-               float* stack) {
+void classifyExpression(const std::vector<Instr>& code, ExprRef& e) {
+    e.shape = ExprRef::Shape::Program;
+    // Postfix tokens: 'L' a leaf, 'o' a binary operation; a negated number folds into its leaf
+    // (negation is exact, so -(v) and the number -v are the same bits).
+    char pattern[6];
+    int tokens = 0, leaves = 0, ops = 0;
+    ExprRef f = e;
+    for (std::uint32_t i = e.begin; i < e.end; ++i) {
+        const Instr& in = code[i];
+        if (tokens == 5) return;
+        switch (in.op) {
+        case OpCode::Const:
+        case OpCode::Param:
+        case OpCode::ScopeSize:
+        case OpCode::ParentSize: {
+            if (leaves == 3) return;
+            const int k = leaves++;
+            f.source[k] = in.op == OpCode::Const   ? LeafSource::Const
+                          : in.op == OpCode::Param ? LeafSource::Param
+                          : in.op == OpCode::ScopeSize ? LeafSource::ScopeSize
+                                                       : LeafSource::ParentSize;
+            f.index[k] = in.op == OpCode::Const ? std::uint16_t(k) : in.op == OpCode::Param ? in.index : in.component;
+            f.value[k] = in.value;
+            pattern[tokens++] = 'L';
+            break;
+        }
+        case OpCode::Neg:
+            if (tokens == 0 || pattern[tokens - 1] != 'L' || f.source[leaves - 1] != LeafSource::Const) return;
+            f.value[leaves - 1] = -f.value[leaves - 1];
+            break;
+        case OpCode::Add: case OpCode::Sub: case OpCode::Mul: case OpCode::Div: case OpCode::Min: case OpCode::Max:
+            if (ops == 2) return;
+            f.op[ops++] = in.op;
+            pattern[tokens++] = 'o';
+            break;
+        default: return;  // abs, sin, ...: the stack machine
+        }
+    }
+    const std::string p(pattern, pattern + tokens);
+    if (p == "L") f.shape = ExprRef::Shape::Leaf;
+    else if (p == "LLo") f.shape = ExprRef::Shape::Binary;
+    else if (p == "LLoLo") f.shape = ExprRef::Shape::LeftNested;
+    else if (p == "LLLoo") f.shape = ExprRef::Shape::RightNested;
+    else return;
+    e = f;
+}
+
+float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+                      const float* parentSize, float* stack) {
     int top = -1;
     for (std::uint32_t i = e.begin; i < e.end; ++i) {
         const Instr& in = g.code[i];

@@ -1,6 +1,7 @@
 // Expression compiler: parses an arithmetic expression over parameters, attrs and the scope,
 // type-checks it (scalar or 3-vector) and emits one stack program per component.
 #pragma once
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -67,9 +68,40 @@ private:
     SourceLocation start_;
 };
 
+/// Fill in `e`'s small shape (ExprRef::Shape) from its instructions in `code`, or leave it a
+/// Program when it has none of the small shapes.
+void classifyExpression(const std::vector<Instr>& code, ExprRef& e);
+
+/// Evaluate a compiled scalar expression with the stack machine. `stack` must hold
+/// kMaxExpressionStack floats.
+float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+                      const float* parentSize, float* stack);
+
+/// One binary operation exactly as the stack machine does it.
+inline float applyBinary(OpCode op, float a, float b) {
+    switch (op) {
+    case OpCode::Add: return a + b;
+    case OpCode::Sub: return a - b;
+    case OpCode::Mul: return a * b;
+    case OpCode::Div: return a / b;
+    case OpCode::Min: return std::min(a, b);
+    default: return std::max(a, b);  // Max: classifyExpression admits no other operation
+    }
+}
+
 /// Evaluate a compiled scalar expression. `params` is the gene's parameter block; `stack` must
-/// hold kMaxExpressionStack floats.
-float evaluate(const Grammar& g, ExprRef e, const float* params, const float* scopeSize, const float* parentSize,
-               float* stack);
+/// hold kMaxExpressionStack floats. Small shapes skip the stack machine (same bits).
+inline float evaluate(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+                      const float* parentSize, float* stack) {
+    if (e.shape == ExprRef::Shape::Program) return evaluateProgram(g, e, params, scopeSize, parentSize, stack);
+    const float* const base[4] = {e.value, params, scopeSize, parentSize};  // indexed by LeafSource
+    const float a = base[int(e.source[0])][e.index[0]];
+    if (e.shape == ExprRef::Shape::Leaf) return a;
+    const float b = base[int(e.source[1])][e.index[1]];
+    if (e.shape == ExprRef::Shape::Binary) return applyBinary(e.op[0], a, b);
+    const float c = base[int(e.source[2])][e.index[2]];
+    if (e.shape == ExprRef::Shape::LeftNested) return applyBinary(e.op[1], applyBinary(e.op[0], a, b), c);
+    return applyBinary(e.op[1], a, applyBinary(e.op[0], b, c));  // RightNested
+}
 
 }  // namespace shapevo

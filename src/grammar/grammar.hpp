@@ -23,9 +23,20 @@ struct Instr {
     std::uint16_t index = 0;     ///< for Param: float index inside the gene's parameter block
     float value = 0.0f;          ///< for Const
 };
-/// A compiled scalar expression: instructions [begin, end) of Grammar::code.
+/// Where one leaf of a small expression (see ExprRef) reads its value.
+enum class LeafSource : std::uint8_t { Const, Param, ScopeSize, ParentSize };
+/// A compiled scalar expression: instructions [begin, end) of Grammar::code. The compiler also
+/// recognises the common small shapes over leaves (numbers, parameter floats, size components):
+/// `a`, `a op b`, `(a op b) op c` and `a op (b op c)`, and stores them here as well, so that
+/// evaluate() can skip the stack machine; the result is the same to the last bit.
 struct ExprRef {
+    enum class Shape : std::uint8_t { Program, Leaf, Binary, LeftNested, RightNested };
     std::uint32_t begin = 0, end = 0;
+    Shape shape = Shape::Program;                 ///< Program: only the instructions say what to do
+    OpCode op[2] = {OpCode::Add, OpCode::Add};    ///< op[0] inner (or only) operation, op[1] outer
+    LeafSource source[3] = {};                    ///< leaves a, b, c in source order
+    std::uint16_t index[3] = {};                  ///< Param: float index; sizes: component; Const: leaf number
+    float value[3] = {};                          ///< Const leaves' values (by leaf number)
 };
 
 enum class PriorKind : std::uint8_t { Uniform, Normal, Int, Choice };
