@@ -18,8 +18,15 @@
 //
 // Per row the crossings are computed once, sorted, and the runs where the number of crossings
 // ahead is odd are filled (rowRuns): the same voxels as the test, without testing each one.
-// For a closed mesh every row crosses an even number of triangles (the two triangles at an edge
-// never both claim it), so the runs are the pairs [c_0, c_1), [c_2, c_3), ...
+// With exact arithmetic every row crosses a closed mesh an even number of times (the rules never
+// let both triangles at an edge or around a vertex claim the point, nor none), so the runs are
+// the pairs [c_0, c_1), [c_2, c_3), ... In doubles the side tests are consistent per edge, but a
+// row passing within rounding of a projected vertex could still see an odd count; the definition
+// then puts everything before its first crossing inside, and rowRuns follows it (up to the
+// halo), so the rows stay exact even then. (The tests find no odd row, vertices on rows included.)
+//
+// Vertices are placed by the forward map c + sum_k axis_k * h_k * u_k; the other kinds project
+// onto the axes instead. The two agree for orthonormal axes, i.e. to ~1e-7 for float frames.
 #pragma once
 #include <array>
 #include <cmath>
