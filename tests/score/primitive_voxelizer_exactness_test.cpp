@@ -194,6 +194,68 @@ TEST(PrimitiveVoxelizerExactness, GridAlignedPrimitivesWithSurfacesThroughVoxelC
     }
 }
 
+TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendicularPrimitivesAreSafeAndExact) {
+    GridSpec grid;
+    grid.origin = {-1.0, -1.0, -1.0};
+    grid.voxelSize = 0.1;
+    grid.nx = grid.ny = grid.nz = 20;
+    Rng rng(77);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
+    Voxelizer vox(grid);
+    Geometry geometry;
+    geometry.meshes = &meshes;
+    const float c = std::cos(1e-5f), s = std::sin(1e-5f);
+    const glm::mat3 tilted(c, 0, s, 0, 1, 0, -s, 0, c), rotated(0.8f, 0.6f, 0, -0.6f, 0.8f, 0, 0, 0, 1);
+    std::vector<Primitive> cases;
+    std::vector<std::size_t> coverEverything;  // cases that cover the grid and the whole halo
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh}) {
+        for (std::uint16_t mesh = 0; mesh < (kind == PrimitiveKind::Mesh ? 2 : 1); ++mesh) {
+            Primitive p;
+            p.kind = kind;
+            p.mesh = mesh;
+            p.taper = 0.0f;
+            p.axes = rotated;
+            p.centre = {0, 0, 1e20f};  // far away: must not overflow or loop
+            cases.push_back(p);
+            p.centre = {0.05f, -0.05f, 0.1f};
+            p.half = {1e3f, 1e3f, 1e3f};  // huge
+            if (!(kind == PrimitiveKind::Mesh && mesh == 1)) coverEverything.push_back(cases.size());  // an L leaves a quarter
+            cases.push_back(p);
+            p.half = {-0.3f, -0.5f, -0.4f};  // negative half extents mean the same solid
+            cases.push_back(p);
+            p.half = {0.3f, 1e-30f, 0.4f};  // tiny but not zero
+            cases.push_back(p);
+            p.half = {0.3f, INFINITY, 0.4f};
+            cases.push_back(p);
+            p.half = {0.3f, 0.5f, 0.4f};
+            p.centre.x = NAN;
+            cases.push_back(p);
+            for (int i = 0; i < 20; ++i) {  // a tiny tilt: rows almost along an axis or a face
+                p.axes = tilted;
+                p.taper = float(rng.uniform());
+                p.centre = {float(rng.uniform() - 0.5), float(rng.uniform() - 0.5), float(rng.uniform() - 0.5)};
+                p.half = {float(0.1 + rng.uniform()), float(0.1 + rng.uniform()), float(0.1 + rng.uniform())};
+                cases.push_back(p);
+            }
+        }
+    }
+    std::uint64_t covered = 0;
+    for (std::size_t m = 0; m < cases.size(); ++m) {
+        geometry.primitives = {cases[m]};
+        VoxelCounts fast = vox.score(geometry, target);
+        const BruteForce slow = bruteForce(geometry, target);
+        fast.rows = 0;
+        EXPECT_EQ(fast, slow.counts) << "case " << m << " kind " << int(cases[m].kind);
+        covered += slow.counts.occupied;
+        if (std::find(coverEverything.begin(), coverEverything.end(), m) != coverEverything.end()) {
+            EXPECT_EQ(fast.occupied, 8000u) << "case " << m;
+            EXPECT_EQ(fast.outside, 27u * 8000u - 8000u) << "case " << m;
+        }
+    }
+    EXPECT_GT(covered, 100000u);
+}
+
 TEST(PrimitiveVoxelizerExactness, MeshPrimitiveWithoutItsMeshCoversNothing) {
     const GridSpec grid = testGrid();
     Rng rng(3);
