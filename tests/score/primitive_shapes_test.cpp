@@ -11,10 +11,7 @@
 #include <vector>
 
 #include "random_primitives.hpp"
-#include "score/cone_rows.hpp"
-#include "score/cylinder_rows.hpp"
 #include "score/mesh_rows.hpp"
-#include "score/sphere_rows.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {
@@ -125,11 +122,7 @@ TEST(PrimitiveShapes, RoundInsideTestsAgreeWithTheTextbookFormulasAwayFromTheSur
             Primitive p = test::randomPrimitive(kind, grid, rng);
             if (rng.below(8) == 0) p.half[int(rng.below(3))] = float(1e-4 * rng.uniform() + 1e-6);  // thin
             if (!(p.half.x > 0 && p.half.y > 0 && p.half.z > 0)) continue;
-            std::function<bool(double, double, double)> inside;
-            if (kind == PrimitiveKind::Cylinder) inside = [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-            if (kind == PrimitiveKind::Cone) inside = [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-            if (kind == PrimitiveKind::Sphere) inside = [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-            checkAgainstTextbook(p, inside, rng, checked, in, out);
+            checkAgainstTextbook(p, test::insideTest(p), rng, checked, in, out);
             if (testing::Test::HasFatalFailure()) return;
         }
         EXPECT_GT(checked, 170000) << "kind " << int(kind);

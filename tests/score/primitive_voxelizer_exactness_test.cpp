@@ -11,10 +11,7 @@
 #include <vector>
 
 #include "random_primitives.hpp"
-#include "score/cone_rows.hpp"
-#include "score/cylinder_rows.hpp"
 #include "score/mesh_rows.hpp"
-#include "score/sphere_rows.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {
@@ -44,13 +41,11 @@ void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, con
     } else {
         const double r = std::sqrt(double(p.half.x) * p.half.x + double(p.half.y) * p.half.y + double(p.half.z) * p.half.z);
         for (int j = 0; j < 3; ++j) lo[j] = p.centre[j] - r, hi[j] = p.centre[j] + r;
-        if (p.kind == PrimitiveKind::Box) inside = [s = BoxFrame::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Cylinder) inside = [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Cone) inside = [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Sphere) inside = [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+        inside = test::insideTest(p);
     }
     long first[3], last[3];
     for (int j = 0; j < 3; ++j) {
+        if (std::isnan(lo[j]) || std::isnan(hi[j])) return;  // a NaN centre: no centre is inside
         first[j] = long(std::clamp(std::floor((lo[j] - g.origin[j]) / g.voxelSize) - 3, double(-n[j]), double(2 * n[j])));
         last[j] = long(std::clamp(std::ceil((hi[j] - g.origin[j]) / g.voxelSize) + 3, double(-n[j] - 1), double(2 * n[j] - 1)));
     }
