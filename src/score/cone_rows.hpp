@@ -3,9 +3,10 @@
 // voxel-centre inside test and the chord of a voxel row (chord_rows.hpp explains why the test is
 // written per row and why that makes the row interval exact).
 //
-// Along a row, with dx an offset along it: (u.x, u.z) = A dx + B and r = rho dx + sigma, so the lateral
-// surface is one quadratic f(dx) = |A dx + B|^2 - (rho dx + sigma)^2 <= 0. Its solutions lie on
-// both nappes of the double cone; the frustum's nappe is the one with r >= 0.
+// Along a row, with dx an offset along it: (u.x, u.z) = A dx + B and r = rho dx + sigma, so the
+// lateral surface is one quadratic f(dx) = |A dx + B|^2 - (rho dx + sigma)^2 <= 0 (set up around
+// the row's point closest to the axis). Its solutions lie on both nappes of the double cone; the
+// frustum's nappe is the one with r >= 0, and the end caps' slab cuts it.
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -18,8 +18,15 @@
 //
 // Per row the crossings are computed once, sorted, and the runs where the number of crossings
 // ahead is odd are filled (rowRuns): the same voxels as the test, without testing each one.
-// For a closed mesh every row crosses an even number of triangles (the two triangles at an edge
-// never both claim it), so the runs are the pairs [c_0, c_1), [c_2, c_3), ...
+// With exact arithmetic every row crosses a closed mesh an even number of times (the rules never
+// let both triangles at an edge or around a vertex claim the point, nor none), so the runs are
+// the pairs [c_0, c_1), [c_2, c_3), ... In doubles the side tests are consistent per edge, but a
+// row passing within rounding of a projected vertex could still see an odd count; the definition
+// then puts everything before its first crossing inside, and rowRuns follows it (up to the
+// halo), so the rows stay exact even then. (The tests find no odd row, vertices on rows included.)
+//
+// Vertices are placed by the forward map c + sum_k axis_k * h_k * u_k; the other kinds project
+// onto the axes instead. The two agree for orthonormal axes, i.e. to ~1e-7 for float frames.
 #pragma once
 #include <array>
 #include <cmath>
@@ -76,21 +83,8 @@ public:
 
     /// Does row (y, z) cross triangle t, and where? (The crossing rule described above.)
     bool crossing(std::size_t t, double y, double z, double& x) const {
-        const auto& tri = shape_->triangles[t];
-        const Vertex& v0 = world_[tri[0]];
-        const Vertex& v1 = world_[tri[1]];
-        const Vertex& v2 = world_[tri[2]];
-        if (!(y >= std::min({v0[1], v1[1], v2[1]}) && y < std::max({v0[1], v1[1], v2[1]}))) return false;
-        if (!(z >= std::min({v0[2], v1[2], v2[2]}) && z < std::max({v0[2], v1[2], v2[2]}))) return false;
-        double e0, e1, e2;  // edge functions; e_i belongs to the edge opposite vertex i
-        const int s0 = edgeSide(v1, v2, y, z, e0);
-        const int s1 = edgeSide(v2, v0, y, z, e1);
-        if (s1 != s0) return false;
-        const int s2 = edgeSide(v0, v1, y, z, e2);
-        if (s2 != s0) return false;
-        const double sum = e0 + e1 + e2;
-        x = sum != 0.0 ? (e0 * v0[0] + e1 * v1[0] + e2 * v2[0]) / sum : v0[0];
-        return true;
+        const Corners c = corners(t);
+        return c.inBox(y, z) && crossingInBox(c, y, z, x);
     }
 
     /// The voxel-centre test: does the +x ray from (x, y, z) cross an odd number of triangles?
@@ -104,30 +98,33 @@ public:
     }
 
     /// Append the crossings of rows y in [y0, y1], z in [z0, z1] (grid indices) to `out`, with
-    /// row key (z - z0) * (y1 - y0 + 1) + (y - y0). Visits only the rows in each triangle's
+    /// row key (z - z0) * (y1 - y0 + 1) + (y - y0): crossing() on the rows near each triangle's
     /// bounding box, so the work is proportional to the rows the surface covers.
     void collectCrossings(const GridSpec& grid, long y0, long y1, long z0, long z1, std::vector<RowCrossing>& out) const {
         const std::uint32_t ny = std::uint32_t(y1 - y0 + 1);
         const double perUnit = 1.0 / grid.voxelSize;
-        auto rowRange = [&](int axis, long first, long last, double vmin, double vmax, long& a, long& b) {
-            const double base = -grid.origin[axis] * perUnit - 0.5;
-            a = firstTrue(first, last, base + vmin * perUnit, [&](long i) { return grid.centre(axis, i) >= vmin; });
-            b = firstTrue(first, last, base + vmax * perUnit, [&](long i) { return grid.centre(axis, i) >= vmax; }) - 1;
-            return a <= b;
+        // Rows whose centre may lie in [vmin, vmax): a superset by kSlack index units (rounding
+        // is ~1e-13 of them), so that crossing()'s exact test is the only one that decides.
+        constexpr double kSlack = 1e-3;
+        auto rows = [&](int axis, long first, long last, double vmin, double vmax, long& a, long& b) {
+            const double base = -grid.origin[axis] * perUnit - 0.5;  // index of a centre at v: base + v / voxel
+            const double ta = std::max(std::ceil(base + vmin * perUnit - kSlack), double(first));
+            const double tb = std::min(std::ceil(base + vmax * perUnit + kSlack) - 1.0, double(last));
+            if (!(ta <= tb)) return false;
+            a = long(ta);
+            b = long(tb);
+            return true;
         };
         for (std::size_t t = 0; t < triangles(); ++t) {
-            const auto& tri = shape_->triangles[t];
-            const Vertex& v0 = world_[tri[0]];
-            const Vertex& v1 = world_[tri[1]];
-            const Vertex& v2 = world_[tri[2]];
+            const Corners c = corners(t);
             long ya, yb, za, zb;
-            if (!rowRange(1, y0, y1, std::min({v0[1], v1[1], v2[1]}), std::max({v0[1], v1[1], v2[1]}), ya, yb)) continue;
-            if (!rowRange(2, z0, z1, std::min({v0[2], v1[2], v2[2]}), std::max({v0[2], v1[2], v2[2]}), za, zb)) continue;
+            if (!rows(1, y0, y1, c.ymin, c.ymax, ya, yb) || !rows(2, z0, z1, c.zmin, c.zmax, za, zb)) continue;
             for (long z = za; z <= zb; ++z) {
                 const double cz = grid.centre(2, z);
                 for (long y = ya; y <= yb; ++y) {
+                    const double cy = grid.centre(1, y);
                     double x;
-                    if (crossing(t, grid.centre(1, y), cz, x))
+                    if (c.inBox(cy, cz) && crossingInBox(c, cy, cz, x))
                         out.push_back({std::uint32_t(z - z0) * ny + std::uint32_t(y - y0), x});
                 }
             }
@@ -135,6 +132,30 @@ public:
     }
 
 private:
+    /// A triangle's world corners and the half-open bounding box of its y-z projection.
+    struct Corners {
+        const Vertex *v0, *v1, *v2;
+        double ymin, ymax, zmin, zmax;
+        bool inBox(double y, double z) const { return y >= ymin && y < ymax && z >= zmin && z < zmax; }
+    };
+    Corners corners(std::size_t t) const {
+        const auto& tri = shape_->triangles[t];
+        const Vertex &v0 = world_[tri[0]], &v1 = world_[tri[1]], &v2 = world_[tri[2]];
+        return {&v0, &v1, &v2, std::min({v0[1], v1[1], v2[1]}), std::max({v0[1], v1[1], v2[1]}),
+                std::min({v0[2], v1[2], v2[2]}), std::max({v0[2], v1[2], v2[2]})};
+    }
+    /// The rest of the crossing rule, for a point in the triangle's box.
+    static bool crossingInBox(const Corners& c, double y, double z, double& x) {
+        double e0, e1, e2;  // edge functions; e_i belongs to the edge opposite vertex i
+        const int s0 = edgeSide(*c.v1, *c.v2, y, z, e0);
+        const int s1 = edgeSide(*c.v2, *c.v0, y, z, e1);
+        if (s1 != s0) return false;
+        const int s2 = edgeSide(*c.v0, *c.v1, y, z, e2);
+        if (s2 != s0) return false;
+        const double sum = e0 + e1 + e2;
+        x = sum != 0.0 ? (e0 * (*c.v0)[0] + e1 * (*c.v1)[0] + e2 * (*c.v2)[0]) / sum : (*c.v0)[0];
+        return true;
+    }
     /// Side of the directed edge a -> b that point (y, z) lies on in the y-z plane (+1 left,
     /// -1 right) and the edge function e (twice the signed area of a, b, point).
     static int edgeSide(const Vertex& a, const Vertex& b, double y, double z, double& e) {

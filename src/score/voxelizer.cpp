@@ -135,16 +135,25 @@ void Voxelizer::addMesh(const Primitive& p, const MeshShape& shape, VoxelCounts&
     counts.rows += std::uint64_t(last[1] - first[1] + 1) * std::uint64_t(last[2] - first[2] + 1);
     crossings_.clear();
     mesh_.collectCrossings(grid_, first[1], last[1], first[2], last[2], crossings_);
-    std::sort(crossings_.begin(), crossings_.end());
+    // Bucket the crossings by row (a counting sort: the row keys are dense), then sort each
+    // row's few crossings by x.
+    const std::uint32_t ny = std::uint32_t(last[1] - first[1] + 1);
+    const std::size_t rows = std::size_t(ny) * std::size_t(last[2] - first[2] + 1);
+    rowEnd_.assign(rows + 1, 0);
+    for (const RowCrossing& c : crossings_) ++rowEnd_[c.row + 1];
+    for (std::size_t r = 0; r < rows; ++r) rowEnd_[r + 1] += rowEnd_[r];  // now: where row r starts
+    byRow_.resize(crossings_.size());
+    for (const RowCrossing& c : crossings_) byRow_[rowEnd_[c.row]++] = c;  // afterwards: where row r ends
     // Runs may start before a row's first crossing only if it crosses an odd number of
     // triangles (never for a closed mesh); the whole halo keeps even that case exact.
     const long xFirst = -long(grid_.nx), xLast = 2 * long(grid_.nx) - 1;
-    const std::uint32_t ny = std::uint32_t(last[1] - first[1] + 1);
-    for (std::size_t b = 0, e; b < crossings_.size(); b = e) {
-        const std::uint32_t row = crossings_[b].row;
-        for (e = b + 1; e < crossings_.size() && crossings_[e].row == row;) ++e;
-        const long y = first[1] + long(row % ny), z = first[2] + long(row / ny);
-        rowRuns(&crossings_[b], e - b, grid_, xFirst, xLast, [&](long lo, long hi) { addRow(y, z, lo, hi, counts); });
+    for (std::uint32_t r = 0, begin = 0; r < rows; begin = rowEnd_[r], ++r) {
+        const std::uint32_t end = rowEnd_[r];
+        if (begin == end) continue;
+        RowCrossing* c = byRow_.data() + begin;
+        std::sort(c, c + (end - begin));
+        const long y = first[1] + long(r % ny), z = first[2] + long(r / ny);
+        rowRuns(c, end - begin, grid_, xFirst, xLast, [&](long lo, long hi) { addRow(y, z, lo, hi, counts); });
     }
 }
 

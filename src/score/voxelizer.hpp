@@ -62,7 +62,9 @@ private:
     std::vector<std::int32_t> yMin_, yMax_;  ///< per z slice: written rows, yMin > yMax if none
     std::vector<std::uint32_t> slices_;      ///< z slices with rows written, in first-touch order
     MeshSolid mesh_;                         ///< the mesh being voxelized (its vertex buffer is reused)
-    std::vector<RowCrossing> crossings_;     ///< its row crossings (reused)
+    std::vector<RowCrossing> crossings_;     ///< its row crossings (reused), in triangle order
+    std::vector<RowCrossing> byRow_;         ///< the same, bucketed by row
+    std::vector<std::uint32_t> rowEnd_;      ///< per row: end of its bucket in byRow_
 };
 
 }  // namespace shapevo

@@ -11,10 +11,7 @@
 #include <vector>
 
 #include "random_primitives.hpp"
-#include "score/cone_rows.hpp"
-#include "score/cylinder_rows.hpp"
 #include "score/mesh_rows.hpp"
-#include "score/sphere_rows.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {
@@ -44,13 +41,11 @@ void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, con
     } else {
         const double r = std::sqrt(double(p.half.x) * p.half.x + double(p.half.y) * p.half.y + double(p.half.z) * p.half.z);
         for (int j = 0; j < 3; ++j) lo[j] = p.centre[j] - r, hi[j] = p.centre[j] + r;
-        if (p.kind == PrimitiveKind::Box) inside = [s = BoxFrame::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Cylinder) inside = [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Cone) inside = [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
-        if (p.kind == PrimitiveKind::Sphere) inside = [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+        inside = test::insideTest(p);
     }
     long first[3], last[3];
     for (int j = 0; j < 3; ++j) {
+        if (std::isnan(lo[j]) || std::isnan(hi[j])) return;  // a NaN centre: no centre is inside
         first[j] = long(std::clamp(std::floor((lo[j] - g.origin[j]) / g.voxelSize) - 3, double(-n[j]), double(2 * n[j])));
         last[j] = long(std::clamp(std::ceil((hi[j] - g.origin[j]) / g.voxelSize) + 3, double(-n[j] - 1), double(2 * n[j] - 1)));
     }
@@ -192,6 +187,68 @@ TEST(PrimitiveVoxelizerExactness, GridAlignedPrimitivesWithSurfacesThroughVoxelC
         SCOPED_TRACE(int(kind));
         expectEveryTerm(compareWithBruteForce({kind}, testGrid(), 1000, 16 + std::uint64_t(kind), true));
     }
+}
+
+TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendicularPrimitivesAreSafeAndExact) {
+    GridSpec grid;
+    grid.origin = {-1.0, -1.0, -1.0};
+    grid.voxelSize = 0.1;
+    grid.nx = grid.ny = grid.nz = 20;
+    Rng rng(77);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
+    Voxelizer vox(grid);
+    Geometry geometry;
+    geometry.meshes = &meshes;
+    const float c = std::cos(1e-5f), s = std::sin(1e-5f);
+    const glm::mat3 tilted(c, 0, s, 0, 1, 0, -s, 0, c), rotated(0.8f, 0.6f, 0, -0.6f, 0.8f, 0, 0, 0, 1);
+    std::vector<Primitive> cases;
+    std::vector<std::size_t> coverEverything;  // cases that cover the grid and the whole halo
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh}) {
+        for (std::uint16_t mesh = 0; mesh < (kind == PrimitiveKind::Mesh ? 2 : 1); ++mesh) {
+            Primitive p;
+            p.kind = kind;
+            p.mesh = mesh;
+            p.taper = 0.0f;
+            p.axes = rotated;
+            p.centre = {0, 0, 1e20f};  // far away: must not overflow or loop
+            cases.push_back(p);
+            p.centre = {0.05f, -0.05f, 0.1f};
+            p.half = {1e3f, 1e3f, 1e3f};  // huge
+            if (!(kind == PrimitiveKind::Mesh && mesh == 1)) coverEverything.push_back(cases.size());  // an L leaves a quarter
+            cases.push_back(p);
+            p.half = {-0.3f, -0.5f, -0.4f};  // negative half extents mean the same solid
+            cases.push_back(p);
+            p.half = {0.3f, 1e-30f, 0.4f};  // tiny but not zero
+            cases.push_back(p);
+            p.half = {0.3f, INFINITY, 0.4f};
+            cases.push_back(p);
+            p.half = {0.3f, 0.5f, 0.4f};
+            p.centre.x = NAN;
+            cases.push_back(p);
+            for (int i = 0; i < 20; ++i) {  // a tiny tilt: rows almost along an axis or a face
+                p.axes = tilted;
+                p.taper = float(rng.uniform());
+                p.centre = {float(rng.uniform() - 0.5), float(rng.uniform() - 0.5), float(rng.uniform() - 0.5)};
+                p.half = {float(0.1 + rng.uniform()), float(0.1 + rng.uniform()), float(0.1 + rng.uniform())};
+                cases.push_back(p);
+            }
+        }
+    }
+    std::uint64_t covered = 0;
+    for (std::size_t m = 0; m < cases.size(); ++m) {
+        geometry.primitives = {cases[m]};
+        VoxelCounts fast = vox.score(geometry, target);
+        const BruteForce slow = bruteForce(geometry, target);
+        fast.rows = 0;
+        EXPECT_EQ(fast, slow.counts) << "case " << m << " kind " << int(cases[m].kind);
+        covered += slow.counts.occupied;
+        if (std::find(coverEverything.begin(), coverEverything.end(), m) != coverEverything.end()) {
+            EXPECT_EQ(fast.occupied, 8000u) << "case " << m;
+            EXPECT_EQ(fast.outside, 27u * 8000u - 8000u) << "case " << m;
+        }
+    }
+    EXPECT_GT(covered, 100000u);
 }
 
 TEST(PrimitiveVoxelizerExactness, MeshPrimitiveWithoutItsMeshCoversNothing) {

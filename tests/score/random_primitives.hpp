@@ -1,14 +1,20 @@
 // Test helpers for the voxelizer tests of every primitive kind: random frames (rotations,
 // mirrors, axis-aligned and grid-aligned placements), random primitives of a kind, two closed
-// meshes (an octahedron and a non-convex L-shaped prism) and a random fill/avoid target.
+// meshes (an octahedron and a non-convex L-shaped prism), a random fill/avoid target and the
+// voxel-centre test of a box or round primitive as one callable.
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
 #include "genome/random.hpp"
 #include "geometry/primitive.hpp"
+#include "score/box_rows.hpp"
+#include "score/cone_rows.hpp"
+#include "score/cylinder_rows.hpp"
+#include "score/sphere_rows.hpp"
 #include "score/volume_target.hpp"
 
 namespace shapevo::test {
@@ -119,6 +125,18 @@ inline VolumeTarget randomTarget(const GridSpec& grid, Rng& rng) {
                 else if (u < 0.4) t.avoid[w] |= 1ULL << (x & 63), ++t.avoidCount;
             }
     return t;
+}
+
+/// The inside test of a box, cylinder, cone or sphere (the very functions the voxelizer uses).
+inline std::function<bool(double, double, double)> insideTest(const Primitive& p) {
+    switch (p.kind) {
+    case PrimitiveKind::Box: return [s = BoxFrame::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Cylinder: return [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Cone: return [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Sphere: return [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Mesh: break;
+    }
+    return {};
 }
 
 }  // namespace shapevo::test
