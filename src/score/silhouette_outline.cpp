@@ -98,6 +98,17 @@ OutlineBuilder::Homogeneous OutlineBuilder::LocalMap::apply(const glm::dvec3& u)
     return {r[0], r[1], r[2], r[3]};
 }
 
+double OutlineBuilder::projectedRadius(const Homogeneous& c, const Homogeneous& a, const Homogeneous& b) {
+    // p(t) - p(c) = (dx - p(c) dw) / (c.w + dw) with (dx, dw) = cos t (a.x, a.w) + sin t (b.x, b.w):
+    // the numerator is at most the Frobenius norm of [J a, J b] times c.w, |dw| at most rho.
+    const double rho = std::sqrt(a.w * a.w + b.w * b.w);
+    if (!(c.w > 2.0 * rho)) return INFINITY;  // (NaN too)
+    const double px = c.x / c.w, py = c.y / c.w;
+    const double ax = a.x - px * a.w, ay = a.y - py * a.w, bx = b.x - px * b.w, by = b.y - py * b.w;
+    const double r = std::sqrt(ax * ax + ay * ay + bx * bx + by * by) / (c.w - rho);
+    return std::isfinite(r) ? r : INFINITY;
+}
+
 OutlineBuilder::OutlineBuilder(const Camera& camera)
     : camera_(camera), width_(camera.width()), height_(camera.height()) {
     const std::vector<glm::dvec2> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, round = roundTable(kRoundSides);
@@ -114,13 +125,17 @@ OutlineBuilder::OutlineBuilder(const Camera& camera)
     squareRing_.normals = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
     squareRing_.apothem = 1.0;
     squareRing_.reach = std::sqrt(2.0);
-    roundRing_.corners = round;
-    for (int k = 0; k < kRoundSides; ++k) {
-        const double a = 2.0 * M_PI * (k + 0.5) / kRoundSides;
-        roundRing_.normals.push_back({std::cos(a), std::sin(a)});
+    for (int level = 0; level < kRoundLevels; ++level) {  // 16, 8, 4 corners: every 1st, 2nd, 4th
+        const int sides = kRoundSides >> level;
+        RingTable& t = roundRings_[level];
+        for (int k = 0; k < sides; ++k) {
+            t.corners.push_back(round[std::size_t(k << level)]);
+            const double a = 2.0 * M_PI * (k + 0.5) / sides;
+            t.normals.push_back({std::cos(a), std::sin(a)});
+        }
+        t.apothem = std::cos(M_PI / sides);
+        t.reach = 1.0;
     }
-    roundRing_.apothem = std::cos(M_PI / kRoundSides);
-    roundRing_.reach = 1.0;
 }
 
 bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
@@ -131,14 +146,15 @@ bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
         a[j][3] = p.centre[j];
     }
     const double(*rows)[4] = camera_.rows();
+    double sum = 0.0;  // not finite if any entry is not
     for (int r = 0; r < 4; ++r) {
         const double* c = r < 3 ? rows[r] : camera_.clipPlane();
         for (int k = 0; k < 4; ++k) {
             map.m[r][k] = c[0] * a[0][k] + c[1] * a[1][k] + c[2] * a[2][k] + (k == 3 ? c[3] : 0.0);
-            if (!std::isfinite(map.m[r][k])) return false;
+            sum += map.m[r][k] * 0.0;  // 0 for numbers, NaN for infinities and NaN
         }
     }
-    return true;
+    return sum == 0.0;
 }
 
 bool OutlineBuilder::prepare(const Primitive& p, const std::vector<MeshShape>* meshes) {
@@ -155,11 +171,11 @@ bool OutlineBuilder::coverBound(int& x0, int& x1, int& y0, int& y1) const {
     // The box u in [-1, 1]^3 holds every kind's points; all of its corners in front?
     if (!(m[3][3] - std::fabs(m[3][0]) - std::fabs(m[3][1]) - std::fabs(m[3][2]) >= 0.0)) return false;
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-    for (int c = 0; c < 8; ++c) {
+    for (int c = 0; c < 8; ++c) {  // the projected corners
         const double u = c & 1 ? 1.0 : -1.0, v = c & 2 ? 1.0 : -1.0, w = c & 4 ? 1.0 : -1.0;
-        const double hw = m[2][0] * u + m[2][1] * v + m[2][2] * w + m[2][3];
-        const double x = (m[0][0] * u + m[0][1] * v + m[0][2] * w + m[0][3]) / hw;
-        const double y = (m[1][0] * u + m[1][1] * v + m[1][2] * w + m[1][3]) / hw;
+        const double inverse = 1.0 / (m[2][0] * u + m[2][1] * v + m[2][2] * w + m[2][3]);
+        const double x = (m[0][0] * u + m[0][1] * v + m[0][2] * w + m[0][3]) * inverse;
+        const double y = (m[1][0] * u + m[1][1] * v + m[1][2] * w + m[1][3]) * inverse;
         xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
     }
     if (!(xmin <= xmax && ymin <= ymax)) return false;  // NaN
@@ -173,18 +189,19 @@ bool OutlineBuilder::coverBound(int& x0, int& x1, int& y0, int& y1) const {
 }
 
 void OutlineBuilder::addPrepared(Outline& out) {
+    lastRoundPoints_ = 0;
     if (!prepared_) return;
     const Primitive& p = *prepared_;
     const LocalMap& map = map_;
     switch (p.kind) {
     case PrimitiveKind::Box:
-        if (!addRingsFast(map, squareRing_, 1.0, out)) addConvex(map, box_, out);
+        if (!addRingsFast(map, &squareRing_, 1.0, out)) addConvex(map, box_, out);
         break;
     case PrimitiveKind::Cylinder:
-        if (!addRingsFast(map, roundRing_, 1.0, out)) addConvex(map, prism_, out);
+        if (!addRingsFast(map, nullptr, 1.0, out)) addConvex(map, prism_, out);
         break;
     case PrimitiveKind::Cone:
-        if (addRingsFast(map, roundRing_, std::clamp(double(p.taper), 0.0, 1.0), out)) break;  // (NaN: 0)
+        if (addRingsFast(map, nullptr, std::clamp(double(p.taper), 0.0, 1.0), out)) break;  // (NaN: 0)
         if (!(p.taper > 0.0f)) {
             addConvex(map, pyramid_, out);
         } else {
@@ -310,24 +327,33 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
         pa[r] = map.m[r][0] * ra.x + map.m[r][1] * ra.y + map.m[r][2] * ra.z;
         pb[r] = map.m[r][0] * rb.x + map.m[r][1] * rb.y + map.m[r][2] * rb.z;
     }
-    h_.resize(kSphereSides);
+    auto point = [&](int k) {
+        const glm::dvec2 cs = sphereRing_[std::size_t(k)];
+        return Homogeneous{hc.x + cs.x * ha.x + cs.y * hb.x, hc.y + cs.x * ha.y + cs.y * hb.y,
+                           hc.w + cs.x * ha.w + cs.y * hb.w, hc.clip + cs.x * ha.clip + cs.y * hb.clip};
+    };
+    const double pixels = projectedRadius(hc, ha, hb);
+    int level = 0;
+    while (level + 1 < kRoundLevels && pixels <= kSphereLevelRadius[level + 1]) ++level;
+    const int points = kSphereSides >> level;
     const std::size_t first = out.points.size();
-    out.points.resize(first + kSphereSides);
+    out.points.resize(first + std::size_t(points));
     FixedPoint* pts = out.points.data() + first;
     bool fast = true;
-    for (int k = 0; k < kSphereSides; ++k) {
-        const glm::dvec2 cs = sphereRing_[std::size_t(k)];
-        Homogeneous& q = h_[std::size_t(k)];
-        q = {hc.x + cs.x * ha.x + cs.y * hb.x, hc.y + cs.x * ha.y + cs.y * hb.y, hc.w + cs.x * ha.w + cs.y * hb.w,
-             hc.clip + cs.x * ha.clip + cs.y * hb.clip};
+    for (int k = 0; k < points && fast; ++k) {
+        const Homogeneous q = point(k << level);
         const double inv = 1.0 / q.w, x = q.x * inv, y = q.y * inv;
-        fast = fast && insideGuard(x, y);
-        if (fast) pts[k] = snapToFixed(x, y);
+        fast = insideGuard(x, y);
+        pts[k] = snapToFixed(fast ? x : 0.0, fast ? y : 0.0);
     }
     if (fast) {
-        out.pieces.push_back({std::uint32_t(first), std::uint32_t(kSphereSides), 1, std::uint16_t(kSphereSides)});
+        out.pieces.push_back({std::uint32_t(first), std::uint32_t(points), 1, std::uint16_t(points)});
+        lastRoundPoints_ = points;
         return;
     }
+    // Reaching beyond the guard band: every point, clipped
+    h_.resize(kSphereSides);
+    for (int k = 0; k < kSphereSides; ++k) h_[std::size_t(k)] = point(k);
     out.points.resize(first);
     addClippedPiece(h_.data(), h_.size(), true, out);
 }

@@ -21,6 +21,13 @@
 //    sphere frame: a polygon inscribed in the exact outline (about 0.6 % less area). A sphere that
 //    is cut by the near plane / the ground, or that is flat (a half extent of 0), is drawn as its
 //    UV polyhedron instead: kRoundSides meridians, kRoundSides / 2 latitude bands.
+//  - Level of detail: a ring that projects small is drawn with every 2nd or every 4th of its
+//    corners (8 or 4 instead of kRoundSides = 16; the sphere's contact curve with 16 or 8 of its 32
+//    points): the fewest that keep the polygon within 1/4 pixel of the full one. The ring's pixel
+//    radius is bounded by projectedRadius() below; 8 corners lie within 0.0761 radius of the
+//    16-gon, 4 within 0.293 (the sphere: 16 points within 0.0192, 8 within 0.0761 of the circle).
+//    The fewer corners are a subset of the full ones, so the drawn polygon lies inside the full
+//    one. Primitives that take the cut or guard-band path keep every corner.
 //  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
 // Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
 // whose vertices are its vertices in front plus the points where its edges cross the plane.
@@ -51,6 +58,14 @@ inline FixedPoint snapToFixed(double x, double y) {
     return {std::int32_t(std::floor(x * double(kSubpixels) + 0.5)), std::int32_t(std::floor(y * double(kSubpixels) + 0.5))};
 }
 inline constexpr double kGuardBand = 16384.0;
+/// Levels of detail for rings: kRoundSides >> level corners, level 0 .. kRoundLevels - 1.
+inline constexpr int kRoundLevels = 3;
+/// Largest pixel radius (projectedRadius) drawn at level 1 and 2 (8 and 4 ring corners): left-out
+/// corners stay within 1/4 pixel (0.0761 r and 0.293 r from the chords that replace them).
+inline constexpr double kRingLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.0761, 0.25 / 0.293};
+/// The same for the sphere's contact curve (kSphereSides points; levels 1, 2: 16 and 8 points
+/// within 0.0192 r and 0.0761 r of the circle).
+inline constexpr double kSphereLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.0192, 0.25 / 0.0761};
 inline constexpr int kSphereSides = 2 * kRoundSides;
 static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 32-bit masks");
 
@@ -95,6 +110,14 @@ public:
     struct Homogeneous {
         double x, y, w, clip;  ///< homogeneous pixel coordinates and the signed clip distance
     };
+    /// An upper bound on how far (in pixels) the points c + cos(t) a + sin(t) b of an ellipse in
+    /// homogeneous coordinates project from the projection of c: |J a|, |J b| with J the
+    /// projection's derivative at c, over the least w on the ellipse. Infinity if w varies by
+    /// half or more over it (then no level of detail applies) or the numbers are not finite.
+    static double projectedRadius(const Homogeneous& c, const Homogeneous& a, const Homogeneous& b);
+    /// Ring corners (kRoundSides >> level) or sphere contact-curve points the last round primitive
+    /// given to addPrepared was drawn with; 0 after boxes and meshes and on the cut path.
+    int lastRoundPoints() const { return lastRoundPoints_; }
     struct UnitShape {
         std::vector<glm::dvec3> vertices;  ///< local (u) coordinates; rings first, then loose points
         std::vector<std::uint16_t> edges;  ///< pairs of vertex indices
@@ -120,9 +143,10 @@ private:
     /// camera, (e, 0) with e along the rays for parallel ones. False if the frame is degenerate.
     bool localEye(const LocalMap& map, glm::dvec3& e, double& ew) const;
     /// Silhouette vertices of a two-ring shape (bottom ring radius 1 at u.y = -1, top ring radius
-    /// topScale at u.y = 1; topScale 0: an apex), in loop order. False (nothing added) if the
-    /// shape reaches behind the clip plane or beyond the guard band, or the frame is degenerate.
-    bool addRingsFast(const LocalMap& map, const RingTable& table, double topScale, Outline& out);
+    /// topScale at u.y = 1; topScale 0: an apex), in loop order. `table` null: a round ring, its
+    /// level of detail chosen by size. False (nothing added) if the shape reaches behind the clip
+    /// plane or beyond the guard band, or the frame is degenerate.
+    bool addRingsFast(const LocalMap& map, const RingTable* table, double topScale, Outline& out);
     void addConvex(const LocalMap& map, const UnitShape& shape, Outline& out);
     void addSphere(const LocalMap& map, const Primitive& p, Outline& out);
     void addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out);
@@ -138,7 +162,8 @@ private:
     const Primitive* prepared_ = nullptr;
     const std::vector<MeshShape>* meshes_ = nullptr;
     UnitShape box_, prism_, pyramid_, uvSphere_;
-    RingTable squareRing_, roundRing_;
+    RingTable squareRing_, roundRings_[kRoundLevels];
+    int lastRoundPoints_ = 0;
     UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
     std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
     std::vector<Homogeneous> h_, cut_;

@@ -3,6 +3,7 @@
 // an unseen one (the silhouette), put them in loop order (one arc of each ring, joined at the
 // ends), project and snap only those. The loop order is a hint: FixedHull checks it and falls
 // back to a full hull of the same points when rounding disturbs it.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -30,7 +31,24 @@ bool arcOf(std::uint32_t m, int n, std::uint32_t all, int& first, int& length) {
 
 }  // namespace
 
-bool OutlineBuilder::addRingsFast(const LocalMap& map, const RingTable& table, double topScale, Outline& out) {
+bool OutlineBuilder::addRingsFast(const LocalMap& map, const RingTable* chosen, double topScale, Outline& out) {
+    int roundPoints = 0;
+    if (!chosen) {  // round: the level of detail from the rings' pixel radii
+        const double(*m)[4] = map.m;
+        const Homogeneous a{m[0][0], m[1][0], m[2][0], 0.0}, b{m[0][2], m[1][2], m[2][2], 0.0};
+        const Homogeneous bottom{m[0][3] - m[0][1], m[1][3] - m[1][1], m[2][3] - m[2][1], 0.0};
+        double radius = projectedRadius(bottom, a, b);
+        if (topScale > 0.0) {
+            const Homogeneous top{m[0][3] + m[0][1], m[1][3] + m[1][1], m[2][3] + m[2][1], 0.0};
+            const Homogeneous ta{a.x * topScale, a.y * topScale, a.w * topScale, 0.0}, tb{b.x * topScale, b.y * topScale, b.w * topScale, 0.0};
+            radius = std::max(radius, projectedRadius(top, ta, tb));
+        }
+        int level = 0;
+        while (level + 1 < kRoundLevels && radius <= kRingLevelRadius[level + 1]) ++level;
+        chosen = &roundRings_[level];
+        roundPoints = kRoundSides >> level;
+    }
+    const RingTable& table = *chosen;
     const int n = int(table.corners.size());
     // Everything in front of the clip plane? Bounded over the circle through the corners.
     const double* clip = map.m[3];
@@ -102,6 +120,7 @@ bool OutlineBuilder::addRingsFast(const LocalMap& map, const RingTable& table, d
     }
     const auto count = std::uint32_t(loop_.size());
     out.pieces.push_back({std::uint32_t(first), count, 1, std::uint16_t(count)});
+    lastRoundPoints_ = roundPoints;
     return true;
 }
 

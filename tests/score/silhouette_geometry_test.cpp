@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -41,15 +42,20 @@ glm::dvec3 world(const Primitive& p, const glm::dvec3& u) {
     return w;
 }
 
+// Full detail: the drawing equals the hull of all vertices up to rounding (pixel centres within
+// 1/64 pixel of its edges). Fewer corners (small rings, silhouette_outline.hpp): the drawing lies
+// inside that hull and misses only pixel centres within 1/4 pixel of its edges.
 TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
     for (const Scene& scene : scenes()) {
         const Camera camera = Camera::compile(scene.spec, "test");
         SilhouetteRaster raster(camera);
+        OutlineBuilder builder(camera);
+        Outline outline;
         const int w = camera.width(), h = camera.height();
         Rng rng(21);
         for (PrimitiveKind kind : {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone}) {
             SCOPED_TRACE(std::string(scene.name) + " kind " + std::to_string(int(kind)));
-            long compared = 0, differing = 0, exact = 0;
+            long compared = 0, exact = 0, reduced = 0;
             for (int i = 0; i < 1000; ++i) {
                 const Primitive p = randomPrimitive(kind, scene, rng);
                 std::vector<FixedPoint> pts;
@@ -61,6 +67,10 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
                     pts.push_back(snapToFixed(s.x, s.y));
                 }
                 if (!usable) continue;  // cut or far off: every vertex is kept anyway
+                outline.clear();
+                builder.add(p, nullptr, outline);
+                const bool full = builder.lastRoundPoints() == 0 || builder.lastRoundPoints() == kRoundSides;
+                if (kind == PrimitiveKind::Box) ASSERT_EQ(builder.lastRoundPoints(), 0);
                 Mask expected(std::size_t(w) * h, 0), got;
                 BruteStats stats;
                 bruteForcePiece(pts, w, h, expected, stats);
@@ -69,17 +79,20 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
                 raster.clear();
                 std::vector<Line> lines;
                 supportingLines(pts, lines);
-                ++compared;
-                exact += got == expected;
+                (full ? compared : reduced) += 1;
+                exact += full && got == expected;
                 for (std::size_t k = 0; k < got.size(); ++k)
                     if (got[k] != expected[k]) {
-                        ++differing;
                         const FixedPoint c{std::int32_t(256 * (k % w) + 128), std::int32_t(256 * (k / w) + 128)};
-                        ASSERT_LT(distanceToBoundary(lines, c), 4.0) << "primitive " << i << " pixel " << k % w << "," << k / w;
+                        // extra pixels only from rounding; missing ones up to 1/4 pixel (64 units) inside
+                        const double allowed = full || got[k] ? 4.0 : 68.0;
+                        ASSERT_LT(distanceToBoundary(lines, c), allowed) << "primitive " << i << " pixel " << k % w << "," << k / w;
                     }
             }
-            EXPECT_GT(compared, 500);
+            EXPECT_GT(compared, kind == PrimitiveKind::Box ? 500 : 150);
             EXPECT_GE(exact, compared - 5);  // rounding-level differences are rare
+            if (kind != PrimitiveKind::Box) EXPECT_GT(reduced, 50);
+            std::printf("%s kind %d: %ld full detail, %ld fewer corners\n", scene.name, int(kind), compared, reduced);
         }
     }
 }
