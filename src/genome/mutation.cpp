@@ -1,6 +1,8 @@
 // Mutations (ShapeGenetics §5): grow, cut and alter, each two sweeps over the chromosome at most.
 #include "genome/operators.hpp"
 
+#include <algorithm>
+
 namespace shapevo {
 
 bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits) {
@@ -33,6 +35,16 @@ bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits)
         }
     }
     return false;  // only reachable through rounding at the very end of the range
+}
+
+void growRandomLength(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits, std::uint32_t minGenes,
+                      std::uint32_t maxGenes) {
+    const std::uint32_t lo = std::min(minGenes, limits.maxGenes);
+    const std::uint32_t hi = std::max(lo, std::min(maxGenes, limits.maxGenes));
+    c.clear();
+    const auto length = std::uint32_t(lo + rng.below(hi - lo + 1));
+    while (c.genes < length && grow(g, c, rng, limits)) {
+    }
 }
 
 bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {

@@ -15,6 +15,12 @@ void plantRoot(const Grammar& g, Chromosome& c, Rng& rng);
 /// its root. Returns false if nothing can grow within the limits.
 bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits);
 
+/// A random starting chromosome: `c` is cleared, a length is drawn uniformly from
+/// [minGenes, maxGenes] (both capped by limits.maxGenes; maxGenes below minGenes counts as
+/// minGenes) and grow() is applied until the chromosome has that many genes or cannot grow.
+void growRandomLength(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits, std::uint32_t minGenes,
+                      std::uint32_t maxGenes);
+
 /// Cut: remove one expressed child and its subtree, chosen with probability proportional to
 /// 1 - its slot's probability (mandatory children are never cut). Returns false if none can go.
 bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch);

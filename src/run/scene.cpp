@@ -21,13 +21,9 @@ void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& s
     constexpr int kModels = 64;
     Rng rng(12345);
     ImageScorer::Workspace ws(scorer.camera());
-    const std::uint32_t lo = std::min(s.ga.initialGenesMin, s.limits.maxGenes);
-    const std::uint32_t hi = std::max(lo, std::min(s.ga.initialGenesMax, s.limits.maxGenes));
+    Chromosome c;
     for (int i = 0; i < kModels; ++i) {
-        Chromosome c;
-        const std::uint32_t length = lo + std::uint32_t(rng.below(hi - lo + 1));
-        while (c.genes < length && grow(g, c, rng, s.limits)) {
-        }
+        growRandomLength(g, c, rng, s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax);
         SilhouetteCounts counts;
         scorer.fitness(c, ws, &counts);
         if (counts.covered > 0) return;

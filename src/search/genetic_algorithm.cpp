@@ -16,14 +16,8 @@ GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings,
 }
 
 void GeneticAlgorithm::initialize(Evaluator& evaluator) {
-    const std::uint32_t lo = std::min(settings_.initialGenesMin, limits_.maxGenes);
-    const std::uint32_t hi = std::min(settings_.initialGenesMax, limits_.maxGenes);
-    for (Chromosome& c : pop_.individuals) {
-        c.clear();
-        const std::uint32_t length = lo + rng_.below(hi - lo + 1);
-        while (c.genes < length && grow(grammar_, c, rng_, limits_)) {
-        }
-    }
+    for (Chromosome& c : pop_.individuals)
+        growRandomLength(grammar_, c, rng_, limits_, settings_.initialGenesMin, settings_.initialGenesMax);
     evaluator.evaluate(pop_);
     evaluations_ += pop_.size();
     generation_ = 1;

@@ -33,14 +33,8 @@ double Rjmcmc::temperature(std::size_t i) const {
 }
 
 void Rjmcmc::initialize(Evaluator& evaluator) {
-    const std::uint32_t lo = std::min(ga_.initialGenesMin, limits_.maxGenes);
-    const std::uint32_t hi = std::min(ga_.initialGenesMax, limits_.maxGenes);
-    for (Chromosome& c : pop_.individuals) {
-        c.clear();
-        const std::uint32_t length = lo + rng_.below(hi - lo + 1);
-        while (c.genes < length && grow(grammar_, c, rng_, limits_)) {
-        }
-    }
+    for (Chromosome& c : pop_.individuals)
+        growRandomLength(grammar_, c, rng_, limits_, ga_.initialGenesMin, ga_.initialGenesMax);
     evaluator.evaluate(pop_);
     evaluations_ += pop_.size();
     generation_ = 1;
