@@ -170,14 +170,21 @@ bool OutlineBuilder::coverBound(int& x0, int& x1, int& y0, int& y1) const {
     const double(*m)[4] = map_.m;
     // The box u in [-1, 1]^3 holds every kind's points; all of its corners in front?
     if (!(m[3][3] - std::fabs(m[3][0]) - std::fabs(m[3][1]) - std::fabs(m[3][2]) >= 0.0)) return false;
-    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-    for (int c = 0; c < 8; ++c) {  // the projected corners
-        const double u = c & 1 ? 1.0 : -1.0, v = c & 2 ? 1.0 : -1.0, w = c & 4 ? 1.0 : -1.0;
-        const double inverse = 1.0 / (m[2][0] * u + m[2][1] * v + m[2][2] * w + m[2][3]);
-        const double x = (m[0][0] * u + m[0][1] * v + m[0][2] * w + m[0][3]) * inverse;
-        const double y = (m[1][0] * u + m[1][1] * v + m[1][2] * w + m[1][3]) * inverse;
-        xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+    // The projected corners: homogeneous coordinate r of corner (+-1, +-1, +-1) is
+    // m[r][3] +- m[r][2] +- m[r][1] +- m[r][0], built up by sums (bit k of the index: sign of u_k).
+    double h[3][8];
+    for (int r = 0; r < 3; ++r) {
+        h[r][0] = m[r][3] - m[r][2], h[r][4] = m[r][3] + m[r][2];
+        for (int k = 0; k < 8; k += 4) h[r][k + 2] = h[r][k] + m[r][1], h[r][k] -= m[r][1];
+        for (int k = 0; k < 8; k += 2) h[r][k + 1] = h[r][k] + m[r][0], h[r][k] -= m[r][0];
     }
+    double x[8], y[8];
+    for (int c = 0; c < 8; ++c) {
+        const double inverse = 1.0 / h[2][c];
+        x[c] = h[0][c] * inverse, y[c] = h[1][c] * inverse;
+    }
+    double xmin = x[0], xmax = x[0], ymin = y[0], ymax = y[0];
+    for (int c = 1; c < 8; ++c) xmin = std::min(xmin, x[c]), xmax = std::max(xmax, x[c]), ymin = std::min(ymin, y[c]), ymax = std::max(ymax, y[c]);
     if (!(xmin <= xmax && ymin <= ymax)) return false;  // NaN
     // Pixel centres i + 0.5 in [min, max], with a margin far above snapping and rounding errors.
     constexpr double kMargin = 1.0 / 64.0;
