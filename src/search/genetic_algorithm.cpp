@@ -8,7 +8,7 @@ namespace shapevo {
 
 GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits,
                                    std::uint64_t seed)
-    : grammar_(g), settings_(settings), limits_(limits), rng_(seed) {
+    : SearchMethod(seed), grammar_(g), settings_(settings), limits_(limits) {
     pop_.individuals.resize(settings.population);
     next_.individuals.resize(settings.population);
     next_.fitness.resize(settings.population);
@@ -16,19 +16,7 @@ GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings,
 }
 
 void GeneticAlgorithm::initialize(Evaluator& evaluator) {
-    for (Chromosome& c : pop_.individuals)
-        growRandomLength(grammar_, c, rng_, limits_, settings_.initialGenesMin, settings_.initialGenesMax);
-    evaluator.evaluate(pop_);
-    evaluations_ += pop_.size();
-    generation_ = 1;
-}
-
-void GeneticAlgorithm::restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                               std::uint64_t evaluations) {
-    pop_ = pop;
-    rng_.setState(rng);
-    generation_ = generation;
-    evaluations_ = evaluations;
+    startFromRandomGrowth(grammar_, limits_, settings_.initialGenesMin, settings_.initialGenesMax, evaluator);
 }
 
 void GeneticAlgorithm::mutate(Chromosome& c) {

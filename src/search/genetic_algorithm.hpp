@@ -21,17 +21,6 @@ public:
     void initialize(Evaluator& evaluator) override;
     /// Breed and evaluate the next generation.
     void step(Evaluator& evaluator) override;
-    /// Continue from a saved state (a checkpoint): population with fitness, RNG, counters.
-    void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                 std::uint64_t evaluations) override;
-
-    const Population& population() const override { return pop_; }
-    Population& population() override { return pop_; }
-    std::uint32_t generation() const override { return generation_; }
-    std::uint64_t evaluations() const override { return evaluations_; }
-    /// best, mean, std of the current population (seconds filled by the caller).
-    GenerationStats stats() const override { return populationStats(pop_, generation_, evaluations_); }
-    Rng& rng() override { return rng_; }
 
 private:
     void mutate(Chromosome& c);
@@ -39,14 +28,11 @@ private:
     const Grammar& grammar_;
     GaSettings settings_;
     GenomeLimits limits_;
-    Rng rng_;
-    Population pop_, next_;
+    Population next_;
     Chromosome scratchChild_;  ///< second child of an odd last pair, discarded
     std::vector<std::size_t> order_;
     RouletteWheel wheel_;
     GenomeScratch scratch_;
-    std::uint32_t generation_ = 0;
-    std::uint64_t evaluations_ = 0;
 };
 
 }  // namespace shapevo

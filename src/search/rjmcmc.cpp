@@ -12,7 +12,7 @@ namespace shapevo {
 
 Rjmcmc::Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const GaSettings& ga, const GenomeLimits& limits,
                std::uint64_t seed)
-    : grammar_(g), settings_(settings), ga_(ga), limits_(limits), rng_(seed) {
+    : SearchMethod(seed), grammar_(g), settings_(settings), ga_(ga), limits_(limits) {
     resize(ga.population);
 }
 
@@ -33,21 +33,10 @@ double Rjmcmc::temperature(std::size_t i) const {
 }
 
 void Rjmcmc::initialize(Evaluator& evaluator) {
-    for (Chromosome& c : pop_.individuals)
-        growRandomLength(grammar_, c, rng_, limits_, ga_.initialGenesMin, ga_.initialGenesMax);
-    evaluator.evaluate(pop_);
-    evaluations_ += pop_.size();
-    generation_ = 1;
+    startFromRandomGrowth(grammar_, limits_, ga_.initialGenesMin, ga_.initialGenesMax, evaluator);
 }
 
-void Rjmcmc::restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                     std::uint64_t evaluations) {
-    pop_ = pop;
-    resize(pop_.size());
-    rng_.setState(rng);
-    generation_ = generation;
-    evaluations_ = evaluations;
-}
+void Rjmcmc::restored() { resize(pop_.size()); }
 
 void Rjmcmc::propose(std::size_t i) {
     Proposal& p = info_[i];

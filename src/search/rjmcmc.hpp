@@ -40,14 +40,6 @@ public:
     void initialize(Evaluator& evaluator) override;
     /// One sweep: a proposal per chain, batch evaluation, accept/reject, tempering swaps.
     void step(Evaluator& evaluator) override;
-    void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                 std::uint64_t evaluations) override;
-    const Population& population() const override { return pop_; }
-    Population& population() override { return pop_; }
-    std::uint32_t generation() const override { return generation_; }
-    std::uint64_t evaluations() const override { return evaluations_; }
-    GenerationStats stats() const override { return populationStats(pop_, generation_, evaluations_); }
-    Rng& rng() override { return rng_; }
 
     /// Temperature of chain `i` during the next sweep.
     double temperature(std::size_t i) const;
@@ -60,6 +52,7 @@ public:
     const Counters& counters() const { return counters_; }
 
 private:
+    void restored() override;
     enum class Move : std::uint8_t { None, Diffusion, Jump };
     struct Proposal {
         Move move = Move::None;
@@ -76,8 +69,6 @@ private:
     RjmcmcSettings settings_;
     GaSettings ga_;
     GenomeLimits limits_;
-    Rng rng_;
-    Population pop_;
     std::vector<Chromosome> proposals_, second_, star_;
     std::vector<Proposal> info_;
     std::vector<std::vector<MatchedGene>> matched_;
@@ -86,8 +77,6 @@ private:
     RegrowScratch regrow_;
     EvaluationBatch batch_;
     Counters counters_;
-    std::uint32_t generation_ = 0;
-    std::uint64_t evaluations_ = 0;
 };
 
 }  // namespace shapevo

@@ -19,22 +19,42 @@ namespace shapevo {
 
 class SearchMethod {
 public:
+    explicit SearchMethod(std::uint64_t seed) : rng_(seed) {}
     virtual ~SearchMethod() = default;
     /// Generation 1: create and evaluate the first population.
     virtual void initialize(Evaluator& evaluator) = 0;
     /// One population-wide step (about one evaluation per individual).
     virtual void step(Evaluator& evaluator) = 0;
     /// Continue from a saved state (a checkpoint): population with fitness, RNG, counters.
-    virtual void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                         std::uint64_t evaluations) = 0;
-    virtual const Population& population() const = 0;
+    void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
+                 std::uint64_t evaluations) {
+        pop_ = pop;
+        rng_.setState(rng);
+        generation_ = generation;
+        evaluations_ = evaluations;
+        restored();
+    }
+    const Population& population() const { return pop_; }
     /// Migration replaces individuals in place, with their fitness; methods read fitness from here.
-    virtual Population& population() = 0;
-    virtual std::uint32_t generation() const = 0;
-    virtual std::uint64_t evaluations() const = 0;
+    Population& population() { return pop_; }
+    std::uint32_t generation() const { return generation_; }
+    std::uint64_t evaluations() const { return evaluations_; }
     /// best, mean, std of the current population (seconds filled by the caller).
-    virtual GenerationStats stats() const = 0;
-    virtual Rng& rng() = 0;
+    GenerationStats stats() const { return populationStats(pop_, generation_, evaluations_); }
+    Rng& rng() { return rng_; }
+
+protected:
+    /// After restore(): fit the method's own buffers to the restored population.
+    virtual void restored() {}
+    /// Generation 1 from random derivations: every individual grown to a length drawn from
+    /// [minGenes, maxGenes] (growRandomLength), then all evaluated.
+    void startFromRandomGrowth(const Grammar& g, const GenomeLimits& limits, std::uint32_t minGenes,
+                               std::uint32_t maxGenes, Evaluator& evaluator);
+
+    Rng rng_;
+    Population pop_;
+    std::uint32_t generation_ = 0;
+    std::uint64_t evaluations_ = 0;
 };
 
 /// The method `search.method` names, seeded with `seed`; `ga` gives population size and initial

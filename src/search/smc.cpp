@@ -5,7 +5,7 @@ namespace shapevo {
 
 Smc::Smc(const Grammar& g, const SmcSettings& settings, std::uint32_t population, const GenomeLimits& limits,
          GrowthOrder order, std::uint64_t seed)
-    : grammar_(g), settings_(settings), limits_(limits), order_(order), geometric_(geometricRules(g)), rng_(seed) {
+    : SearchMethod(seed), grammar_(g), settings_(settings), limits_(limits), order_(order), geometric_(geometricRules(g)) {
     pop_.individuals.resize(population);
     pop_.fitness.assign(population, 0.0);
     next_.individuals.resize(population);
@@ -23,14 +23,9 @@ void Smc::step(Evaluator& evaluator) {
     ++generation_;
 }
 
-void Smc::restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                  std::uint64_t evaluations) {
-    pop_ = pop;
+void Smc::restored() {
     next_.individuals.resize(pop_.size());
     next_.fitness.resize(pop_.size());
-    rng_.setState(rng);
-    generation_ = generation;
-    evaluations_ = evaluations;
 }
 
 void Smc::growAndResample(Evaluator& evaluator, bool fromEmpty) {

@@ -32,16 +32,9 @@ public:
 
     void initialize(Evaluator& evaluator) override;
     void step(Evaluator& evaluator) override;
-    void restore(const Population& pop, const std::array<std::uint64_t, 4>& rng, std::uint32_t generation,
-                 std::uint64_t evaluations) override;
-    const Population& population() const override { return pop_; }
-    Population& population() override { return pop_; }
-    std::uint32_t generation() const override { return generation_; }
-    std::uint64_t evaluations() const override { return evaluations_; }
-    GenerationStats stats() const override { return populationStats(pop_, generation_, evaluations_); }
-    Rng& rng() override { return rng_; }
 
 private:
+    void restored() override;
     /// Grow every particle, evaluate those that grew, resample by exp((f - before) / T).
     void growAndResample(Evaluator& evaluator, bool fromEmpty);
 
@@ -50,14 +43,11 @@ private:
     GenomeLimits limits_;
     GrowthOrder order_;
     std::vector<char> geometric_;
-    Rng rng_;
-    Population pop_, next_;
+    Population next_;
     std::vector<double> logWeights_;
     std::vector<std::size_t> grown_, picks_;
     EvaluationBatch batch_;
     MultinomialResampler resampler_;
-    std::uint32_t generation_ = 0;
-    std::uint64_t evaluations_ = 0;
 };
 
 }  // namespace shapevo
