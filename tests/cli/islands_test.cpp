@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "../island_compare.hpp"
 #include "../test_support.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/parser.hpp"
@@ -17,6 +18,7 @@ namespace shapevo {
 namespace {
 
 using test::curveWithoutTime;
+using test::expectSameIslands;
 using test::readFile;
 using test::runShapevo;
 using test::runShapevoMpi;
@@ -28,32 +30,6 @@ const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.
 
 std::string config() { return sourcePath("configs/spaceship.toml"); }
 
-
-/// Islands of a checkpoint must match: chromosomes, fitness bits, RNG, curve (but seconds).
-void expectSameIslands(const std::string& a, const std::string& b, int ranks) {
-    const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
-    const GenomeLimits limits{100};
-    for (int r = 0; r < ranks; ++r) {
-        const IslandState x = readIslandFile(a + "/" + islandFileName(r), g, limits);
-        const IslandState y = readIslandFile(b + "/" + islandFileName(r), g, limits);
-        EXPECT_EQ(x.generation, y.generation);
-        EXPECT_EQ(x.evaluations, y.evaluations);
-        EXPECT_EQ(x.rng, y.rng);
-        ASSERT_EQ(x.population.size(), y.population.size());
-        for (std::size_t i = 0; i < x.population.size(); ++i) {
-            EXPECT_EQ(x.population.individuals[i], y.population.individuals[i]) << "island " << r << " individual " << i;
-            EXPECT_EQ(x.population.fitness[i], y.population.fitness[i]);
-        }
-        ASSERT_EQ(x.curve.size(), y.curve.size());
-        for (std::size_t i = 0; i < x.curve.size(); ++i) {
-            EXPECT_EQ(x.curve[i].generation, y.curve[i].generation);
-            EXPECT_EQ(x.curve[i].evaluations, y.curve[i].evaluations);
-            EXPECT_EQ(x.curve[i].best, y.curve[i].best);
-            EXPECT_EQ(x.curve[i].mean, y.curve[i].mean);
-            EXPECT_EQ(x.curve[i].std, y.curve[i].std);
-        }
-    }
-}
 
 TEST(Islands, SeededTwoRankRunRepeatsByteForByte) {
     TempDir dir;

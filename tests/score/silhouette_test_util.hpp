@@ -11,6 +11,8 @@
 #include "genome/random.hpp"
 #include "score/silhouette_raster.hpp"
 
+#include "random_primitives.hpp"
+
 namespace shapevo::test {
 
 using Mask = std::vector<std::uint8_t>;
@@ -110,20 +112,6 @@ inline std::vector<MeshShape> starMesh() {
         m.triangles.push_back({a, 11 + b, 11 + a});
     }
     return {m};
-}
-
-inline glm::mat3 randomRotation(Rng& rng) {
-    double q[4], n = 0;
-    for (double& v : q) v = rng.normal(), n += v * v;
-    n = std::sqrt(n);
-    const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-    const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
-                            {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
-                            {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
-    glm::mat3 r;
-    for (int c = 0; c < 3; ++c)
-        for (int k = 0; k < 3; ++k) r[c][k] = float(m[c][k]);
-    return r;
 }
 
 struct Scene {

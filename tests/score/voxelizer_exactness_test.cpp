@@ -11,29 +11,17 @@
 #include "score/box_rows.hpp"
 #include "score/voxelizer.hpp"
 
+#include "random_primitives.hpp"
+
 namespace shapevo {
 namespace {
+
+using test::randomTarget;
 
 Geometry geometryOf(std::vector<Primitive> primitives) {
     Geometry g;
     g.primitives = std::move(primitives);
     return g;
-}
-
-VolumeTarget randomTarget(const GridSpec& grid, Rng& rng) {
-    VolumeTarget t;
-    t.grid = grid;
-    t.fill.assign(grid.words(), 0);
-    t.avoid.assign(grid.words(), 0);
-    for (int z = 0; z < grid.nz; ++z)
-        for (int y = 0; y < grid.ny; ++y)
-            for (int x = 0; x < grid.nx; ++x) {
-                const std::size_t w = (std::size_t(z) * grid.ny + y) * grid.wordsPerRow() + (x >> 6);
-                const double u = rng.uniform();
-                if (u < 0.3) t.fill[w] |= 1ULL << (x & 63), ++t.fillCount;
-                else if (u < 0.4) t.avoid[w] |= 1ULL << (x & 63), ++t.avoidCount;
-            }
-    return t;
 }
 
 Primitive randomBox(const GridSpec& grid, Rng& rng) {
@@ -49,17 +37,7 @@ Primitive randomBox(const GridSpec& grid, Rng& rng) {
             p.half[j] = float(0.02 + 0.6 * rng.uniform());
         }
     }
-    if (style <= 1) {  // random rotation from a random unit quaternion
-        double q[4], n = 0;
-        for (double& v : q) v = rng.normal(), n += v * v;
-        n = std::sqrt(n);
-        const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-        const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
-                                {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
-                                {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
-        for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r) p.axes[c][r] = float(m[c][r]);
-    }
+    if (style <= 1) p.axes = test::randomRotation(rng);
     if (rng.below(4) == 0) p.axes[int(rng.below(3))] *= -1.0f;  // a mirrored frame
     return p;
 }

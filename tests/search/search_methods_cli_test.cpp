@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "../island_compare.hpp"
 #include "../test_support.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/parser.hpp"
@@ -13,6 +14,7 @@ namespace shapevo {
 namespace {
 
 using test::curveWithoutTime;
+using test::expectSameIslands;
 using test::readFile;
 using test::runShapevo;
 using test::runShapevoMpi;
@@ -23,22 +25,6 @@ const std::string kSmall = " --set ga.population=24 --set ga.elitism=4 --set ga.
                            " --set migration.count=3 --set checkpoint.interval=5 --set checkpoint.keep=10 -q";
 
 std::string config() { return sourcePath("configs/spaceship.toml"); }
-
-void expectSameIslands(const std::string& a, const std::string& b) {
-    const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
-    for (int r = 0; r < 2; ++r) {
-        const IslandState x = readIslandFile(a + "/" + islandFileName(r), g, GenomeLimits{100});
-        const IslandState y = readIslandFile(b + "/" + islandFileName(r), g, GenomeLimits{100});
-        EXPECT_EQ(x.generation, y.generation);
-        EXPECT_EQ(x.evaluations, y.evaluations);
-        EXPECT_EQ(x.rng, y.rng);
-        ASSERT_EQ(x.population.size(), y.population.size());
-        for (std::size_t i = 0; i < x.population.size(); ++i) {
-            EXPECT_EQ(x.population.individuals[i], y.population.individuals[i]) << "island " << r << " individual " << i;
-            EXPECT_EQ(x.population.fitness[i], y.population.fitness[i]);
-        }
-    }
-}
 
 class SearchMethodCli : public ::testing::TestWithParam<const char*> {};
 
@@ -54,7 +40,7 @@ TEST_P(SearchMethodCli, TwoIslandRunResumedFromItsCheckpointEqualsTheUninterrupt
     ASSERT_EQ(half.exitCode, 0) << half.output;
     auto rest = runShapevoMpi(2, "resume " + dir.file("half") + " --generations 14 -q");
     ASSERT_EQ(rest.exitCode, 0) << rest.output;
-    expectSameIslands(dir.file("whole/checkpoint-000014"), dir.file("half/checkpoint-000014"));
+    expectSameIslands(dir.file("whole/checkpoint-000014"), dir.file("half/checkpoint-000014"), 2);
     EXPECT_EQ(readFile(dir.file("whole/best.genome")), readFile(dir.file("half/best.genome")));
     EXPECT_EQ(curveWithoutTime(readFile(dir.file("whole/curve.csv"))), curveWithoutTime(readFile(dir.file("half/curve.csv"))));
     EXPECT_TRUE(std::filesystem::exists(dir.file("whole/best.obj")));
