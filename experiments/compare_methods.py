@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """GA vs SMC, SOSMC and RJMCMC at equal wall time, and 2 GA islands vs one population of twice
-the size at equal evaluations (issue 5; results and discussion: docs/method-comparison.md).
+the size at equal evaluations (issue 5; results and discussion: README.md, section "GA, SMC, SOSMC and RJMCMC compared",
+and docs/method-comparison-results.md).
 
 Usage (from anywhere; needs build/shapevo and OpenMPI's mpirun):
 
