@@ -1,7 +1,7 @@
 // SearchMethod: what the island loop needs from a search method (ShapeGenetics §7: GA, SMC,
 // SOSMC and RJMCMC in one framework). Every method's whole state is its population with fitness,
 // its Rng, the generation number and the evaluation count, so a checkpoint of those resumes any
-// method exactly. Fitness is only ever computed through the Evaluator (thread count never changes
+// method exactly; this base class holds them, each method only its own scratch buffers. Fitness is only ever computed through the Evaluator (thread count never changes
 // results); all randomness comes from rng() in a fixed order.
 #pragma once
 #include <array>
