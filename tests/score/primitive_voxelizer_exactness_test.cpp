@@ -76,19 +76,7 @@ BruteForce bruteForce(const Geometry& geometry, const VolumeTarget& t) {
     b.bits.assign(g.words(), 0);
     std::vector<std::uint8_t> hits(std::size_t(g.nx) * g.ny * g.nz, 0);
     for (const Primitive& p : geometry.primitives) bruteForceAdd(p, *geometry.meshes, g, hits, b.counts);
-    for (int z = 0; z < g.nz; ++z)
-        for (int y = 0; y < g.ny; ++y)
-            for (int x = 0; x < g.nx; ++x) {
-                const auto h = hits[(std::size_t(z) * g.ny + y) * g.nx + x];
-                if (!h) continue;
-                const std::size_t w = (std::size_t(z) * g.ny + y) * g.wordsPerRow() + (x >> 6);
-                const std::uint64_t bit = 1ULL << (x & 63);
-                b.bits[w] |= bit;
-                ++b.counts.occupied;
-                if (h >= 2) ++b.counts.overlap;
-                if (t.fill[w] & bit) ++b.counts.inside;
-                if (t.avoid[w] & bit) ++b.counts.avoided;
-            }
+    test::countHits(hits, t, b.counts, &b.bits);
     return b;
 }
 

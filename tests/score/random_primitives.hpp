@@ -16,6 +16,7 @@
 #include "score/cylinder_rows.hpp"
 #include "score/sphere_rows.hpp"
 #include "score/volume_target.hpp"
+#include "score/voxelizer.hpp"
 
 namespace shapevo::test {
 
@@ -125,6 +126,27 @@ inline VolumeTarget randomTarget(const GridSpec& grid, Rng& rng) {
                 else if (u < 0.4) t.avoid[w] |= 1ULL << (x & 63), ++t.avoidCount;
             }
     return t;
+}
+
+/// Brute-force counting: `hits` holds, per grid voxel (x fastest), how many primitives cover its
+/// centre (capped at 2); add occupied, overlap, inside and avoided voxels to `c`, and set the
+/// occupied voxels' bits in `bits` (sized grid.words()) if given.
+inline void countHits(const std::vector<std::uint8_t>& hits, const VolumeTarget& t, VoxelCounts& c,
+                      std::vector<std::uint64_t>* bits = nullptr) {
+    const GridSpec& g = t.grid;
+    for (int z = 0; z < g.nz; ++z)
+        for (int y = 0; y < g.ny; ++y)
+            for (int x = 0; x < g.nx; ++x) {
+                const auto h = hits[(std::size_t(z) * g.ny + y) * g.nx + x];
+                if (!h) continue;
+                const std::size_t w = (std::size_t(z) * g.ny + y) * g.wordsPerRow() + (x >> 6);
+                const std::uint64_t bit = 1ULL << (x & 63);
+                if (bits) (*bits)[w] |= bit;
+                ++c.occupied;
+                if (h >= 2) ++c.overlap;
+                if (t.fill[w] & bit) ++c.inside;
+                if (t.avoid[w] & bit) ++c.avoided;
+            }
 }
 
 /// The inside test of a box, cylinder, cone or sphere (the very functions the voxelizer uses).

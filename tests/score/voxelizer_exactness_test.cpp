@@ -71,18 +71,7 @@ VoxelCounts bruteForce(const std::vector<Primitive>& prims, const VolumeTarget& 
                     if (h < 2) ++h;
                 }
     }
-    for (int z = 0; z < g.nz; ++z)
-        for (int y = 0; y < g.ny; ++y)
-            for (int x = 0; x < g.nx; ++x) {
-                const auto h = hits[(std::size_t(z) * g.ny + y) * g.nx + x];
-                if (!h) continue;
-                const std::size_t w = (std::size_t(z) * g.ny + y) * g.wordsPerRow() + (x >> 6);
-                const std::uint64_t bit = 1ULL << (x & 63);
-                ++c.occupied;
-                if (h >= 2) ++c.overlap;
-                if (t.fill[w] & bit) ++c.inside;
-                if (t.avoid[w] & bit) ++c.avoided;
-            }
+    test::countHits(hits, t, c);
     return c;
 }
 
