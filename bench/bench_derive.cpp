@@ -8,12 +8,13 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <deque>
 #include <string>
 
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
+
+#include "breadth_first_tree.hpp"
 
 namespace {
 
@@ -47,20 +48,8 @@ const Grammar& tree() {
 /// branch is rule Bk), parameters drawn from the priors with a fixed seed.
 Chromosome fullTree(std::uint32_t genes) {
     const Grammar& g = tree();
-    Rng rng(2024);
-    Chromosome c;
-    plantRoot(g, c, rng);
-    const std::uint16_t branch[3] = {std::uint16_t(g.findRule("B0")), std::uint16_t(g.findRule("B1")),
-                                     std::uint16_t(g.findRule("B2"))};
-    std::deque<std::uint32_t> open{0};
-    while (c.genes < genes && !open.empty()) {
-        const std::uint32_t parent = open.front();
-        open.pop_front();
-        const Rule& r = g.rules[c.rule(parent)];
-        for (std::uint32_t entry = 0; entry < r.childOffsets && c.genes < genes; ++entry)
-            open.push_back(appendGene(g, c, branch[entry % 3], parent, entry, rng));
-    }
-    return c;
+    return bench::breadthFirstTree(g, genes, {std::uint16_t(g.findRule("B0")), std::uint16_t(g.findRule("B1")),
+                                              std::uint16_t(g.findRule("B2"))});
 }
 
 void runDerive(benchmark::State& state, const Grammar& g, const Chromosome& c) {

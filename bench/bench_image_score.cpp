@@ -12,13 +12,14 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <deque>
 #include <string>
 #include <vector>
 
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
+
+#include "breadth_first_tree.hpp"
 
 namespace {
 
@@ -157,20 +158,9 @@ void BM_ImageDeriveScore(benchmark::State& state) {
 /// until the count is reached), parameters drawn from the priors with a fixed seed.
 Chromosome largeTree(std::uint32_t genes) {
     const Grammar& g = tree(false);
-    Rng rng(2024);
-    Chromosome c;
-    plantRoot(g, c, rng);
     std::uint16_t branch = 0;
     while (g.rules[branch].name != "Branch") ++branch;
-    std::deque<std::uint32_t> open{0};
-    while (c.genes < genes && !open.empty()) {
-        const std::uint32_t parent = open.front();
-        open.pop_front();
-        const Rule& r = g.rules[c.rule(parent)];
-        for (std::uint32_t entry = 0; entry < r.childOffsets && c.genes < genes; ++entry)
-            open.push_back(appendGene(g, c, branch, parent, entry, rng));
-    }
-    return c;
+    return bench::breadthFirstTree(g, genes, {branch});
 }
 
 void BM_LargeTree(benchmark::State& state) {
