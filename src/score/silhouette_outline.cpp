@@ -339,9 +339,7 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
         return Homogeneous{hc.x + cs.x * ha.x + cs.y * hb.x, hc.y + cs.x * ha.y + cs.y * hb.y,
                            hc.w + cs.x * ha.w + cs.y * hb.w, hc.clip + cs.x * ha.clip + cs.y * hb.clip};
     };
-    const double pixels = projectedRadius(hc, ha, hb);
-    int level = 0;
-    while (level + 1 < kRoundLevels && pixels <= kSphereLevelRadius[level + 1]) ++level;
+    const int level = detailLevel(projectedRadius(hc, ha, hb), kSphereLevelRadius);
     const int points = kSphereSides >> level;
     const std::size_t first = out.points.size();
     out.points.resize(first + std::size_t(points));
@@ -351,7 +349,7 @@ void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline&
         const Homogeneous q = point(k << level);
         const double inv = 1.0 / q.w, x = q.x * inv, y = q.y * inv;
         fast = insideGuard(x, y);
-        pts[k] = snapToFixed(fast ? x : 0.0, fast ? y : 0.0);
+        if (fast) pts[k] = snapToFixed(x, y);
     }
     if (fast) {
         out.pieces.push_back({std::uint32_t(first), std::uint32_t(points), 1, std::uint16_t(points)});

@@ -66,6 +66,13 @@ inline constexpr double kRingLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.076
 /// The same for the sphere's contact curve (kSphereSides points; levels 1, 2: 16 and 8 points
 /// within 0.0192 r and 0.0761 r of the circle).
 inline constexpr double kSphereLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.0192, 0.25 / 0.0761};
+/// The coarsest level whose radius limit (kRingLevelRadius or kSphereLevelRadius) admits a ring
+/// of `pixels` pixel radius.
+inline int detailLevel(double pixels, const double (&limits)[kRoundLevels]) {
+    int level = 0;
+    while (level + 1 < kRoundLevels && pixels <= limits[level + 1]) ++level;
+    return level;
+}
 inline constexpr int kSphereSides = 2 * kRoundSides;
 static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 32-bit masks");
 

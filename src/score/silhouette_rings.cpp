@@ -43,8 +43,7 @@ bool OutlineBuilder::addRingsFast(const LocalMap& map, const RingTable* chosen, 
             const Homogeneous ta{a.x * topScale, a.y * topScale, a.w * topScale, 0.0}, tb{b.x * topScale, b.y * topScale, b.w * topScale, 0.0};
             radius = std::max(radius, projectedRadius(top, ta, tb));
         }
-        int level = 0;
-        while (level + 1 < kRoundLevels && radius <= kRingLevelRadius[level + 1]) ++level;
+        const int level = detailLevel(radius, kRingLevelRadius);
         chosen = &roundRings_[level];
         roundPoints = kRoundSides >> level;
     }

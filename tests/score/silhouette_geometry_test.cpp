@@ -70,7 +70,9 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
                 outline.clear();
                 builder.add(p, nullptr, outline);
                 const bool full = builder.lastRoundPoints() == 0 || builder.lastRoundPoints() == kRoundSides;
-                if (kind == PrimitiveKind::Box) ASSERT_EQ(builder.lastRoundPoints(), 0);
+                if (kind == PrimitiveKind::Box) {
+                    ASSERT_EQ(builder.lastRoundPoints(), 0);
+                }
                 Mask expected(std::size_t(w) * h, 0), got;
                 BruteStats stats;
                 bruteForcePiece(pts, w, h, expected, stats);
@@ -91,7 +93,9 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
             }
             EXPECT_GT(compared, kind == PrimitiveKind::Box ? 500 : 150);
             EXPECT_GE(exact, compared - 5);  // rounding-level differences are rare
-            if (kind != PrimitiveKind::Box) EXPECT_GT(reduced, 50);
+            if (kind != PrimitiveKind::Box) {
+                EXPECT_GT(reduced, 50);
+            }
             std::printf("%s kind %d: %ld full detail, %ld fewer corners\n", scene.name, int(kind), compared, reduced);
         }
     }
