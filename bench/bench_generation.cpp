@@ -10,7 +10,7 @@
 #include <cstdint>
 
 #include "grammar/parser.hpp"
-#include "io/config_file.hpp"
+#include "run/config_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 

@@ -26,7 +26,7 @@
 
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
-#include "io/vdb_target_file.hpp"
+#include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 
 namespace {

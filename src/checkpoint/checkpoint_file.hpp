@@ -2,7 +2,7 @@
 // inside the run folder:
 //   run.h5              RunMetadata (rank 0)
 //   island-RRRR.h5      one IslandState per rank
-//   MANIFEST            written last: one line per file "name size fnv1a64-hex", then "end"
+//   MANIFEST            written last: one line per file "name size xxh3-64-hex", then "end"
 // A folder is published by renaming `.checkpoint-NNNNNN.partial/` once every file is written and
 // flushed; a folder without a valid MANIFEST, or whose files do not match it, is incomplete.
 // The HDF5 layouts (stable names) are documented at the top of island_file.cpp and run_file.cpp.
@@ -17,7 +17,7 @@
 namespace shapevo {
 
 /// Layout version written to every checkpoint file's schema_version attribute.
-inline constexpr std::uint32_t kCheckpointSchemaVersion = 1;
+inline constexpr std::uint32_t kCheckpointSchemaVersion = 2;  ///< 2: XXH3-64 checksums (1: FNV-like)
 
 // --- single files ---------------------------------------------------------------------------
 
@@ -50,7 +50,7 @@ void writeManifest(const std::string& folder, const std::vector<std::string>& fi
 struct ManifestEntry {
     std::string name;
     std::uint64_t size = 0;
-    std::uint64_t fnv1a64 = 0;
+    std::uint64_t xxh3_64 = 0;
 };
 /// Parse `folder`/MANIFEST (nothing else is read). A valid MANIFEST lists run.h5 and
 /// island-0000.h5 ... island-(k-1).h5 for some k >= 1 (other plain file names may follow),

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "base/atomic_write.hpp"
 
 namespace shapevo {
 
@@ -37,15 +38,6 @@ long long publishedGeneration(const std::string& name) {
 /// (a same-generation folder moved aside by publishCheckpoint, left by a crash).
 bool isLeftover(const std::string& name) {
     return name.starts_with(".checkpoint-") && (name.ends_with(".partial") || name.ends_with(".replaced"));
-}
-
-void fsyncFolder(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) throw std::runtime_error(path + ": cannot open folder to fsync: " + std::strerror(errno));
-    const int rc = ::fsync(fd);
-    const int err = errno;
-    ::close(fd);
-    if (rc != 0) throw std::runtime_error(path + ": fsync failed: " + std::strerror(err));
 }
 
 }  // namespace
@@ -92,7 +84,7 @@ void pruneCheckpoints(const std::string& runDir, int keep) {
 
 void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder) {
     // The files were fsynced as they were written; fsync the folder so their names are durable too.
-    fsyncFolder(partialFolder);
+    syncToDisk(partialFolder);
     const fs::path final(finalFolder);
     const fs::path parent = final.parent_path().empty() ? fs::path(".") : final.parent_path();
     std::error_code ec;
@@ -111,7 +103,7 @@ void publishCheckpoint(const std::string& partialFolder, const std::string& fina
     }
     fs::rename(partialFolder, final, ec);
     if (ec) throw std::runtime_error("cannot publish " + partialFolder + " as " + finalFolder + ": " + ec.message());
-    fsyncFolder(parent.string());
+    syncToDisk(parent.string());
     if (replacing) fs::remove_all(displaced, ec);
 }
 

@@ -7,7 +7,7 @@
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

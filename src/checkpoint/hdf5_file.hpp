@@ -1,5 +1,5 @@
 // Internal to src/checkpoint: the two halves of how checkpoint files use HDF5.
-// H5Writer creates a file of datasets that each carry an "fnv1a64" attribute (FNV-1a 64 of the
+// H5Writer creates a file of datasets that each carry an "xxh3_64" attribute (XXH3-64 of the
 // dataset's raw little-endian bytes) plus scalar attributes, then flushes, closes and fsyncs it.
 // H5Reader opens one, checks every object's type and shape before reading it, never allocates
 // more than the file could hold, and verifies each dataset's checksum; every failure is an
@@ -16,7 +16,7 @@
 namespace shapevo::h5 {
 
 /// Name of the checksum attribute every dataset carries.
-inline constexpr const char* kChecksumAttribute = "fnv1a64";
+inline constexpr const char* kChecksumAttribute = "xxh3_64";
 
 class H5Writer {
 public:

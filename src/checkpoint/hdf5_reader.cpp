@@ -1,13 +1,13 @@
 // H5Reader: reads checkpoint HDF5 files defensively (see hdf5_file.hpp). Each object's type,
 // rank and shape are checked before it is read, a dataset may not claim more bytes than it
-// stores or than the file holds, and each dataset's bytes must match its "fnv1a64" attribute.
+// stores or than the file holds, and each dataset's bytes must match its "xxh3_64" attribute.
 #include <filesystem>
 #include <limits>
 #include <sstream>
 
 #include "checkpoint/hdf5_file.hpp"
-#include "io/genome_file.hpp"
-#include "io/input_error.hpp"
+#include "base/hash.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo::h5 {
 
@@ -115,7 +115,7 @@ std::string H5Reader::text(const char* name) const {
 void H5Reader::verifyChecksum(const char* name, std::span<const std::uint8_t> bytes) const {
     std::uint64_t stored = 0;
     scalarAttribute(name, kChecksumAttribute, H5T_STD_U64LE, H5T_NATIVE_UINT64, &stored);
-    const std::uint64_t actual = fnv1a(bytes.data(), bytes.size());
+    const std::uint64_t actual = hash64(bytes.data(), bytes.size());
     if (stored != actual)
         fail(name, "checksum mismatch: the data hashes to " + hex(actual) + " but its " + kChecksumAttribute +
                        " attribute says " + hex(stored) + " (the file was altered or damaged)");

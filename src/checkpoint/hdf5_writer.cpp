@@ -8,7 +8,8 @@
 #include <stdexcept>
 
 #include "checkpoint/hdf5_file.hpp"
-#include "io/genome_file.hpp"
+#include "base/atomic_write.hpp"
+#include "base/hash.hpp"
 
 namespace shapevo::h5 {
 
@@ -57,7 +58,7 @@ Handle H5Writer::dataset(hid_t parent, const char* name, hid_t type, std::span<c
     // The memory type equals the (little-endian) file type: the bytes go to disk unconverted.
     if (!bytes.empty() && H5Dwrite(d.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()) < 0)
         fail(std::string("cannot write dataset ") + name);
-    attribute(d.get(), kChecksumAttribute, fnv1a(bytes.data(), bytes.size()));
+    attribute(d.get(), kChecksumAttribute, hash64(bytes.data(), bytes.size()));
     return d;
 }
 
@@ -74,7 +75,7 @@ Handle H5Writer::text(hid_t parent, const char* name, const std::string& text) {
     if (!d.valid()) fail(std::string("cannot create dataset ") + name);
     if (H5Dwrite(d.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, stored.data()) < 0)
         fail(std::string("cannot write dataset ") + name);
-    attribute(d.get(), kChecksumAttribute, fnv1a(stored.data(), stored.size()));
+    attribute(d.get(), kChecksumAttribute, hash64(stored.data(), stored.size()));
     return d;
 }
 
@@ -109,12 +110,7 @@ void H5Writer::finish() {
     if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
     if (!file_.close()) fail("cannot close");
     // HDF5 leaves the data in the page cache; fsync so a crash after publishing cannot lose it.
-    const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw std::runtime_error(path_ + ": cannot reopen to fsync: " + std::strerror(errno));
-    const int rc = ::fsync(fd);
-    const int err = errno;
-    ::close(fd);
-    if (rc != 0) throw std::runtime_error(path_ + ": fsync failed: " + std::strerror(err));
+    syncToDisk(path_);
 }
 
 }  // namespace shapevo::h5

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "checkpoint/little_endian.hpp"
+#include "base/little_endian.hpp"
 #include "genome/validate.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

@@ -2,7 +2,7 @@
 // format (README, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
 //
 //   /                         root group, attributes:
-//       schema_version        u32   format version of this layout (1)
+//       schema_version        u32   format version of this layout (2)
 //       rank                  i32   the island (MPI rank) this file belongs to
 //       generation            u32   generations completed
 //       evaluations           u64   fitness evaluations on this island so far
@@ -17,7 +17,7 @@
 //                                          chunked and extendible (G unlimited); attribute
 //       columns               string "generation,seconds,evaluations,best,mean,std"
 //
-// Every dataset has an attribute "fnv1a64" (u64): FNV-1a 64 of its raw little-endian bytes.
+// Every dataset has an attribute "xxh3_64" (u64): XXH3-64 of its raw little-endian bytes.
 // All numbers are stored little-endian. Reading checks types and shapes, every checksum (naming
 // the dataset that does not match), and then the content (island_codec.cpp): offsets start at 0,
 // never decrease and end at W, counts match N, each chromosome is a valid derivation of the
@@ -25,7 +25,7 @@
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/hdf5_file.hpp"
 #include "checkpoint/island_codec.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

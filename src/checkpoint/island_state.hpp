@@ -23,7 +23,7 @@ struct IslandState {
 
 /// The run as a whole; written once per checkpoint by rank 0.
 struct RunMetadata {
-    std::uint32_t schemaVersion = 1;
+    std::uint32_t schemaVersion = 2;
     std::uint64_t seed = 0;
     std::uint32_t generation = 0;          ///< generations completed by every island
     std::int32_t ranks = 1;                ///< number of islands

@@ -4,7 +4,7 @@
 //   island-0000.h5 53248 0123456789abcdef
 //   end
 //
-// One line per file: plain name, size in bytes (decimal), FNV-1a 64 of its bytes (16 lowercase
+// One line per file: plain name, size in bytes (decimal), XXH3-64 of its bytes (16 lowercase
 // hex digits); then "end". verifyCheckpoint checks sizes and hashes by reading bytes only, so a
 // truncated or altered file is reported by name before any of it reaches libhdf5's parser.
 #include <fcntl.h>
@@ -20,8 +20,9 @@
 #include <stdexcept>
 
 #include "checkpoint/checkpoint_file.hpp"
-#include "io/genome_file.hpp"
-#include "io/input_error.hpp"
+#include "base/atomic_write.hpp"
+#include "base/hash.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 
@@ -39,7 +40,7 @@ bool plainName(const std::string& name) {
     return true;
 }
 
-/// Size and FNV-1a 64 of a file's bytes, read in blocks.
+/// Size and XXH3-64 of a file's bytes, read in blocks.
 struct FileDigest {
     std::uint64_t size = 0, hash = 0;
     bool ok = false;
@@ -48,25 +49,17 @@ FileDigest digest(const fs::path& path) {
     FileDigest d;
     std::ifstream in(path, std::ios::binary);
     if (!in) return d;
-    d.hash = fnv1a(nullptr, 0);
+    Hasher hasher;
     std::vector<char> block(1 << 16);
     while (in) {
         in.read(block.data(), std::streamsize(block.size()));
         const auto n = std::size_t(in.gcount());
-        d.hash = fnv1a(block.data(), n, d.hash);
+        hasher.add(block.data(), n);
         d.size += n;
     }
     d.ok = in.eof();
+    d.hash = hasher.digest();
     return d;
-}
-
-void fsyncPath(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw std::runtime_error(path + ": cannot open to fsync: " + std::strerror(errno));
-    const int rc = ::fsync(fd);
-    const int err = errno;
-    ::close(fd);
-    if (rc != 0) throw std::runtime_error(path + ": fsync failed: " + std::strerror(err));
 }
 
 std::string hex16(std::uint64_t v) {
@@ -112,17 +105,7 @@ void writeManifest(const std::string& folder, const std::vector<std::string>& fi
         text += name + " " + std::to_string(d.size) + " " + hex16(d.hash) + "\n";
     }
     text += "end\n";
-    const std::string temp = folder + "/" + kManifest + ".tmp", path = folder + "/" + kManifest;
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out.write(text.data(), std::streamsize(text.size()));
-        out.close();
-        if (!out) throw std::runtime_error(temp + ": cannot write");
-    }
-    fsyncPath(temp);
-    std::error_code ec;
-    fs::rename(temp, path, ec);
-    if (ec) throw std::runtime_error(path + ": cannot rename into place: " + ec.message());
+    writeStreamAtomically(folder + "/" + kManifest, [&](std::ostream& out) { out.write(text.data(), std::streamsize(text.size())); });
 }
 
 namespace {
@@ -157,12 +140,12 @@ std::vector<ManifestEntry> parseManifest(const std::string& folder) {
         }
         const std::size_t a = s.find(' '), b = a == std::string::npos ? a : s.find(' ', a + 1);
         if (b == std::string::npos || s.find(' ', b + 1) != std::string::npos)
-            throw ManifestProblem{where, "expected \"name size fnv1a64-hex\""};
+            throw ManifestProblem{where, "expected \"name size xxh3-64-hex\""};
         ManifestEntry e;
         e.name = s.substr(0, a);
         if (!plainName(e.name)) throw ManifestProblem{where, "\"" + e.name + "\" is not a plain file name"};
         if (!parseDecimal(s.substr(a + 1, b - a - 1), e.size)) throw ManifestProblem{where, "size is not a decimal number"};
-        if (!parseHex16(s.substr(b + 1), e.fnv1a64)) throw ManifestProblem{where, "hash is not 16 lowercase hex digits"};
+        if (!parseHex16(s.substr(b + 1), e.xxh3_64)) throw ManifestProblem{where, "hash is not 16 lowercase hex digits"};
         if (!names.insert(e.name).second) throw ManifestProblem{where, e.name + " is listed twice"};
         entries.push_back(std::move(e));
     }
@@ -214,8 +197,8 @@ std::string verifyCheckpoint(const std::string& folder) {
                    (size < e.size ? " (truncated)" : " (altered)");
         const FileDigest d = digest(path);
         if (!d.ok) return e.name + ": cannot read";
-        if (d.size != e.size || d.hash != e.fnv1a64)
-            return e.name + ": content hashes to " + hex16(d.hash) + " but MANIFEST lists " + hex16(e.fnv1a64) +
+        if (d.size != e.size || d.hash != e.xxh3_64)
+            return e.name + ": content hashes to " + hex16(d.hash) + " but MANIFEST lists " + hex16(e.xxh3_64) +
                    " (altered or damaged)";
     }
     return "";

@@ -2,7 +2,7 @@
 // The names below are a stable public format (README, `h5ls -r`, `h5dump -H`).
 //
 //   /                     root group, attributes:
-//       schema_version    u32     format version of the checkpoint layout (1)
+//       schema_version    u32     format version of the checkpoint layout (2)
 //       seed              u64     the run's seed
 //       generation        u32     generations completed by every island
 //       ranks             i32     number of islands (files island-0000.h5 ...)
@@ -18,7 +18,7 @@
 //       columns           string  "generation,seconds,evaluations,best,mean,std"
 //
 // Strings are fixed-length, null-padded UTF-8 (h5dump prints them as text; an empty string is
-// stored as one NUL). Every dataset has an "fnv1a64" (u64) attribute over its raw bytes.
+// stored as one NUL). Every dataset has an "xxh3_64" (u64) attribute over its raw bytes.
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -26,7 +26,7 @@
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/hdf5_file.hpp"
 #include "checkpoint/island_codec.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

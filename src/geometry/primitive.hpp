@@ -16,7 +16,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/mesh_shape.hpp"
+#include "mesh/mesh_shape.hpp"
 
 namespace shapevo {
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "geometry/primitive.hpp"
-#include "io/mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace shapevo {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh_shape.hpp"
+#include "mesh/mesh_shape.hpp"
 
 namespace shapevo {
 

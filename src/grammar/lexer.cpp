@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

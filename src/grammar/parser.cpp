@@ -15,9 +15,9 @@
 #include <sstream>
 
 #include "grammar/expression.hpp"
-#include "geometry/mesh_shape_file.hpp"
+#include "mesh/mesh_shape_file.hpp"
 #include "grammar/grammar_checks.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

@@ -11,7 +11,7 @@
 
 #include "genome/chromosome.hpp"
 #include "island/mpi_session.hpp"
-#include "run/settings.hpp"
+#include "island/migration_settings.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {

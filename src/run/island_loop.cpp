@@ -8,11 +8,11 @@
 #include <ostream>
 
 #include "checkpoint/checkpoint_file.hpp"
-#include "io/curve_plot.hpp"
-#include "io/genome_file.hpp"
-#include "io/glb_writer.hpp"
-#include "io/model_writer.hpp"
-#include "io/run_report.hpp"
+#include "report/curve_plot.hpp"
+#include "genome/genome_file.hpp"
+#include "mesh/glb_writer.hpp"
+#include "report/model_writer.hpp"
+#include "report/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
 #include "search/search_method.hpp"

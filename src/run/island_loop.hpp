@@ -5,7 +5,7 @@
 #include <iosfwd>
 
 #include "checkpoint/island_state.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 #include "run/run_job.hpp"
 #include "run/scene.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

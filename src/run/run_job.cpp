@@ -8,8 +8,8 @@
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/parser.hpp"
-#include "io/config_file.hpp"
-#include "io/input_error.hpp"
+#include "run/config_file.hpp"
+#include "base/input_error.hpp"
 #include "run/island_loop.hpp"
 #include "run/output_folder.hpp"
 

@@ -2,11 +2,11 @@
 #include "run/scene.hpp"
 
 #include "genome/operators.hpp"
-#include "io/input_error.hpp"
-#include "io/model_volume.hpp"
-#include "io/overlay_image.hpp"
+#include "base/input_error.hpp"
+#include "report/model_volume.hpp"
+#include "report/overlay_image.hpp"
 #include "score/image_scorer.hpp"
-#include "io/vdb_target_file.hpp"
+#include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 
 namespace shapevo {

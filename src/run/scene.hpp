@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "io/run_report.hpp"
+#include "report/run_report.hpp"
 #include "run/settings.hpp"
 #include "score/scorer.hpp"
 #include "score/camera.hpp"

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 

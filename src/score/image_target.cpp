@@ -1,8 +1,9 @@
 // Image targets: pixel classification into bit rows, and loading from PNG with size checks.
 #include "score/image_target.hpp"
 
-#include "io/input_error.hpp"
-#include "io/png_image.hpp"
+#include "base/hash.hpp"
+#include "base/input_error.hpp"
+#include "image/png_image.hpp"
 
 namespace shapevo {
 
@@ -50,18 +51,12 @@ ImageTarget makeImageTarget(int width, int height, const std::vector<std::uint8_
                 ++t.avoidCount;
             }
         }
-    std::uint64_t h = 1469598103934665603ULL;
-    auto mix = [&h](std::uint64_t v) {
-        for (int b = 0; b < 8; ++b) {
-            h ^= (v >> (8 * b)) & 0xff;
-            h *= 1099511628211ULL;
-        }
-    };
-    mix(std::uint64_t(width));
-    mix(std::uint64_t(height));
-    for (std::uint64_t v : t.hit) mix(v);
-    for (std::uint64_t v : t.avoid) mix(v);
-    t.hash = h;
+    Hasher h;
+    h.addNumber(std::uint64_t(width));
+    h.addNumber(std::uint64_t(height));
+    for (std::uint64_t v : t.hit) h.addNumber(v);
+    for (std::uint64_t v : t.avoid) h.addNumber(v);
+    t.hash = h.digest();
     return t;
 }
 

@@ -31,7 +31,7 @@ struct ImageTarget {
     std::vector<std::uint64_t> avoid;  ///< pixels the model should leave empty (bit rows)
     std::uint64_t hitCount = 0;
     std::uint64_t avoidCount = 0;
-    std::uint64_t hash = 0;            ///< FNV-1a of size and bits; identifies the target in outputs
+    std::uint64_t hash = 0;            ///< XXH3-64 of size and bits; identifies the target in outputs
 
     int wordsPerRow() const { return (width + 63) / 64; }
     bool isHit(int x, int y) const { return (hit[std::size_t(y) * std::size_t(wordsPerRow()) + std::size_t(x >> 6)] >> (x & 63)) & 1; }

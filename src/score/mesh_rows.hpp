@@ -33,7 +33,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/mesh_shape.hpp"
+#include "mesh/mesh_shape.hpp"
 #include "score/box_rows.hpp"
 #include "score/chord_rows.hpp"
 

@@ -28,7 +28,7 @@ struct VolumeTarget {
     std::vector<std::uint64_t> avoid;  ///< voxels the model must avoid (bit rows, may be all zero)
     std::uint64_t fillCount = 0;
     std::uint64_t avoidCount = 0;
-    std::uint64_t hash = 0;            ///< FNV-1a of grid spec and bits; identifies the target in outputs
+    std::uint64_t hash = 0;            ///< XXH3-64 of grid spec and bits; identifies the target in outputs
 };
 
 }  // namespace shapevo

@@ -10,7 +10,7 @@
 
 #include "genome/chromosome.hpp"
 #include "genome/random.hpp"
-#include "run/settings.hpp"
+#include "search/search_settings.hpp"
 #include "search/evaluator.hpp"
 #include "search/generation_stats.hpp"
 #include "search/population.hpp"

@@ -29,6 +29,20 @@ struct RjmcmcSettings {
     bool delayedRejection = false;          ///< second stage after a rejected jump (Green & Mira)
 };
 
+/// The genetic algorithm's sizes ([ga]); population, generations and initial lengths apply to
+/// every method.
+struct GaSettings {
+    std::uint32_t population = 200;
+    std::uint32_t generations = 50;
+    std::uint32_t elitism = 30;
+    std::uint32_t tournament = 10;
+    double mutation = 0.30;                             ///< probability that a pair is mutated, not crossed
+    double growWeight = 1.0, cutWeight = 1.0, alterWeight = 1.0;  ///< split of the mutations
+    int crossoverRetries = 3;
+    std::uint32_t initialGenesMin = 2, initialGenesMax = 40;  ///< initial length drawn uniformly in between
+};
+
+
 struct SearchSettings {
     SearchMethodKind method = SearchMethodKind::Ga;
     SmcSettings smc;

@@ -9,7 +9,7 @@
 
 #include "checkpoint_test_util.hpp"
 #include "checkpoint/island_codec.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

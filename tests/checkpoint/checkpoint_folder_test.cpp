@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "checkpoint_test_util.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

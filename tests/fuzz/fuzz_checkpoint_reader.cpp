@@ -7,7 +7,7 @@
 //        checkpoint folder and verifyCheckpoint runs; only if it passes do readRunMetadata,
 //        readIslandFile and describeCheckpoint run. This fuzzes the MANIFEST parser and the
 //        size/hash gate. libhdf5's own file-format parser is NOT fuzzed here: it is protected by
-//        that gate (no byte reaches H5Fopen before its size and FNV-1a hash match the MANIFEST,
+//        that gate (no byte reaches H5Fopen before its size and XXH3-64 hash match the MANIFEST,
 //        which only our writer produces), and fuzzing it would be fuzzing libhdf5, not shapevo.
 //  odd   "decoder": [mode][i32 rank][u32 generation][u64 evaluations][u64 individuals]
 //        [5 x u32 LE lengths of genes, offsets, gene_counts, fitness, rng][those bytes][rest:
@@ -37,7 +37,7 @@
 #include "genome/operators.hpp"
 #include "genome/validate.hpp"
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include "grammar/expression.hpp"
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
-#include "io/vdb_target_file.hpp"
+#include "score/vdb_target_file.hpp"
 #include "score/image_scorer.hpp"
 #include "score/volume_scorer.hpp"
 

@@ -8,7 +8,7 @@
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

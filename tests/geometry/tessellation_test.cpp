@@ -12,7 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/tessellation.hpp"
-#include "io/model_writer.hpp"
+#include "report/model_writer.hpp"
 
 namespace shapevo {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "grammar/expression.hpp"
 #include "grammar/parser.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

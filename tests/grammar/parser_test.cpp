@@ -8,7 +8,7 @@
 
 #include "grammar/parser.hpp"
 #include "grammar_test_util.hpp"
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 
 namespace shapevo {
 namespace {

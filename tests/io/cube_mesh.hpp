@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo::test {

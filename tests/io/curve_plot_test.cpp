@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "io/curve_plot.hpp"
-#include "io/input_error.hpp"
-#include "io/plot_axes.hpp"
+#include "report/curve_plot.hpp"
+#include "base/input_error.hpp"
+#include "report/plot_axes.hpp"
 #include "png_read.hpp"
 #include "../test_support.hpp"
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cube_mesh.hpp"
-#include "io/glb_writer.hpp"
-#include "io/input_error.hpp"
+#include "mesh/glb_writer.hpp"
+#include "base/input_error.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "cube_mesh.hpp"
-#include "io/input_error.hpp"
-#include "io/mesh_reader.hpp"
+#include "base/input_error.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {

@@ -10,8 +10,8 @@
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
-#include "io/input_error.hpp"
-#include "io/model_volume.hpp"
+#include "base/input_error.hpp"
+#include "report/model_volume.hpp"
 #include "score/voxelizer.hpp"
 #include "../test_support.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-#include "io/overlay_image.hpp"
+#include "report/overlay_image.hpp"
 #include "png_read.hpp"
 #include "../test_support.hpp"
 

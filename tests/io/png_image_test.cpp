@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "../test_support.hpp"
-#include "io/input_error.hpp"
-#include "io/png_image.hpp"
+#include "base/input_error.hpp"
+#include "image/png_image.hpp"
+#include "image/png_writer.hpp"
 #include "png_test_util.hpp"
 
 namespace shapevo {
@@ -176,7 +177,7 @@ TEST_F(PngRead, WriterRoundTripsRgbaThroughATemporaryFile) {
         EXPECT_EQ(im.alpha[i], rgba[4 * i + 3]);
     }
     EXPECT_THROW(writePngRgba(path, w, h + 1, rgba), std::invalid_argument);
-    EXPECT_THROW(writePngRgba(dir.file("no/such/folder/x.png"), w, h, rgba), std::runtime_error);
+    EXPECT_THROW(writePngRgba(dir.file("no/such/folder/x.png"), w, h, rgba), InputError);
 }
 
 /// readPng(path) must throw an InputError naming the file whose message contains `words`.

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "io/input_error.hpp"
-#include "io/png_writer.hpp"
+#include "base/input_error.hpp"
+#include "image/png_writer.hpp"
 #include "png_read.hpp"
 #include "../test_support.hpp"
 
@@ -19,7 +19,7 @@ TEST(PngWriter, RgbaPixelsRoundTripExactly) {
     for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = std::uint8_t((i * 7919u) >> 3);
     for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;  // opaque: no alpha rounding in the reader
     const std::string path = dir.file("image.png");
-    writePngRgba(path, w, h, rgba.data());
+    writePngRgba(path, w, h, rgba);
     bool ok = false;
     const test::RgbaImage back = test::readPngRgba(path, ok);
     ASSERT_TRUE(ok);

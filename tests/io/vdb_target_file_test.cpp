@@ -12,8 +12,8 @@
 #include <openvdb/openvdb.h>
 
 #include "cube_mesh.hpp"
-#include "io/input_error.hpp"
-#include "io/vdb_target_file.hpp"
+#include "base/input_error.hpp"
+#include "score/vdb_target_file.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {

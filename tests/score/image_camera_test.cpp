@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "io/input_error.hpp"
+#include "base/input_error.hpp"
 #include "score/camera.hpp"
 
 namespace shapevo {

@@ -7,8 +7,9 @@
 
 #include "../io/png_test_util.hpp"
 #include "../test_support.hpp"
-#include "io/input_error.hpp"
-#include "io/png_image.hpp"
+#include "base/input_error.hpp"
+#include "image/png_image.hpp"
+#include "image/png_writer.hpp"
 #include "score/image_target.hpp"
 
 namespace shapevo {

@@ -9,7 +9,7 @@
 #include "genome/sequential_growth.hpp"
 #include "genome/validate.hpp"
 #include "grammar/parser.hpp"
-#include "io/vdb_target_file.hpp"
+#include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/rjmcmc.hpp"
 #include "search/smc.hpp"

@@ -1,0 +1,25 @@
+// XXH3-64 through libxxhash's one-shot and streaming calls.
+#include "base/hash.hpp"
+
+#include <new>
+
+#include <xxhash.h>
+
+namespace shapevo {
+
+std::uint64_t hash64(const void* data, std::size_t bytes) { return XXH3_64bits(bytes ? data : "", bytes); }
+
+Hasher::Hasher() : state_(XXH3_createState()) {
+    if (!state_) throw std::bad_alloc();
+    XXH3_64bits_reset(static_cast<XXH3_state_t*>(state_));
+}
+
+Hasher::~Hasher() { XXH3_freeState(static_cast<XXH3_state_t*>(state_)); }
+
+void Hasher::add(const void* data, std::size_t bytes) {
+    if (bytes) XXH3_64bits_update(static_cast<XXH3_state_t*>(state_), data, bytes);
+}
+
+std::uint64_t Hasher::digest() const { return XXH3_64bits_digest(static_cast<const XXH3_state_t*>(state_)); }
+
+}  // namespace shapevo

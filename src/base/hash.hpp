@@ -1,0 +1,44 @@
+// hash64: the one content hash of shapevo, XXH3-64 (seed 0) from Debian's libxxhash. It checks
+// checkpoint datasets and MANIFEST lines, ties genome files to their grammar, and identifies
+// targets. A file's hash is what `xxhsum -H3 FILE` prints, so users can check any MANIFEST line
+// by hand. Numbers are hashed as their little-endian bytes, so a hash is the same on every CPU.
+#pragma once
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+
+#include "base/little_endian.hpp"
+
+namespace shapevo {
+
+/// XXH3-64 of `bytes` bytes at `data` (data may be null when bytes == 0).
+std::uint64_t hash64(const void* data, std::size_t bytes);
+inline std::uint64_t hash64(std::string_view s) { return hash64(s.data(), s.size()); }
+
+/// The same hash over a stream of pieces: Hasher h; h.add(p, n); ...; h.digest() equals
+/// hash64 of the concatenated pieces.
+class Hasher {
+public:
+    Hasher();
+    ~Hasher();
+    Hasher(const Hasher&) = delete;
+    Hasher& operator=(const Hasher&) = delete;
+
+    void add(const void* data, std::size_t bytes);
+    /// A number as its little-endian bytes (doubles and floats by their IEEE-754 bits).
+    template <class T>
+    void addNumber(T value) {
+        static_assert(std::is_arithmetic_v<T>);
+        std::uint8_t b[sizeof(T)];
+        le::store(b, value);
+        add(b, sizeof b);
+    }
+    std::uint64_t digest() const;
+
+private:
+    void* state_;  ///< an XXH3_state_t, kept out of this header
+};
+
+}  // namespace shapevo

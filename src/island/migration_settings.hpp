@@ -1,0 +1,15 @@
+// MigrationSettings: the [migration] part of a config, owned by the island stage: how often and
+// how many elites move around the ring of islands.
+#pragma once
+#include <cstdint>
+
+namespace shapevo {
+
+/// Ring migration between islands (one island per MPI rank).
+struct MigrationSettings {
+    std::uint32_t interval = 20;  ///< generations between migrations (0 = never)
+    std::uint32_t count = 5;      ///< best individuals sent to rank + 1, replacing its worst
+    bool async = false;           ///< non-blocking messages (not repeatable) instead of lock-step
+};
+
+}  // namespace shapevo

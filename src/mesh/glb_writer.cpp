@@ -1,0 +1,129 @@
+// GLB writer: glTF JSON chunk (space-padded) and BIN chunk (zero-padded), both 4-byte aligned.
+#include "mesh/glb_writer.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "base/atomic_write.hpp"
+#include "base/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+
+constexpr std::uint32_t kMagic = 0x46546C67;      // "glTF"
+constexpr std::uint32_t kJsonChunk = 0x4E4F534A;  // "JSON"
+constexpr std::uint32_t kBinChunk = 0x004E4942;   // "BIN\0"
+constexpr int kFloat = 5126, kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+void appendU32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
+}
+void appendF32(std::vector<std::uint8_t>& out, float v) { appendU32(out, std::bit_cast<std::uint32_t>(v)); }
+
+/// %.9g round-trips every float.
+void appendNumber(std::string& out, float v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.9g", double(v));
+    out += s;
+}
+void appendVec3(std::string& out, const float v[3]) {
+    out += '[';
+    for (int a = 0; a < 3; ++a) {
+        if (a > 0) out += ',';
+        appendNumber(out, v[a]);
+    }
+    out += ']';
+}
+
+/// The binary buffer: positions, then indices (both multiples of 4 bytes).
+std::vector<std::uint8_t> binaryBuffer(const Mesh& mesh) {
+    std::vector<std::uint8_t> bin;
+    bin.reserve(mesh.vertices.size() * 12 + mesh.triangles.size() * 12);
+    for (const auto& v : mesh.vertices)
+        for (int a = 0; a < 3; ++a) appendF32(bin, v[a]);
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t i : t) appendU32(bin, i);
+    return bin;
+}
+
+std::string gltfJson(const Mesh& mesh, std::size_t binBytes) {
+    std::string json = R"({"asset":{"version":"2.0","generator":"shapevo"},"scene":0,"scenes":[{"nodes":[0]}],)";
+    if (mesh.triangles.empty()) {
+        json += R"("nodes":[{"name":"shapevo model"}]})";
+        return json;
+    }
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) lo[a] = std::numeric_limits<float>::max(), hi[a] = -std::numeric_limits<float>::max();
+    for (const auto& v : mesh.vertices)
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a]);
+    const std::size_t positionBytes = mesh.vertices.size() * 12, indexBytes = mesh.triangles.size() * 12;
+    // appended piece by piece: literal + std::string trips GCC 12's -Wrestrict false positive
+    const auto add = [&json](auto... parts) {
+        for (const std::string& p : {std::string(parts)...}) json += p;
+    };
+    const auto n = [](std::size_t v) { return std::to_string(v); };
+    add(R"("nodes":[{"mesh":0,"name":"shapevo model"}],)",
+        R"("meshes":[{"name":"shapevo model","primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":4}]}],)");
+    add(R"("accessors":[{"bufferView":0,"componentType":)", n(kFloat), R"(,"count":)", n(mesh.vertices.size()),
+        R"(,"type":"VEC3","min":)");
+    appendVec3(json, lo);
+    add(R"(,"max":)");
+    appendVec3(json, hi);
+    add(R"(},{"bufferView":1,"componentType":)", n(kUnsignedInt), R"(,"count":)", n(mesh.triangles.size() * 3),
+        R"(,"type":"SCALAR"}],)");
+    add(R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)", n(positionBytes), R"(,"target":)",
+        n(kArrayBuffer), "},");
+    add(R"({"buffer":0,"byteOffset":)", n(positionBytes), R"(,"byteLength":)", n(indexBytes), R"(,"target":)",
+        n(kElementArrayBuffer), "}],");
+    add(R"("buffers":[{"byteLength":)", n(binBytes), "}]}");
+    return json;
+}
+
+void check(const Mesh& mesh, const std::string& path) {
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite(mesh.vertices[i][a]))
+                throw InputError(path, "vertex " + std::to_string(i), "coordinate is not a finite number");
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (std::uint32_t i : mesh.triangles[t])
+            if (i >= mesh.vertices.size())
+                throw InputError(path, "triangle " + std::to_string(t), "vertex index " + std::to_string(i) + " out of range");
+}
+
+}  // namespace
+
+void writeGlb(const Mesh& mesh, const std::string& path) {
+    check(mesh, path);
+    const std::vector<std::uint8_t> bin = mesh.triangles.empty() ? std::vector<std::uint8_t>{} : binaryBuffer(mesh);
+    std::string json = gltfJson(mesh, bin.size());
+    json.append((4 - json.size() % 4) % 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
+
+    std::vector<std::uint8_t> file;
+    const std::size_t total = 12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size());
+    if (total > std::numeric_limits<std::uint32_t>::max()) throw InputError(path, "", "model too large for a GLB file");
+    file.reserve(total);
+    appendU32(file, kMagic);
+    appendU32(file, 2);
+    appendU32(file, std::uint32_t(total));
+    appendU32(file, std::uint32_t(json.size()));
+    appendU32(file, kJsonChunk);
+    file.insert(file.end(), json.begin(), json.end());
+    if (!bin.empty()) {
+        appendU32(file, std::uint32_t(bin.size()));
+        appendU32(file, kBinChunk);
+        file.insert(file.end(), bin.begin(), bin.end());
+    }
+    writeStreamAtomically(path, [&](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
+    });
+}
+
+}  // namespace shapevo

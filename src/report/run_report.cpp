@@ -1,0 +1,72 @@
+// Run reports: plain text written to a temporary file, then renamed into place.
+#include "report/run_report.hpp"
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "base/atomic_write.hpp"
+
+namespace shapevo {
+
+namespace {
+void writeText(const std::string& path, const std::string& text) {
+    writeStreamAtomically(path, [&](std::ostream& out) { out << text; });
+}
+std::string jsonString(const std::string& s) {
+    std::string r = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') r += '\\', r += c;
+        else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            r += buf;
+        } else r += c;
+    }
+    return r + "\"";
+}
+}  // namespace
+
+std::string formatDouble(double v) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, end);
+}
+
+void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path) {
+    std::string text = "generation,seconds,evaluations,best,mean,std\n";
+    for (const auto& s : curve) {
+        char secs[32];
+        std::snprintf(secs, sizeof secs, "%.6f", s.seconds);
+        text += std::to_string(s.generation) + "," + secs + "," + std::to_string(s.evaluations) + "," +
+                formatDouble(s.best) + "," + formatDouble(s.mean) + "," + formatDouble(s.std) + "\n";
+    }
+    writeText(path, text);
+}
+
+void writeSummaryJson(const RunSummary& s, const std::string& path) {
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.targetHash));
+    std::string t = "{\n";
+    t += "  \"name\": " + jsonString(s.name) + ",\n";
+    t += "  \"config\": " + jsonString(s.config) + ",\n";
+    t += "  \"grammar\": " + jsonString(s.grammar) + ",\n";
+    t += "  \"seed\": " + std::to_string(s.seed) + ",\n";
+    t += "  \"generations\": " + std::to_string(s.generations) + ",\n";
+    t += "  \"evaluations\": " + std::to_string(s.evaluations) + ",\n";
+    t += "  \"wall_seconds\": " + formatDouble(s.wallSeconds) + ",\n";
+    t += "  \"best_fitness\": " + formatDouble(s.bestFitness) + ",\n";
+    if (s.voxelIoU) t += "  \"voxel_iou\": " + formatDouble(*s.voxelIoU) + ",\n";
+    if (s.silhouetteIoU) t += "  \"silhouette_iou\": " + formatDouble(*s.silhouetteIoU) + ",\n";
+    t += "  \"best_genes\": " + std::to_string(s.bestGenes) + ",\n";
+    t += "  \"best_primitives\": " + std::to_string(s.bestPrimitives) + ",\n";
+    t += "  \"target_hash\": \"" + std::string(hash) + "\",\n";
+    t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
+    t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
+    t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
+    t += "  \"threads\": " + std::to_string(s.threads) + "\n}\n";
+    writeText(path, t);
+}
+
+}  // namespace shapevo

@@ -1,0 +1,368 @@
+// Config reader: toml++ parse, --set overrides, then a strict walk over known sections and keys.
+#include "run/config_file.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "base/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+
+std::string place(const toml::node& n) {
+    const auto& s = n.source();
+    return std::to_string(s.begin.line) + ":" + std::to_string(s.begin.column);
+}
+
+class Reader {
+public:
+    Reader(const toml::table& root, std::string path) : root_(root), path_(std::move(path)) {}
+
+    /// Values from --set were parsed on their own and carry no file: name the option instead.
+    [[noreturn]] void fail(const toml::node& n, const std::string& what) const {
+        if (!n.source().path) throw InputError("--set", "", what);
+        throw InputError(path_, place(n), what);
+    }
+
+    const toml::table* section(const std::string& name) {
+        known_[name];
+        const toml::node* n = root_.get(name);
+        if (!n) return nullptr;
+        if (!n->is_table()) fail(*n, "[" + name + "] must be a table");
+        return n->as_table();
+    }
+    const toml::node* key(const toml::table* t, const std::string& sec, const std::string& k) {
+        known_[sec].insert(k);
+        return t ? t->get(k) : nullptr;
+    }
+    template <class T>
+    void number(const toml::table* t, const std::string& sec, const std::string& k, T& out, double lo, double hi) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return;
+        double v;
+        if (auto i = n->value_exact<std::int64_t>()) v = double(*i);
+        else if (auto d = n->value_exact<double>()) v = *d;
+        else fail(*n, sec + "." + k + " must be a number");
+        if constexpr (std::is_integral_v<T>) {
+            if (v != std::floor(v)) fail(*n, sec + "." + k + " must be a whole number");
+        }
+        if (!(v >= lo && v <= hi))
+            fail(*n, sec + "." + k + " = " + toml_value(*n) + " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
+        out = T(v);
+    }
+    void string(const toml::table* t, const std::string& sec, const std::string& k, std::string& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return;
+        if (!n->is_string()) fail(*n, sec + "." + k + " must be a string");
+        out = *n->value<std::string>();
+    }
+    std::vector<std::string> strings(const toml::table* t, const std::string& sec, const std::string& k) {
+        std::vector<std::string> out;
+        const toml::node* n = key(t, sec, k);
+        if (!n) return out;
+        if (n->is_string()) return {*n->value<std::string>()};
+        if (!n->is_array()) fail(*n, sec + "." + k + " must be a string or an array of strings");
+        for (const auto& e : *n->as_array()) {
+            if (!e.is_string()) fail(e, sec + "." + k + " must hold strings only");
+            out.push_back(*e.value<std::string>());
+        }
+        return out;
+    }
+    bool vec3(const toml::table* t, const std::string& sec, const std::string& k, glm::dvec3& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return false;
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 3) fail(*n, sec + "." + k + " must be an array of 3 numbers");
+        for (int i = 0; i < 3; ++i) {
+            const auto& e = (*a)[std::size_t(i)];
+            if (auto v = e.value<double>()) out[i] = *v;
+            else fail(e, sec + "." + k + " must be an array of 3 numbers");
+        }
+        return true;
+    }
+    bool vec2(const toml::table* t, const std::string& sec, const std::string& k, glm::dvec2& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return false;
+        const toml::array* a = n->as_array();
+        if (!a || a->size() != 2) fail(*n, sec + "." + k + " must be an array of 2 numbers");
+        for (int i = 0; i < 2; ++i) {
+            const auto& e = (*a)[std::size_t(i)];
+            if (auto v = e.value<double>()) out[i] = *v;
+            else fail(e, sec + "." + k + " must be an array of 2 numbers");
+        }
+        return true;
+    }
+    /// Every key present must have been asked for.
+    void rejectUnknown() const {
+        for (const auto& [k, v] : root_) {
+            const std::string name(k.str());
+            auto it = known_.find(name);
+            if (it == known_.end()) fail(v, "unknown section [" + name + "] (expected one of: " + list(known_) + ")");
+            for (const auto& entry : *v.as_table()) {
+                const toml::key& kk = entry.first;
+                if (!it->second.count(std::string(kk.str()))) {
+                    const std::string what = "unknown key '" + std::string(kk.str()) + "' in [" + name +
+                                             "] (expected one of: " + join(it->second) + ")";
+                    if (!kk.source().path) throw InputError("--set", "", what);
+                    throw InputError(path_, std::to_string(kk.source().begin.line) + ":" +
+                                                std::to_string(kk.source().begin.column), what);
+                }
+            }
+        }
+    }
+
+private:
+    static std::string fmt(double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+    static std::string toml_value(const toml::node& n) {
+        std::ostringstream s;
+        n.visit([&](auto&& v) { s << v; });
+        return s.str();
+    }
+    static std::string join(const std::set<std::string>& s) {
+        std::string r;
+        for (const auto& x : s) r += (r.empty() ? "" : ", ") + x;
+        return r;
+    }
+    static std::string list(const std::map<std::string, std::set<std::string>>& m) {
+        std::string r;
+        for (const auto& [k, v] : m) r += (r.empty() ? "" : ", ") + k;
+        return r;
+    }
+    const toml::table& root_;
+    std::string path_;
+    std::map<std::string, std::set<std::string>> known_;
+};
+
+void applyOverride(toml::table& root, const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError("--set", assignment, "expected key=value, e.g. ga.population=50");
+    const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+    const auto dot = key.find('.');
+    if (dot == std::string::npos) throw InputError("--set", assignment, "expected section.key=value, e.g. ga.population=50");
+    const std::string section = key.substr(0, dot), name = key.substr(dot + 1);
+    toml::table parsed;
+    try {
+        parsed = toml::parse("v = " + value);
+    } catch (const toml::parse_error&) {
+        parsed = toml::table{{"v", value}};  // a bare word: take it as a string
+    }
+    if (!root.contains(section)) root.insert(section, toml::table{});
+    toml::table* t = root[section].as_table();
+    if (!t) throw InputError("--set", assignment, "[" + section + "] is not a table in the config");
+    t->insert_or_assign(name, std::move(*parsed.get("v")));
+}
+
+/// [search]: the method and the baselines' settings (search/search_settings.hpp).
+void readSearch(Reader& rd, RunSettings& r) {
+    const toml::table* t = rd.section("search");
+    SearchSettings& s = r.search;
+    std::string method = "ga";
+    rd.string(t, "search", "method", method);
+    if (method == "ga") s.method = SearchMethodKind::Ga;
+    else if (method == "smc") s.method = SearchMethodKind::Smc;
+    else if (method == "sosmc") s.method = SearchMethodKind::Sosmc;
+    else if (method == "rjmcmc") s.method = SearchMethodKind::Rjmcmc;
+    else rd.fail(*t->get("method"), "search.method must be \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"" + method + "\"");
+    constexpr double big = 1e12;
+    rd.number(t, "search", "smc_temperature", s.smc.temperature, 1e-300, big);
+    RjmcmcSettings& m = s.rjmcmc;
+    rd.number(t, "search", "rjmcmc_jump_probability", m.jumpProbability, 0, 1);
+    rd.number(t, "search", "rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6);
+    rd.number(t, "search", "rjmcmc_temperature", m.temperature, 1e-300, big);
+    rd.number(t, "search", "rjmcmc_temperature_ratio", m.temperatureRatio, 1, big);
+    rd.number(t, "search", "rjmcmc_annealing", m.annealing, 1, big);
+    rd.number(t, "search", "rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9);
+    rd.number(t, "search", "rjmcmc_depth_bias", m.depthBias, 1e-6, 1);
+    if (const toml::node* n = rd.key(t, "search", "rjmcmc_delayed_rejection")) {
+        if (!n->is_boolean()) rd.fail(*n, "search.rjmcmc_delayed_rejection must be true or false");
+        m.delayedRejection = *n->value<bool>();
+    }
+}
+
+/// [camera]: projection = "perspective" | "orthographic" | "shadow" and its settings; checked by
+/// Camera::compile when the scene is loaded.
+void readCamera(Reader& rd, const toml::table* t, CameraSpec& c, const std::string& path) {
+    const std::string sec = "camera";
+    std::string projection = "perspective";
+    rd.string(t, sec, "projection", projection);
+    if (projection == "perspective") c.projection = Projection::Perspective;
+    else if (projection == "orthographic") c.projection = Projection::Orthographic;
+    else if (projection == "shadow") c.projection = Projection::Shadow;
+    else rd.fail(*t->get("projection"), "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + projection + "\"");
+    rd.number(t, sec, "width", c.width, 1, 16384);
+    rd.number(t, sec, "height", c.height, 1, 16384);
+    rd.vec3(t, sec, "eye", c.eye);
+    rd.vec3(t, sec, "look_at", c.lookAt);
+    rd.vec3(t, sec, "up", c.up);
+    rd.number(t, sec, "fov_degrees", c.fovDegrees, -1e9, 1e9);
+    rd.number(t, sec, "view_height", c.viewHeight, -1e12, 1e12);
+    rd.number(t, sec, "near", c.near, -1e12, 1e12);
+    rd.vec3(t, sec, "light", c.light);
+    rd.number(t, sec, "ground_y", c.groundY, -1e12, 1e12);
+    rd.vec2(t, sec, "ground_min", c.groundMin);
+    rd.vec2(t, sec, "ground_max", c.groundMax);
+    Camera::compile(c, path, sec);  // located errors now, not when the run starts
+}
+
+}  // namespace
+
+RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+    toml::table root;
+    try {
+        root = toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        const auto& s = e.source();
+        throw InputError(path, std::to_string(s.begin.line) + ":" + std::to_string(s.begin.column),
+                         std::string(e.description()));
+    }
+    for (const auto& o : overrides) applyOverride(root, o);
+
+    RunSettings r;
+    r.configPath = path;
+    {
+        std::ostringstream s;
+        s << root;
+        r.configText = overrides.empty() ? text : s.str();
+    }
+    const std::filesystem::path base = std::filesystem::path(path).parent_path();
+    auto resolve = [&](const std::string& p) {
+        return std::filesystem::path(p).is_absolute() ? p : (base / p).lexically_normal().string();
+    };
+    Reader rd(root, path);
+
+    const toml::table* run = rd.section("run");
+    rd.string(run, "run", "name", r.name);
+    rd.number(run, "run", "seed", r.seed, 0, 9.007199254740992e15);
+    rd.number(run, "run", "threads", r.threads, 0, 4096);
+    rd.string(run, "run", "out", r.out);
+    rd.number(run, "run", "wall_time", r.wallTime, 0, 1e9);
+    if (rd.key(run, "run", "target_fitness")) {
+        double t = 0;
+        rd.number(run, "run", "target_fitness", t, -1e300, 1e300);
+        r.targetFitness = t;
+    }
+
+    const toml::table* grammar = rd.section("grammar");
+    rd.string(grammar, "grammar", "file", r.grammarPath);
+    if (r.grammarPath.empty()) throw InputError(path, "", "missing [grammar] file = \"...\"");
+    r.grammarPath = resolve(r.grammarPath);
+
+    const toml::table* target = rd.section("target");
+    for (const auto& f : rd.strings(target, "target", "fill")) r.targets.push_back({resolve(f), false});
+    for (const auto& f : rd.strings(target, "target", "avoid")) r.targets.push_back({resolve(f), true});
+    GridOverride grid;
+    const bool hasMin = rd.vec3(target, "target", "grid_min", grid.min);
+    const bool hasMax = rd.vec3(target, "target", "grid_max", grid.max);
+    rd.number(target, "target", "voxel_size", grid.voxelSize, 1e-6, 1e6);
+    std::string image;
+    rd.string(target, "target", "image", image);
+    ImageSceneSettings pixels;
+    rd.number(target, "target", "hit_min", pixels.rule.hitMin, 0, 255);
+    rd.number(target, "target", "hit_max", pixels.rule.hitMax, 0, 255);
+    rd.number(target, "target", "avoid_min", pixels.rule.avoidMin, 0, 255);
+    rd.number(target, "target", "avoid_max", pixels.rule.avoidMax, 0, 255);
+    rd.number(target, "target", "alpha_threshold", pixels.rule.alphaThreshold, 0, 256);
+    const toml::table* camera = rd.section("camera");
+    if (!image.empty()) {
+        if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))
+            throw InputError(path, "[target]", "an image target cannot be combined with fill/avoid volumes or a grid");
+        pixels.png = resolve(image);
+        pixels.rule.check(path, "target");
+        readCamera(rd, camera, pixels.camera, path);
+        r.image = pixels;
+    } else {
+        if (camera) throw InputError(path, "[camera]", "a camera is only used with an image target ([target] image = \"FILE.png\")");
+        if (r.targets.empty() || r.targets.front().avoid)
+            throw InputError(path, "", "missing [target] fill = \"FILE.vdb\" (at least one fill target) or image = \"FILE.png\"");
+        if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
+            throw InputError(path, "[target]", "grid_min, grid_max and voxel_size must be given together");
+        if (hasMin) r.grid = grid;
+    }
+
+    const toml::table* score = rd.section("score");
+    std::string form = "smootherstep";
+    rd.string(score, "score", "form", form);
+    if (form == "smootherstep") r.fitness.form = VolumeFitnessSettings::Form::Smootherstep;
+    else if (form == "weighted") r.fitness.form = VolumeFitnessSettings::Form::WeightedSum;
+    else rd.fail(*score->get("form"), "score.form must be \"smootherstep\" or \"weighted\", got \"" + form + "\"");
+    auto& f = r.fitness;
+    constexpr double big = 1e12;
+    rd.number(score, "score", "alpha", f.alpha, -big, big);
+    rd.number(score, "score", "beta", f.beta, -big, big);
+    rd.number(score, "score", "gamma", f.gamma, -big, big);
+    rd.number(score, "score", "length_optimal", f.lengthOptimal, 0, big);
+    rd.number(score, "score", "length_max", f.lengthMax, 0, big);
+    rd.number(score, "score", "fill_weight", f.fillWeight, -big, big);
+    rd.number(score, "score", "empty_weight", f.emptyWeight, -big, big);
+    rd.number(score, "score", "avoid_weight", f.avoidWeight, -big, big);
+    rd.number(score, "score", "overlap_weight", f.overlapWeight, -big, big);
+    rd.number(score, "score", "outside_weight", f.outsideWeight, -big, big);
+    if (f.lengthMax <= f.lengthOptimal)
+        throw InputError(path, "[score]", "length_max must be greater than length_optimal");
+
+    const toml::table* genome = rd.section("genome");
+    rd.number(genome, "genome", "max_genes", r.limits.maxGenes, 1, 1e7);
+
+    const toml::table* ga = rd.section("ga");
+    auto& g = r.ga;
+    rd.number(ga, "ga", "population", g.population, 2, 1e7);
+    rd.number(ga, "ga", "generations", g.generations, 1, 1e9);
+    rd.number(ga, "ga", "elitism", g.elitism, 0, 1e7);
+    rd.number(ga, "ga", "tournament", g.tournament, 1, 1e7);
+    rd.number(ga, "ga", "mutation", g.mutation, 0, 1);
+    rd.number(ga, "ga", "grow", g.growWeight, 0, big);
+    rd.number(ga, "ga", "cut", g.cutWeight, 0, big);
+    rd.number(ga, "ga", "alter", g.alterWeight, 0, big);
+    rd.number(ga, "ga", "crossover_retries", g.crossoverRetries, 1, 1000);
+    rd.number(ga, "ga", "initial_genes_min", g.initialGenesMin, 1, 1e7);
+    rd.number(ga, "ga", "initial_genes_max", g.initialGenesMax, 1, 1e7);
+    if (g.elitism >= g.population) throw InputError(path, "[ga]", "elitism must be smaller than population");
+    if (g.tournament > g.population) throw InputError(path, "[ga]", "tournament must not exceed population");
+    if (g.growWeight + g.cutWeight + g.alterWeight <= 0)
+        throw InputError(path, "[ga]", "grow, cut and alter weights must not all be 0");
+    if (g.initialGenesMin > g.initialGenesMax)
+        throw InputError(path, "[ga]", "initial_genes_min must not exceed initial_genes_max");
+    if (g.initialGenesMin > r.limits.maxGenes)
+        throw InputError(path, "[ga]", "initial_genes_min must not exceed genome.max_genes (" + std::to_string(r.limits.maxGenes) + ")");
+    readSearch(rd, r);
+    const toml::table* migration = rd.section("migration");
+    rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
+    rd.number(migration, "migration", "count", r.migration.count, 0, 1e7);
+    std::string mode = "sync";
+    rd.string(migration, "migration", "mode", mode);
+    if (mode != "sync" && mode != "async")
+        rd.fail(*migration->get("mode"), "migration.mode must be \"sync\" or \"async\", got \"" + mode + "\"");
+    r.migration.async = mode == "async";
+    if (r.migration.count > g.population - g.elitism && r.migration.interval > 0)
+        throw InputError(path, "[migration]", "count must not exceed population - elitism");
+
+    const toml::table* checkpoint = rd.section("checkpoint");
+    rd.number(checkpoint, "checkpoint", "interval", r.checkpoint.interval, 0, 1e9);
+    rd.number(checkpoint, "checkpoint", "seconds", r.checkpoint.seconds, 0, 1e9);
+    rd.number(checkpoint, "checkpoint", "keep", r.checkpoint.keep, 1, 1e6);
+    rd.rejectUnknown();
+    return r;
+}
+
+RunSettings loadConfig(const std::string& path, const std::vector<std::string>& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open config file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseConfig(ss.str(), path, overrides);
+}
+
+}  // namespace shapevo
