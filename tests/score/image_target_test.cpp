@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "../io/png_test_util.hpp"
+#include "../image/png_test_util.hpp"
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
 #include "image/png_image.hpp"

@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "report/overlay_image.hpp"
-#include "png_read.hpp"
+#include "../image/png_read.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {

@@ -11,7 +11,7 @@
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
-#include "cube_mesh.hpp"
+#include "../mesh/cube_mesh.hpp"
 #include "base/input_error.hpp"
 #include "score/vdb_target_file.hpp"
 #include "../test_support.hpp"

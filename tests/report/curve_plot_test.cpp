@@ -10,7 +10,7 @@
 #include "report/curve_plot.hpp"
 #include "base/input_error.hpp"
 #include "report/plot_axes.hpp"
-#include "png_read.hpp"
+#include "../image/png_read.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {

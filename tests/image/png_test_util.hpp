@@ -1,5 +1,5 @@
 // Test helper: write a PNG of any colour type, bit depth and interlacing with libpng directly
-// (independent of io/png_image.cpp), and CRC-32 for hand-made chunks.
+// (independent of image/png_image.cpp), and CRC-32 for hand-made chunks.
 #pragma once
 #include <png.h>
 
