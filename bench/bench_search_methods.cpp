@@ -1,5 +1,5 @@
-// bench_search_methods: one whole run of each search method (GA, SMC, SOSMC, RJMCMC with and
-// without delayed rejection) on configs/spaceship.toml (population 200, its generation count),
+// bench_search_methods: one whole run of each search method of search/search_methods.hpp's table
+// (argument i = the table's i-th method; one more argument runs RJMCMC with delayed rejection) on configs/spaceship.toml (population 200, its generation count),
 // one Evaluator thread. Each iteration is a fresh method with the config's seed, so every
 // iteration does identical work. Reports wall time per run, evaluations per run and per second
 // (the cost of a method's own bookkeeping shows as evals/s below the GA's), and the best fitness.
@@ -8,11 +8,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <string>
 
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
 #include "score/volume_scorer.hpp"
-#include "search/search_method.hpp"
+#include "search/search_methods.hpp"
 
 namespace {
 
@@ -20,8 +21,11 @@ using namespace shapevo;
 
 void BM_SearchRun(benchmark::State& state) {
     RunSettings s = loadConfig(SHAPEVO_SOURCE_DIR "/configs/spaceship.toml");
-    s.search.method = SearchMethodKind(state.range(0) > 3 ? 3 : state.range(0));
-    s.search.rjmcmc.delayedRejection = state.range(0) == 4;
+    const auto methods = searchMethods();
+    const auto i = std::size_t(state.range(0));
+    s.search.method = i < methods.size() ? methods[i].name : "rjmcmc";
+    s.search.rjmcmc.delayedRejection = i == methods.size();
+    state.SetLabel(std::string(s.search.method) + (s.search.rjmcmc.delayedRejection ? " +DR" : ""));
     const Grammar grammar = loadGrammar(s.grammarPath);
     const VolumeTarget target = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
     const VolumeScorer scorer(grammar, target, s.fitness);
@@ -42,8 +46,8 @@ void BM_SearchRun(benchmark::State& state) {
     state.counters["best"] = best;
 }
 
-// 0 ga, 1 smc, 2 sosmc, 3 rjmcmc, 4 rjmcmc with delayed rejection
-BENCHMARK(BM_SearchRun)->ArgName("method")->DenseRange(0, 4)->UseRealTime()->Unit(benchmark::kMillisecond);
+// every method of the table, then RJMCMC with delayed rejection
+BENCHMARK(BM_SearchRun)->ArgName("method")->DenseRange(0, int(searchMethods().size()))->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

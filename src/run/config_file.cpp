@@ -11,7 +11,9 @@
 
 #include <toml++/toml.h>
 
+#include "base/section_reader.hpp"
 #include "base/input_error.hpp"
+#include "search/search_methods.hpp"
 
 namespace shapevo {
 
@@ -165,31 +167,37 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     t->insert_or_assign(name, std::move(*parsed.get("v")));
 }
 
-/// [search]: the method and the baselines' settings (search/search_settings.hpp).
+/// A SectionReader over one [section] of the config, for stages that read their own keys.
+class TomlSection final : public SectionReader {
+public:
+    TomlSection(Reader& rd, const toml::table* t, std::string section) : rd_(rd), t_(t), section_(std::move(section)) {}
+    void number(std::string_view key, double& v, double lo, double hi) override { rd_.number(t_, section_, std::string(key), v, lo, hi); }
+    void count(std::string_view key, std::uint32_t& v, double lo, double hi) override {
+        rd_.number(t_, section_, std::string(key), v, lo, hi);
+    }
+    void flag(std::string_view key, bool& v) override {
+        if (const toml::node* n = rd_.key(t_, section_, std::string(key))) {
+            if (!n->is_boolean()) rd_.fail(*n, section_ + "." + std::string(key) + " must be true or false");
+            v = *n->value<bool>();
+        }
+    }
+
+private:
+    Reader& rd_;
+    const toml::table* t_;
+    std::string section_;
+};
+
+/// [search]: the method (a name in search/search_methods.cpp's table) and every method's own
+/// keys, each read by the method's entry (so a key of another method is known, not an error).
 void readSearch(Reader& rd, RunSettings& r) {
     const toml::table* t = rd.section("search");
     SearchSettings& s = r.search;
-    std::string method = "ga";
-    rd.string(t, "search", "method", method);
-    if (method == "ga") s.method = SearchMethodKind::Ga;
-    else if (method == "smc") s.method = SearchMethodKind::Smc;
-    else if (method == "sosmc") s.method = SearchMethodKind::Sosmc;
-    else if (method == "rjmcmc") s.method = SearchMethodKind::Rjmcmc;
-    else rd.fail(*t->get("method"), "search.method must be \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"" + method + "\"");
-    constexpr double big = 1e12;
-    rd.number(t, "search", "smc_temperature", s.smc.temperature, 1e-300, big);
-    RjmcmcSettings& m = s.rjmcmc;
-    rd.number(t, "search", "rjmcmc_jump_probability", m.jumpProbability, 0, 1);
-    rd.number(t, "search", "rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6);
-    rd.number(t, "search", "rjmcmc_temperature", m.temperature, 1e-300, big);
-    rd.number(t, "search", "rjmcmc_temperature_ratio", m.temperatureRatio, 1, big);
-    rd.number(t, "search", "rjmcmc_annealing", m.annealing, 1, big);
-    rd.number(t, "search", "rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9);
-    rd.number(t, "search", "rjmcmc_depth_bias", m.depthBias, 1e-6, 1);
-    if (const toml::node* n = rd.key(t, "search", "rjmcmc_delayed_rejection")) {
-        if (!n->is_boolean()) rd.fail(*n, "search.rjmcmc_delayed_rejection must be true or false");
-        m.delayedRejection = *n->value<bool>();
-    }
+    rd.string(t, "search", "method", s.method);
+    if (!findSearchMethod(s.method))
+        rd.fail(*t->get("method"), "search.method must be " + searchMethodNames() + ", got \"" + s.method + "\"");
+    TomlSection section(rd, t, "search");
+    for (const SearchMethodEntry& e : searchMethods()) e.readSettings(section, s);
 }
 
 /// [camera]: projection = "perspective" | "orthographic" | "shadow" and its settings; checked by

@@ -15,7 +15,7 @@
 #include "report/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
-#include "search/search_method.hpp"
+#include "search/search_methods.hpp"
 
 namespace shapevo {
 

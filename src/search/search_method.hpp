@@ -57,9 +57,4 @@ protected:
     std::uint64_t evaluations_ = 0;
 };
 
-/// The method `search.method` names, seeded with `seed`; `ga` gives population size and initial
-/// lengths to every method.
-std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
-                                               const GenomeLimits& limits, std::uint64_t seed);
-
 }  // namespace shapevo

@@ -1,13 +1,12 @@
-// SearchSettings: which search method an island runs (config [search] method = "ga" | "smc" |
-// "sosmc" | "rjmcmc") and the settings of the baselines. Population size, generation count and
+// SearchSettings: which search method an island runs (config [search] method = a name from the
+// table in search/search_methods.cpp) and the settings of the baselines. Population size, generation count and
 // the initial lengths stay in [ga] and apply to every method. Defaults and their sources are in
 // docs/search-methods.md.
 #pragma once
 #include <cstdint>
+#include <string>
 
 namespace shapevo {
-
-enum class SearchMethodKind : std::uint8_t { Ga, Smc, Sosmc, Rjmcmc };
 
 /// SMC and SOSMC (Ritchie et al. 2015): particles grow one geometric object per generation and
 /// are resampled with weights exp((f_new - f_old) / temperature).
@@ -44,7 +43,7 @@ struct GaSettings {
 
 
 struct SearchSettings {
-    SearchMethodKind method = SearchMethodKind::Ga;
+    std::string method = "ga";  ///< a name in searchMethods() (search/search_methods.hpp)
     SmcSettings smc;
     RjmcmcSettings rjmcmc;
 };

@@ -99,9 +99,10 @@ TEST(CheckpointInspect, DescribesRunAndEachIsland) {
     test::TempDir dir;
     const std::string cp = test::writeCheckpoint(dir.path(), 5, 2);
     const std::string text = describeCheckpoint(cp, false);
-    for (const char* expected : {"checkpoint-000005: complete", "generation   5", "islands      2",
-                                 "target hash  0123456789abcdef", "spaceship-test",
-                                 "schema       1"})
+    const std::string schema = "schema       " + std::to_string(kCheckpointSchemaVersion);
+    for (const std::string& expected : {std::string("checkpoint-000005: complete"), std::string("generation   5"),
+                                        std::string("islands      2"), std::string("target hash  0123456789abcdef"),
+                                        std::string("spaceship-test"), schema})
         EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
     EXPECT_NE(text.find("seed         " + std::to_string(test::makeRun(2).seed)), std::string::npos) << text;
     EXPECT_NE(text.find("\n       1           24 "), std::string::npos) << text;  // island 1: 24 individuals

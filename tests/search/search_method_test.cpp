@@ -12,6 +12,7 @@
 #include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/rjmcmc.hpp"
+#include "search/search_methods.hpp"
 #include "search/smc.hpp"
 
 namespace shapevo {
@@ -108,9 +109,9 @@ TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun
     ga.elitism = 4;
     ga.tournament = 4;
     const GenomeLimits limits{60};
-    for (SearchMethodKind kind : {SearchMethodKind::Ga, SearchMethodKind::Smc, SearchMethodKind::Sosmc, SearchMethodKind::Rjmcmc}) {
+    for (const SearchMethodEntry& method : searchMethods()) {
         SearchSettings s;
-        s.method = kind;
+        s.method = method.name;
         s.rjmcmc.delayedRejection = true;
         s.rjmcmc.annealingInterval = 2;
         expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
@@ -124,16 +125,18 @@ TEST(SearchMethods, FactoryBuildsTheNamedMethodAndEveryOneImproves) {
     ga.population = 30;
     ga.elitism = 4;
     const GenomeLimits limits{60};
-    for (SearchMethodKind kind : {SearchMethodKind::Smc, SearchMethodKind::Sosmc, SearchMethodKind::Rjmcmc}) {
+    for (const SearchMethodEntry& method : searchMethods()) {
+        if (method.name == "ga") continue;  // the GA's own tests are in genetic_algorithm_test.cpp
         SearchSettings s;
-        s.method = kind;
+        s.method = method.name;
+        SCOPED_TRACE(std::string(method.name));
         auto m = makeSearchMethod(s, ga, fx.grammar, limits, 5);
         m->initialize(evaluator);
         const double first = m->stats().best;
         while (m->generation() < 25) m->step(evaluator);
-        EXPECT_GT(m->stats().best, first) << int(kind);
+        EXPECT_GT(m->stats().best, first);
         EXPECT_LE(m->evaluations(), 25u * 30u) << "at most one evaluation per individual and generation";
-        if (kind == SearchMethodKind::Rjmcmc) EXPECT_GE(m->evaluations(), 25u * 30u * 3 / 4);
+        if (method.name == "rjmcmc") EXPECT_GE(m->evaluations(), 25u * 30u * 3 / 4);
         for (const Chromosome& c : m->population().individuals) ASSERT_EQ(validateChromosome(fx.grammar, c, limits), "");
     }
 }

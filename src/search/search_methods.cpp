@@ -1,0 +1,83 @@
+// The table of search methods and the factory that reads it.
+#include "search/search_methods.hpp"
+
+#include <array>
+#include <stdexcept>
+
+#include "search/genetic_algorithm.hpp"
+#include "search/rjmcmc.hpp"
+#include "search/smc.hpp"
+
+namespace shapevo {
+
+namespace {
+
+constexpr double kBig = 1e12;
+
+void readNothing(SectionReader&, SearchSettings&) {}
+
+void readSmc(SectionReader& r, SearchSettings& s) { r.number("smc_temperature", s.smc.temperature, 1e-300, kBig); }
+
+void readRjmcmc(SectionReader& r, SearchSettings& s) {
+    RjmcmcSettings& m = s.rjmcmc;
+    r.number("rjmcmc_jump_probability", m.jumpProbability, 0, 1);
+    r.count("rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6);
+    r.number("rjmcmc_temperature", m.temperature, 1e-300, kBig);
+    r.number("rjmcmc_temperature_ratio", m.temperatureRatio, 1, kBig);
+    r.number("rjmcmc_annealing", m.annealing, 1, kBig);
+    r.count("rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9);
+    r.number("rjmcmc_depth_bias", m.depthBias, 1e-6, 1);
+    r.flag("rjmcmc_delayed_rejection", m.delayedRejection);
+}
+
+std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const GaSettings& ga, const Grammar& g,
+                                     const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<GeneticAlgorithm>(g, ga, limits, seed);
+}
+std::unique_ptr<SearchMethod> makeSmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
+                                      const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(g, s.smc, ga.population, limits, GrowthOrder::Chromosome, seed);
+}
+std::unique_ptr<SearchMethod> makeSosmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
+                                        const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(g, s.smc, ga.population, limits, GrowthOrder::Random, seed);
+}
+std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
+                                         const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Rjmcmc>(g, s.rjmcmc, ga, limits, seed);
+}
+
+constexpr std::array<SearchMethodEntry, 4> kMethods{{
+    {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa},
+    {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc},
+    {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc},
+    {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc},
+}};
+
+}  // namespace
+
+std::span<const SearchMethodEntry> searchMethods() { return kMethods; }
+
+const SearchMethodEntry* findSearchMethod(std::string_view name) {
+    for (const SearchMethodEntry& e : kMethods)
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+std::string searchMethodNames() {
+    std::string out;
+    for (std::size_t i = 0; i < kMethods.size(); ++i) {
+        if (i) out += i + 1 == kMethods.size() ? " or " : ", ";
+        out += "\"" + std::string(kMethods[i].name) + "\"";
+    }
+    return out;
+}
+
+std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
+                                               const GenomeLimits& limits, std::uint64_t seed) {
+    const SearchMethodEntry* e = findSearchMethod(search.method);
+    if (!e) throw std::invalid_argument("no search method named \"" + search.method + "\" (expected " + searchMethodNames() + ")");
+    return e->make(search, ga, g, limits, seed);
+}
+
+}  // namespace shapevo

@@ -1,0 +1,39 @@
+// The search methods: one table, one entry per method (its config name, a one-line summary, the
+// reader of its [search] keys, its factory). Config, CLI help, tests and benchmarks all read this
+// table, so a new method is its class plus one entry in search_methods.cpp.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "base/section_reader.hpp"
+#include "search/search_method.hpp"
+
+namespace shapevo {
+
+struct SearchMethodEntry {
+    std::string_view name;     ///< the value of search.method in a config
+    std::string_view summary;  ///< one line for --help and messages
+    /// Reads the method's own keys of [search] into `s` (those it does not know stay unread).
+    void (*readSettings)(SectionReader& search, SearchSettings& s);
+    std::unique_ptr<SearchMethod> (*make)(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
+                                          const GenomeLimits& limits, std::uint64_t seed);
+};
+
+/// The method `search.method` names (@throw std::invalid_argument if none), seeded with `seed`; `ga` gives population size and initial
+/// lengths to every method.
+std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
+                                               const GenomeLimits& limits, std::uint64_t seed);
+
+/// Every method, the default ("ga") first.
+std::span<const SearchMethodEntry> searchMethods();
+
+/// The entry named `name`, or nullptr.
+const SearchMethodEntry* findSearchMethod(std::string_view name);
+
+/// The names for a message: "\"ga\", \"smc\", \"sosmc\" or \"rjmcmc\"".
+std::string searchMethodNames();
+
+}  // namespace shapevo
