@@ -1,5 +1,5 @@
 // Helpers shared by the OBJ, PLY and STL parsers: strict number parsing, tokenising,
-// little-endian decoding and exact-position vertex welding.
+// and exact-position vertex welding.
 #include "mesh/mesh_formats.hpp"
 
 #include <charconv>
@@ -68,26 +68,6 @@ std::string_view Tokens::next() {
 bool Tokens::done() {
     while (!rest_.empty() && blank(rest_.front())) rest_.remove_prefix(1);
     return rest_.empty();
-}
-
-std::uint32_t loadU32(const unsigned char* p) {
-    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-}
-
-std::uint64_t loadU64(const unsigned char* p) { return std::uint64_t(loadU32(p)) | std::uint64_t(loadU32(p + 4)) << 32; }
-
-float loadF32(const unsigned char* p) {
-    const std::uint32_t bits = loadU32(p);
-    float f;
-    std::memcpy(&f, &bits, sizeof f);
-    return f;
-}
-
-double loadF64(const unsigned char* p) {
-    const std::uint64_t bits = loadU64(p);
-    double d;
-    std::memcpy(&d, &bits, sizeof d);
-    return d;
 }
 
 std::size_t VertexWelder::KeyHash::operator()(const glm::vec3& p) const {

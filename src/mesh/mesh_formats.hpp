@@ -1,5 +1,5 @@
 // Internal to the mesh reader: one parser per file format plus the small helpers they share
-// (number parsing, little-endian decoding, vertex merging). Users call readMesh() instead.
+// (number parsing, vertex merging; little-endian decoding is base/little_endian.hpp). Users call readMesh() instead.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -34,12 +34,6 @@ public:
 private:
     std::string_view rest_;
 };
-
-/// Reads little-endian scalars from a byte buffer without caring about the host byte order.
-std::uint32_t loadU32(const unsigned char* p);
-std::uint64_t loadU64(const unsigned char* p);
-float loadF32(const unsigned char* p);
-double loadF64(const unsigned char* p);
 
 /// Merges exactly-equal positions (with -0 == +0) so soup formats (STL) come out indexed.
 class VertexWelder {

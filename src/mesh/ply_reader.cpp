@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/little_endian.hpp"
 #include "mesh/mesh_formats.hpp"
 
 namespace shapevo::meshio {
@@ -110,10 +111,10 @@ public:
             case Type::UInt8: return double(p[0]);
             case Type::Int16: return double(std::int16_t(std::uint16_t(p[0] | p[1] << 8)));
             case Type::UInt16: return double(std::uint16_t(p[0] | p[1] << 8));
-            case Type::Int32: return double(std::int32_t(loadU32(p)));
-            case Type::UInt32: return double(loadU32(p));
-            case Type::Float32: return double(loadF32(p));
-            case Type::Float64: return loadF64(p);
+            case Type::Int32: return double(std::int32_t(le::load<std::uint32_t>(p)));
+            case Type::UInt32: return double(le::load<std::uint32_t>(p));
+            case Type::Float32: return double(le::load<float>(p));
+            case Type::Float64: return le::load<double>(p);
         }
         return 0.0;
     }

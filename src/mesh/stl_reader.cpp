@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "base/little_endian.hpp"
 #include "mesh/mesh_formats.hpp"
 
 namespace shapevo::meshio {
@@ -22,7 +23,7 @@ Mesh parseBinary(std::string_view data, const std::string& path) {
     if (data.size() < kHeaderBytes)
         throw InputError(path, "", "too short for a binary STL (" + std::to_string(data.size()) + " bytes)");
     const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-    const std::uint64_t count = loadU32(bytes + 80);
+    const std::uint64_t count = le::load<std::uint32_t>(bytes + 80);
     const std::uint64_t room = (data.size() - kHeaderBytes) / kTriangleBytes;
     if (count > room)
         throw InputError(path, "", "truncated binary STL: header announces " + std::to_string(count) +
@@ -34,7 +35,7 @@ Mesh parseBinary(std::string_view data, const std::string& path) {
         const unsigned char* p = bytes + kHeaderBytes + t * kTriangleBytes + 12;  // skip the normal
         std::array<std::uint32_t, 3> tri{};
         for (int v = 0; v < 3; ++v, p += 12) {
-            const glm::vec3 q = finitePoint(loadF32(p), loadF32(p + 4), loadF32(p + 8), path,
+            const glm::vec3 q = finitePoint(le::load<float>(p), le::load<float>(p + 4), le::load<float>(p + 8), path,
                                             "triangle " + std::to_string(t));
             tri[v] = welder.add(q);
         }
@@ -94,7 +95,7 @@ Mesh parseAscii(std::string_view data, const std::string& path) {
 Mesh parseStl(std::string_view data, const std::string& path) {
     if (data.size() >= kHeaderBytes) {
         const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-        const std::uint64_t count = loadU32(bytes + 80);
+        const std::uint64_t count = le::load<std::uint32_t>(bytes + 80);
         if (data.size() == kHeaderBytes + count * kTriangleBytes) return parseBinary(data, path);
     }
     return startsWithSolid(data) ? parseAscii(data, path) : parseBinary(data, path);

@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "base/atomic_write.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
@@ -26,8 +27,7 @@ void requireRootFits(const RunSettings& s, const Grammar& g) {
 }
 
 void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
+    writeStreamAtomically(path, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace
