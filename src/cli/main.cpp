@@ -2,97 +2,42 @@
 // (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
 // other failures exit with code 1. Under mpirun every rank runs this; only run and resume use
 // more than one rank.
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
+#include "base/input_error.hpp"
+#include "checkpoint/checkpoint_file.hpp"
+#include "checkpoint/checkpoint_path.hpp"
+#include "genome/genome_file.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
-#include "run/config_file.hpp"
-#include "genome/genome_file.hpp"
-#include "base/input_error.hpp"
-#include "mesh/mesh_reader.hpp"
-#include "mesh/glb_writer.hpp"
-#include "report/model_writer.hpp"
-#include "score/vdb_target_file.hpp"
-#include "checkpoint/checkpoint_file.hpp"
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "run/config_file.hpp"
+#include "run/model_export.hpp"
 #include "run/run_job.hpp"
 #include "run/scene.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/vdb_target_file.hpp"
 
 namespace {
 
 using namespace shapevo;
-
-void writeModel(const Geometry& geo, const std::string& path) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext == ".obj") writeObj(meshOf(geo), path);
-    else if (ext == ".ply") writePly(meshOf(geo), path);
-    else if (ext == ".glb") writeGlb(meshOf(geo), path);
-    else throw InputError(path, "", "unknown model format '" + ext + "' (expected .obj, .ply or .glb)");
-}
 
 void refuseExisting(const std::string& path) {
     if (std::filesystem::exists(path))
         throw InputError(path, "", "already exists; shapevo does not overwrite files (remove it or choose another -o)");
 }
 
+/// What inspect and export accept (checkpoint/checkpoint_path.hpp).
+constexpr const char* kCheckpointPaths =
+    "a run folder (its newest complete checkpoint), a checkpoint folder (checkpoint-NNNNNN), or a checkpoint's "
+    "run.h5 or island-NNNN.h5 (the checkpoint that holds it)";
+
 }  // namespace
-
-/// The best individual of a checkpoint over all islands, with the grammar and settings it
-/// needs (the grammar owns the meshes its geometry points to).
-struct CheckpointBest {
-    RunSettings settings;
-    Grammar grammar;
-    Chromosome best;
-    std::string from;  ///< "island R, fitness F"
-};
-
-CheckpointBest bestOfCheckpoint(const std::string& folder) {
-    if (const std::string problem = verifyCheckpoint(folder); !problem.empty())
-        throw InputError(folder, "", "not a complete checkpoint: " + problem);
-    const RunMetadata meta = readRunMetadata(folder + "/run.h5");
-    CheckpointBest b{parseConfig(meta.configText, meta.configPath), parseGrammar(meta.grammarText, meta.grammarPath), {}, {}};
-    double bestFitness = -INFINITY;
-    for (int r = 0; r < meta.ranks; ++r) {
-        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), b.grammar, b.settings.limits);
-        const std::size_t i = island.population.best();
-        if (island.population.fitness[i] > bestFitness) {
-            bestFitness = island.population.fitness[i];
-            b.best = island.population.individuals[i];
-            b.from = "island " + std::to_string(r) + ", fitness " + std::to_string(bestFitness);
-        }
-    }
-    return b;
-}
-
-/// export: obj / ply / glb are the model itself; vdb and png need the run's target.
-void exportModel(const CheckpointBest& b, std::string format, const std::string& path) {
-    if (format.empty()) format = std::filesystem::path(path).extension().string().substr(std::min<std::size_t>(1, path.size()));
-    Geometry geo;
-    DeriveScratch scratch;
-    derive(b.grammar, b.best, geo, scratch);
-    if (format == "obj") writeObj(meshOf(geo), path);
-    else if (format == "ply") writePly(meshOf(geo), path);
-    else if (format == "glb") writeGlb(meshOf(geo), path);
-    else if (format == "vdb" || format == "png") Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
-    else throw InputError(path, "", "unknown format '" + format + "' (expected obj, ply, glb, vdb or png)");
-    std::cout << "wrote " << path << " (" << geo.primitives.size() << " primitives; " << b.from << ")\n";
-}
-
-/// A run folder's newest complete checkpoint, or the folder itself if it is a checkpoint.
-std::string checkpointOf(const std::string& path) {
-    if (std::filesystem::exists(path + "/MANIFEST")) return path;
-    for (const std::string& c : listCheckpoints(path))
-        if (verifyCheckpoint(c).empty()) return c;
-    throw InputError(path, "", "is neither a checkpoint nor a run folder with a complete checkpoint");
-}
 
 int main(int argc, char** argv) {
     MpiSession mpi(argc, argv);
@@ -137,10 +82,13 @@ int main(int argc, char** argv) {
     target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
 
     // evaluate
-    auto* evaluate = app.add_subcommand("evaluate", "Score a saved chromosome against a config's target");
+    auto* evaluate = app.add_subcommand("evaluate", "Score a saved chromosome against a config's target (volume or image), "
+                                                    "as run scores it: shapevo evaluate CONFIG.toml FILE.genome");
     std::string evalConfig, evalGenome;
-    evaluate->add_option("config", evalConfig, "TOML config")->required();
+    std::vector<std::string> evalSets;
+    evaluate->add_option("config", evalConfig, "TOML config, any that run accepts (see configs/)")->required();
     evaluate->add_option("genome", evalGenome, ".genome file (best.genome of a run, or from sample --genome)")->required();
+    evaluate->add_option("--set", evalSets, "override a config value as run --set does, e.g. --set score.form=weighted (repeatable)");
 
     // resume
     auto* resume = app.add_subcommand("resume", "Continue a run from its newest complete checkpoint: shapevo resume RUN_DIR");
@@ -152,17 +100,18 @@ int main(int argc, char** argv) {
     resume->add_flag("-q,--quiet", resumeQuiet, "no per-generation progress lines");
 
     // inspect
-    auto* inspect = app.add_subcommand("inspect", "Summarise a checkpoint (or a run folder's newest one)");
+    auto* inspect = app.add_subcommand("inspect", "Summarise a checkpoint: shapevo inspect RUN_DIR|CHECKPOINT|ISLAND.h5");
     std::string inspectPath;
     bool inspectVerbose = false;
-    inspect->add_option("checkpoint", inspectPath, "checkpoint folder or run folder")->required();
+    inspect->add_option("path", inspectPath, kCheckpointPaths)->required();
     inspect->add_flag("-v,--verbose", inspectVerbose, "also print the config");
 
     // export
-    auto* exportCmd = app.add_subcommand("export", "Write the best model of a run or checkpoint");
+    auto* exportCmd = app.add_subcommand("export", "Write the best model of a checkpoint: shapevo export RUN_DIR|CHECKPOINT|ISLAND.h5 "
+                                                   "--best -o FILE");
     std::string exportPath, exportOut;
     bool exportBest = false;
-    exportCmd->add_option("source", exportPath, "run folder (its newest complete checkpoint) or checkpoint folder")->required();
+    exportCmd->add_option("path", exportPath, kCheckpointPaths)->required();
     exportCmd->add_flag("--best", exportBest, "the best individual over all islands (the only choice for now)")->required();
     exportCmd->add_option("-o,--output", exportOut, "output file; must not exist")->required();
     std::string exportFormat;
@@ -204,10 +153,10 @@ int main(int argc, char** argv) {
             if (*resumeGenOpt) o.generations = resumeGenerations;
             resumeJob(mpi, runDir, o, std::cout);
         } else if (*inspect) {
-            std::cout << describeCheckpoint(checkpointOf(inspectPath), inspectVerbose);
+            std::cout << describeCheckpoint(resolveCheckpointPath(inspectPath), inspectVerbose);
         } else if (*exportCmd) {
             refuseExisting(exportOut);
-            exportModel(bestOfCheckpoint(checkpointOf(exportPath)), exportFormat, exportOut);
+            std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(exportPath)), exportFormat, exportOut) << "\n";
         } else if (*sample) {
             const Grammar g = loadGrammar(grammarPath);
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
@@ -225,7 +174,7 @@ int main(int argc, char** argv) {
             Geometry geo;
             DeriveScratch scratch;
             derive(g, c, geo, scratch);
-            writeModel(geo, sampleOut);
+            writeModelFile(geo, formatOfPath(sampleOut), sampleOut);
             if (!genomeOut.empty()) writeGenome(g, c, genomeOut);
             std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives -> " << sampleOut << "\n";
         } else if (*target) {
@@ -235,20 +184,10 @@ int main(int argc, char** argv) {
             std::cout << "wrote " << vdbOut << " (" << mesh.triangles.size() << " triangles, voxel size " << voxelSize
                       << ")\n";
         } else if (*evaluate) {
-            const RunSettings s = loadConfig(evalConfig);
+            const RunSettings s = loadConfig(evalConfig, evalSets);
             const Grammar g = loadGrammar(s.grammarPath);
             const Chromosome c = readGenome(g, s.limits, evalGenome);
-            const VolumeTarget t = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
-            const VolumeScorer scorer(g, t, s.fitness);
-            auto ws = std::make_unique<VolumeScorer::Workspace>(t.grid);
-            VoxelCounts counts;
-            const double f = scorer.fitness(c, *ws, &counts);
-            std::printf("fitness %.6f  voxel_iou %.4f  genes %u  primitives %zu  inside %llu  occupied %llu  "
-                        "overlap %llu  outside %llu  target %llu\n",
-                        f, voxelIoU(counts, t.fillCount), c.genes, ws->geometry.primitives.size(),
-                        (unsigned long long)counts.inside, (unsigned long long)counts.occupied,
-                        (unsigned long long)counts.overlap, (unsigned long long)counts.outside,
-                        (unsigned long long)t.fillCount);
+            std::cout << Scene::load(s, g)->evaluate(c).text << "\n";
         }
     } catch (const SilentFailure&) {
         return 2;  // another rank's input was bad; that rank has said why

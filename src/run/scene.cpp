@@ -93,6 +93,34 @@ void Scene::reportBest(const Chromosome& best, const std::string& folder, RunSum
     writeModelVdb(ws.geometry, volume_->grid, folder + "/best.vdb");
 }
 
+Evaluation Scene::evaluate(const Chromosome& c) const {
+    Evaluation e;
+    e.fitness = scorer_->fitness(c, *scorer_->makeWorkspace());
+    const auto count = [](const char* name, std::uint64_t n) { return std::string("  ") + name + " " + std::to_string(n); };
+    std::string counted;
+    std::size_t primitives = 0;
+    if (image_) {
+        ImageScorer::Workspace ws(*camera_);
+        SilhouetteCounts n;
+        imageScorer_->fitness(c, ws, &n);
+        e.iou = silhouetteIoU(n, image_->hitCount);
+        primitives = ws.geometry.primitives.size();
+        counted = count("covered", n.covered) + count("hit", n.hit) + count("avoided", n.avoided) +
+                  count("target", image_->hitCount);
+    } else {
+        VolumeScorer::Workspace ws(volume_->grid);
+        VoxelCounts n;
+        volumeScorer_->fitness(c, ws, &n);
+        e.iou = voxelIoU(n, volume_->fillCount);
+        primitives = ws.geometry.primitives.size();
+        counted = count("inside", n.inside) + count("occupied", n.occupied) + count("avoided", n.avoided) +
+                  count("overlap", n.overlap) + count("outside", n.outside) + count("target", volume_->fillCount);
+    }
+    e.text = "fitness " + formatDouble(e.fitness) + (image_ ? "  silhouette_iou " : "  voxel_iou ") + formatDouble(e.iou) +
+             "  genes " + std::to_string(c.genes) + "  primitives " + std::to_string(primitives) + counted;
+    return e;
+}
+
 void Scene::exportBest(const Chromosome& best, const std::string& format, const std::string& path) const {
     if (image_) {
         if (format != "png") throw InputError(path, "", "an image target's run exports obj, ply, glb or png, not " + format);

@@ -1,7 +1,8 @@
 // Scene: what a run scores against, loaded once from its settings: a volume (VDB fill/avoid
 // grids baked into bit rows) or an image (a PNG target seen through a camera). It
 // owns the target and the scorer, says what it is in the log, and writes the target-specific
-// outputs of the best model (IoU in summary.json, the model's voxels).
+// outputs of the best model (IoU in summary.json, the model's voxels). Every command that scores
+// (run, resume, evaluate, export) loads its target through Scene::load, so all score alike.
 #pragma once
 #include <memory>
 #include <optional>
@@ -18,6 +19,16 @@ namespace shapevo {
 
 class VolumeScorer;
 class ImageScorer;
+
+/// One chromosome scored as the run scores it (`shapevo evaluate`).
+struct Evaluation {
+    double fitness = 0;  ///< Scorer::fitness, what the search saw (summary.json's best_fitness)
+    double iou = 0;      ///< voxel or silhouette IoU (summary.json's voxel_iou / silhouette_iou)
+    /// One line: "fitness F  voxel_iou I  genes G  primitives P  inside ..." (volume targets) or
+    /// "fitness F  silhouette_iou I  genes G  primitives P  hit ..." (image targets), numbers as
+    /// summary.json writes them.
+    std::string text;
+};
 
 class Scene {
 public:
@@ -39,6 +50,8 @@ public:
     /// `shapevo export --format vdb|png`: the model's voxels (volume targets) or its overlay on the
     /// target (image targets). @throw InputError if the format does not fit the target kind.
     void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const;
+    /// Score `c` (valid for the scene's grammar) with the run's scorer, and count what it covers.
+    Evaluation evaluate(const Chromosome& c) const;
 
 private:
     Scene() = default;

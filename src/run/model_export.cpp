@@ -1,0 +1,60 @@
+// Model export: mesh files, and the best model of a checkpoint in any format.
+#include "run/model_export.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "base/input_error.hpp"
+#include "checkpoint/checkpoint_file.hpp"
+#include "geometry/derive.hpp"
+#include "grammar/parser.hpp"
+#include "mesh/glb_writer.hpp"
+#include "report/model_writer.hpp"
+#include "report/run_report.hpp"
+#include "run/config_file.hpp"
+#include "run/scene.hpp"
+
+namespace shapevo {
+
+std::string formatOfPath(const std::string& path) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    return ext.empty() ? ext : ext.substr(1);
+}
+
+void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path) {
+    if (format == "obj") writeObj(meshOf(geometry), path);
+    else if (format == "ply") writePly(meshOf(geometry), path);
+    else if (format == "glb") writeGlb(meshOf(geometry), path);
+    else throw InputError(path, "", "unknown model format '" + format + "' (expected obj, ply or glb)");
+}
+
+CheckpointBest bestOfCheckpoint(const std::string& folder) {
+    if (const std::string problem = verifyCheckpoint(folder); !problem.empty())
+        throw InputError(folder, "", "not a complete checkpoint: " + problem);
+    const RunMetadata meta = readRunMetadata(folder + "/run.h5");
+    CheckpointBest b{parseConfig(meta.configText, meta.configPath), parseGrammar(meta.grammarText, meta.grammarPath), {}, {}};
+    double bestFitness = -INFINITY;
+    for (int r = 0; r < meta.ranks; ++r) {
+        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), b.grammar, b.settings.limits);
+        const std::size_t i = island.population.best();
+        if (island.population.fitness[i] > bestFitness) {
+            bestFitness = island.population.fitness[i];
+            b.best = island.population.individuals[i];
+            b.from = "island " + std::to_string(r) + ", fitness " + formatDouble(bestFitness);
+        }
+    }
+    return b;
+}
+
+std::string exportCheckpointBest(const CheckpointBest& b, std::string format, const std::string& path) {
+    if (format.empty()) format = formatOfPath(path);
+    Geometry geo;
+    DeriveScratch scratch;
+    derive(b.grammar, b.best, geo, scratch);
+    if (format == "vdb" || format == "png") Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
+    else if (format == "obj" || format == "ply" || format == "glb") writeModelFile(geo, format, path);
+    else throw InputError(path, "", "unknown format '" + format + "' (expected obj, ply, glb, vdb or png)");
+    return "wrote " + path + " (" + std::to_string(geo.primitives.size()) + " primitives; " + b.from + ")";
+}
+
+}  // namespace shapevo

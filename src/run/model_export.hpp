@@ -1,0 +1,39 @@
+// Model export: the files `shapevo sample` and `shapevo export` write. A model is written as a
+// mesh (obj, ply, glb); `export` also writes what only the run's scene can make (vdb: the model's
+// voxels on a volume target's grid; png: its silhouette over an image target), loading the scene
+// from the config and grammar stored in the checkpoint, exactly as `resume` does.
+#pragma once
+#include <string>
+
+#include "genome/chromosome.hpp"
+#include "geometry/primitive.hpp"
+#include "grammar/grammar.hpp"
+#include "run/settings.hpp"
+
+namespace shapevo {
+
+/// A file's format from its extension ("out/m.obj" -> "obj"; "" without one).
+std::string formatOfPath(const std::string& path);
+
+/// Write `geometry` as a mesh in `format` (obj, ply or glb). @throw InputError(path) for another format.
+void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path);
+
+/// The best individual of a checkpoint over all islands, with the grammar and settings it needs
+/// (the grammar owns the meshes its geometry points to).
+struct CheckpointBest {
+    RunSettings settings;
+    Grammar grammar;
+    Chromosome best;
+    std::string from;  ///< "island R, fitness F"
+};
+
+/// Read a complete checkpoint folder (see checkpoint/checkpoint_path.hpp for turning what a user
+/// names into one). @throw InputError if it is incomplete or a file is invalid.
+CheckpointBest bestOfCheckpoint(const std::string& folder);
+
+/// Write `b.best` to `path` in `format` (empty: the path's extension): obj, ply, glb, or vdb / png
+/// through the run's scene. Returns what was written, e.g. "wrote m.obj (12 primitives; island 0,
+/// fitness 0.91)". @throw InputError for an unknown format or one that does not fit the target.
+std::string exportCheckpointBest(const CheckpointBest& b, std::string format, const std::string& path);
+
+}  // namespace shapevo
