@@ -1,8 +1,10 @@
 // Internal to src/checkpoint: the two halves of how checkpoint files use HDF5.
 // H5Writer creates a file of datasets that each carry an "xxh3_64" attribute (XXH3-64 of the
-// dataset's raw little-endian bytes) plus scalar attributes, then flushes, closes and fsyncs it.
-// H5Reader opens one, checks every object's type and shape before reading it, never allocates
-// more than the file could hold, and verifies each dataset's checksum; every failure is an
+// dataset's raw little-endian bytes) plus scalar attributes, and one root attribute
+// "attributes_xxh3_64" covering every other attribute (see attributeLedgerHash), then flushes,
+// closes and fsyncs it. H5Reader opens one, verifies the attribute checksum before any value can
+// be read, checks every object's type and shape before reading it, never allocates more than the
+// file could hold, and verifies each dataset's checksum; every failure is an
 // InputError(file, "/dataset/name" or "/object@attribute", what).
 // Objects are created without modification times, so the same state gives the same file bytes.
 #pragma once
@@ -17,6 +19,18 @@ namespace shapevo::h5 {
 
 /// Name of the checksum attribute every dataset carries.
 inline constexpr const char* kChecksumAttribute = "xxh3_64";
+/// Name of the root attribute that covers all other attributes of the file.
+inline constexpr const char* kAttributesChecksum = "attributes_xxh3_64";
+
+/// One attribute as the attribute checksum sees it: the object's absolute path ("/",
+/// "/config/text"), the attribute's name and its raw (little-endian, NUL-padded) bytes.
+struct AttributeRecord {
+    std::string object, name;
+    std::vector<std::uint8_t> bytes;
+};
+/// XXH3-64 over the records sorted by (object, name), each as object, NUL, name, NUL, u64 size,
+/// bytes. Records of the checksum attributes themselves are left out.
+std::uint64_t attributeLedgerHash(std::vector<AttributeRecord> records);
 
 class H5Writer {
 public:
@@ -42,15 +56,18 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what) const;
-    void scalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, const void* v);
+    void scalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, const void* v, std::size_t bytes);
     std::string path_;
     Handle file_;
+    std::vector<AttributeRecord> attributes_;  ///< every attribute written so far, for the ledger
 };
 
 class H5Reader {
 public:
-    /// Open `path` read-only. Throws InputError if it is missing or not an HDF5 file.
-    explicit H5Reader(std::string path);
+    /// Open `path` read-only, check that its root attribute schema_version is `schema` (else
+    /// "checkpoint schema N is not supported (this shapevo reads M)"), then the attribute
+    /// checksum. Throws InputError if it is missing, not an HDF5 file, of another schema or altered.
+    H5Reader(std::string path, std::uint32_t schema);
     const std::string& path() const { return path_; }
     std::uint64_t fileSize() const { return fileSize_; }
     /// Raw bytes of dataset `name` (absolute path), which must have exactly type `type`, rank
@@ -68,6 +85,8 @@ private:
     [[noreturn]] void fail(const std::string& where, const std::string& what) const;
     void scalarAttribute(const char* object, const char* name, hid_t fileType, hid_t memType, void* out) const;
     void verifyChecksum(const char* name, std::span<const std::uint8_t> bytes) const;
+    /// Reads every attribute of every object and checks them against kAttributesChecksum.
+    void verifyAttributes() const;
     std::string path_;
     std::uint64_t fileSize_ = 0;
     Handle file_;

@@ -1,6 +1,7 @@
 // H5Reader: reads checkpoint HDF5 files defensively (see hdf5_file.hpp). Each object's type,
 // rank and shape are checked before it is read, a dataset may not claim more bytes than it
 // stores or than the file holds, and each dataset's bytes must match its "xxh3_64" attribute.
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -39,7 +40,7 @@ std::string unpad(std::string s) {
 
 }  // namespace
 
-H5Reader::H5Reader(std::string path) : path_(std::move(path)) {
+H5Reader::H5Reader(std::string path, std::uint32_t schema) : path_(std::move(path)) {
     silenceErrorPrinting();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path_, ec)) throw InputError(path_, "", "no such file");
@@ -47,6 +48,75 @@ H5Reader::H5Reader(std::string path) : path_(std::move(path)) {
     if (ec) throw InputError(path_, "", "cannot read its size: " + ec.message());
     file_ = fileHandle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
     if (!file_.valid()) throw InputError(path_, "", "not a readable HDF5 file: " + takeErrorMessage());
+    const std::uint32_t stored = u32("/", "schema_version");
+    if (stored != schema)
+        fail("/@schema_version", "checkpoint schema " + std::to_string(stored) + " is not supported (this shapevo reads " +
+                                     std::to_string(schema) + ")");
+    verifyAttributes();
+}
+
+namespace {
+
+struct AttributeWalk {
+    hid_t file;
+    std::uint64_t fileSize;
+    std::string object;  ///< absolute path of the object being walked
+    std::vector<AttributeRecord> records;
+    std::uint64_t totalBytes = 0;
+    std::string problem;  ///< "where: what" of the first failure
+};
+
+herr_t onAttribute(hid_t object, const char* name, const H5A_info_t*, void* data) {
+    auto& w = *static_cast<AttributeWalk*>(data);
+    if (std::strcmp(name, kChecksumAttribute) == 0 || (w.object == "/" && std::strcmp(name, kAttributesChecksum) == 0))
+        return 0;
+    const std::string where = w.object + "@" + name;
+    Handle a = attributeHandle(H5Aopen(object, name, H5P_DEFAULT));
+    Handle type = a.valid() ? typeHandle(H5Aget_type(a.get())) : Handle();
+    Handle space = a.valid() ? spaceHandle(H5Aget_space(a.get())) : Handle();
+    if (!type.valid() || !space.valid() || H5Sget_simple_extent_type(space.get()) != H5S_SCALAR ||
+        H5Tis_variable_str(type.get()) != 0) {
+        w.problem = where + ": not a scalar attribute of fixed size";
+        return -1;
+    }
+    const std::uint64_t bytes = H5Tget_size(type.get());
+    w.totalBytes += bytes;
+    if (bytes == 0 || w.totalBytes > w.fileSize) {
+        w.problem = where + ": claims more bytes than the file holds";
+        return -1;
+    }
+    std::vector<std::uint8_t> raw(bytes);
+    if (H5Aread(a.get(), type.get(), raw.data()) < 0) {
+        w.problem = where + ": cannot read";
+        return -1;
+    }
+    w.records.push_back({w.object, name, std::move(raw)});
+    return 0;
+}
+
+herr_t onObject(hid_t file, const char* name, const H5O_info_t* info, void* data) {
+    auto& w = *static_cast<AttributeWalk*>(data);
+    w.object.assign(1, '/');
+    if (std::strcmp(name, ".") != 0) w.object.append(name);
+    if (info->num_attrs == 0) return 0;
+    return H5Aiterate_by_name(file, name, H5_INDEX_NAME, H5_ITER_INC, nullptr, onAttribute, data, H5P_DEFAULT) < 0 ? -1 : 0;
+}
+
+}  // namespace
+
+void H5Reader::verifyAttributes() const {
+    std::uint64_t stored = 0;
+    scalarAttribute("/", kAttributesChecksum, H5T_STD_U64LE, H5T_NATIVE_UINT64, &stored);
+    AttributeWalk walk{file_.get(), fileSize_, "/", {}, 0, {}};
+    if (H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, onObject, &walk, H5O_INFO_NUM_ATTRS) < 0)
+        fail(walk.problem.empty() ? "/" : walk.problem.substr(0, walk.problem.find(": ")),
+             walk.problem.empty() ? "cannot walk the file's objects: " + takeErrorMessage()
+                                  : walk.problem.substr(walk.problem.find(": ") + 2));
+    const std::uint64_t actual = attributeLedgerHash(std::move(walk.records));
+    if (stored != actual)
+        fail(std::string("/@") + kAttributesChecksum,
+             "attribute checksum mismatch: the attributes hash to " + hex(actual) + " but " + kAttributesChecksum +
+                 " says " + hex(stored) + " (an attribute was altered or damaged)");
 }
 
 void H5Reader::fail(const std::string& where, const std::string& what) const {

@@ -10,6 +10,7 @@
 #include "checkpoint/hdf5_file.hpp"
 #include "base/atomic_write.hpp"
 #include "base/hash.hpp"
+#include "base/little_endian.hpp"
 
 namespace shapevo::h5 {
 
@@ -79,23 +80,42 @@ Handle H5Writer::text(hid_t parent, const char* name, const std::string& text) {
     return d;
 }
 
-void H5Writer::scalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, const void* v) {
+void H5Writer::scalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, const void* v,
+                               std::size_t bytes) {
     Handle space = spaceHandle(H5Screate(H5S_SCALAR));
     Handle a = attributeHandle(H5Acreate2(object, name, fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT));
     if (!a.valid() || H5Awrite(a.get(), memType, v) < 0) fail(std::string("cannot write attribute ") + name);
+    if (std::strcmp(name, kChecksumAttribute) == 0) return;  // self-checking: covers its dataset
+    char objectName[1024];
+    const ssize_t n = H5Iget_name(object, objectName, sizeof objectName);
+    if (n <= 0 || std::size_t(n) >= sizeof objectName) fail(std::string("cannot name the object of attribute ") + name);
+    // The file types are little-endian: store the value's little-endian bytes, as H5Aread with
+    // the file type gives them back.
+    std::vector<std::uint8_t> raw(bytes);
+    if (memType == fileType) std::memcpy(raw.data(), v, bytes);
+    else if (bytes == 4) {
+        std::uint32_t u;
+        std::memcpy(&u, v, 4);
+        le::store(raw.data(), u);
+    } else {
+        std::uint64_t u;
+        std::memcpy(&u, v, 8);
+        le::store(raw.data(), u);
+    }
+    attributes_.push_back({objectName, name, std::move(raw)});
 }
 
 void H5Writer::attribute(hid_t object, const char* name, std::uint32_t v) {
-    scalarAttribute(object, name, H5T_STD_U32LE, H5T_NATIVE_UINT32, &v);
+    scalarAttribute(object, name, H5T_STD_U32LE, H5T_NATIVE_UINT32, &v, 4);
 }
 void H5Writer::attribute(hid_t object, const char* name, std::int32_t v) {
-    scalarAttribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &v);
+    scalarAttribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &v, 4);
 }
 void H5Writer::attribute(hid_t object, const char* name, std::uint64_t v) {
-    scalarAttribute(object, name, H5T_STD_U64LE, H5T_NATIVE_UINT64, &v);
+    scalarAttribute(object, name, H5T_STD_U64LE, H5T_NATIVE_UINT64, &v, 8);
 }
 void H5Writer::attribute(hid_t object, const char* name, double v) {
-    scalarAttribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &v);
+    scalarAttribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &v, 8);
 }
 void H5Writer::attribute(hid_t object, const char* name, const std::string& v) {
     Handle type = typeHandle(H5Tcopy(H5T_C_S1));
@@ -103,10 +123,16 @@ void H5Writer::attribute(hid_t object, const char* name, const std::string& v) {
     if (!type.valid() || H5Tset_size(type.get(), stored.size()) < 0 || H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 ||
         H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
         fail(std::string("cannot make the string type of attribute ") + name);
-    scalarAttribute(object, name, type.get(), type.get(), stored.data());
+    scalarAttribute(object, name, type.get(), type.get(), stored.data(), stored.size());
 }
 
 void H5Writer::finish() {
+    const std::uint64_t ledger = attributeLedgerHash(attributes_);
+    Handle space = spaceHandle(H5Screate(H5S_SCALAR));
+    Handle a = attributeHandle(H5Acreate2(root(), kAttributesChecksum, H5T_STD_U64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+    if (!a.valid() || H5Awrite(a.get(), H5T_NATIVE_UINT64, &ledger) < 0)
+        fail(std::string("cannot write attribute ") + kAttributesChecksum);
+    a = Handle();
     if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
     if (!file_.close()) fail("cannot close");
     // HDF5 leaves the data in the page cache; fsync so a crash after publishing cannot lose it.

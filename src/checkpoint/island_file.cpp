@@ -61,12 +61,7 @@ void writeIslandFile(const std::string& path, const IslandState& s) {
 
 IslandState readIslandFile(const std::string& path, const Grammar& g, const GenomeLimits& limits) {
     using namespace island_layout;
-    const h5::H5Reader r(path);
-    const std::uint32_t schema = r.u32("/", "schema_version");
-    if (schema != kCheckpointSchemaVersion)
-        throw InputError(path, "/@schema_version",
-                         "island file schema " + std::to_string(schema) + " is not supported (this shapevo reads " +
-                             std::to_string(kCheckpointSchemaVersion) + ")");
+    const h5::H5Reader r(path, kCheckpointSchemaVersion);
     IslandBytes b;
     b.rank = r.i32("/", "rank");
     b.generation = r.u32("/", "generation");

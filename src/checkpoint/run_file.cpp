@@ -59,13 +59,9 @@ void writeRunMetadata(const std::string& path, const RunMetadata& m) {
 
 RunMetadata readRunMetadata(const std::string& path) {
     using namespace island_layout;
-    const h5::H5Reader r(path);
+    const h5::H5Reader r(path, kCheckpointSchemaVersion);
     RunMetadata m;
-    m.schemaVersion = r.u32("/", "schema_version");
-    if (m.schemaVersion != kCheckpointSchemaVersion)
-        throw InputError(path, "/@schema_version",
-                         "checkpoint schema " + std::to_string(m.schemaVersion) + " is not supported (this shapevo reads " +
-                             std::to_string(kCheckpointSchemaVersion) + ")");
+    m.schemaVersion = kCheckpointSchemaVersion;
     m.seed = r.u64("/", "seed");
     m.generation = r.u32("/", "generation");
     m.ranks = r.i32("/", "ranks");

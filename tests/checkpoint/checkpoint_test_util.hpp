@@ -1,6 +1,7 @@
 // Helpers for the checkpoint tests: a real island state (random spaceship chromosomes grown by
 // the genome operators), run metadata, a whole checkpoint folder, and byte-level file surgery.
 #pragma once
+#include <hdf5.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,18 @@ inline std::string fileBytes(const std::string& path) {
 inline void setFileBytes(const std::string& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+/// Rewrites a u32 root attribute in place, through libhdf5 (so the file stays a valid HDF5 file
+/// and only the attribute checksum can tell).
+inline void setRootU32Attribute(const std::string& path, const char* name, std::uint32_t value) {
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t a = H5Aopen(f, name, H5P_DEFAULT);
+    ASSERT_GE(a, 0);
+    ASSERT_GE(H5Awrite(a, H5T_NATIVE_UINT32, &value), 0);
+    H5Aclose(a);
+    H5Fclose(f);
 }
 
 inline void flipByte(const std::string& path, std::size_t at) {

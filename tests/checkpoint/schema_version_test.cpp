@@ -2,8 +2,6 @@
 // naming both versions, for run.h5 and for island files alike.
 #include <gtest/gtest.h>
 
-#include <hdf5.h>
-
 #include <functional>
 #include <string>
 
@@ -14,17 +12,6 @@
 
 namespace shapevo {
 namespace {
-
-/// Rewrites the root attribute schema_version of an HDF5 file in place.
-void setSchemaVersion(const std::string& path, std::uint32_t version) {
-    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(f, 0);
-    const hid_t a = H5Aopen(f, "schema_version", H5P_DEFAULT);
-    ASSERT_GE(a, 0);
-    ASSERT_GE(H5Awrite(a, H5T_NATIVE_UINT32, &version), 0);
-    H5Aclose(a);
-    H5Fclose(f);
-}
 
 void expectRefusedNamingBothVersions(const std::function<void()>& read) {
     try {
@@ -40,14 +27,14 @@ void expectRefusedNamingBothVersions(const std::function<void()>& read) {
 TEST(CheckpointSchema, ARunFileOfSchemaOneIsRefusedNamingBothVersions) {
     test::TempDir dir;
     writeRunMetadata(dir.file("run.h5"), test::makeRun(2));
-    setSchemaVersion(dir.file("run.h5"), 1);
+    test::setRootU32Attribute(dir.file("run.h5"), "schema_version", 1);
     expectRefusedNamingBothVersions([&] { readRunMetadata(dir.file("run.h5")); });
 }
 
 TEST(CheckpointSchema, AnIslandFileOfSchemaOneIsRefusedNamingBothVersions) {
     test::TempDir dir;
     writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0));
-    setSchemaVersion(dir.file("island-0000.h5"), 1);
+    test::setRootU32Attribute(dir.file("island-0000.h5"), "schema_version", 1);
     expectRefusedNamingBothVersions([&] { readIslandFile(dir.file("island-0000.h5"), test::spaceship(), test::kLimits); });
 }
 
