@@ -57,23 +57,25 @@ struct ManifestEntry {
 /// each once, then "end". Throws InputError(folder/MANIFEST, "line N", what).
 std::vector<ManifestEntry> readManifest(const std::string& folder);
 /// Empty if `folder` is a complete checkpoint (MANIFEST valid, every file present with the
-/// listed size and hash), else why not, naming the file ("island-0001.h5: ..."). Reads bytes
+/// listed size and hash, no file in the folder that MANIFEST does not list), else why not, naming the file ("island-0001.h5: ..."). Reads bytes
 /// only: no file reaches libhdf5 before it has passed this check.
 std::string verifyCheckpoint(const std::string& folder);
 
 /// Published checkpoint folders of a run (full paths of folders named checkpoint-NNNNNN, six or
 /// more digits), newest (highest generation) first. Empty if `runDir` does not exist.
 std::vector<std::string> listCheckpoints(const std::string& runDir);
-/// Remove all but the newest `keep` published checkpoints (keep < 1 counts as 1, so the newest
-/// is never removed), and any stale `.checkpoint-*.partial` (and `.checkpoint-*.replaced`)
-/// folders. Call it after publishing, while no checkpoint is being written. Best effort: what
-/// cannot be removed is left.
-void pruneCheckpoints(const std::string& runDir, int keep);
+/// Remove all but the newest `keep` published checkpoints of run `runId` (keep < 1 counts as 1,
+/// so the newest is never removed), and any stale `.checkpoint-*.partial` (and
+/// `.checkpoint-*.replaced`) folders. A checkpoint that is not provably run `runId`'s (another
+/// run's, or unreadable) is never removed. Call it after publishing, while no checkpoint is being
+/// written. Best effort: what cannot be removed is left.
+void pruneCheckpoints(const std::string& runDir, int keep, const std::string& runId);
 /// Publish a written checkpoint: fsync `partialFolder`, rename it to `finalFolder`, fsync the
 /// parent folder. If `finalFolder` exists (a damaged checkpoint of the same generation that a
 /// resume went back past, or a repeat of it), it is moved aside first and deleted after the new
-/// one is published. Throws std::runtime_error.
-void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder);
+/// one is published, unless it is a complete checkpoint of another run than `runId`: that one is
+/// never replaced (std::runtime_error naming it). Throws std::runtime_error.
+void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder, const std::string& runId);
 
 /// A human summary of a checkpoint folder (what `shapevo inspect` prints): generation, islands,
 /// seed, schema, target hash, per island its individuals, best/mean fitness, genes, curve length

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "checkpoint/run_identity.hpp"
 #include "base/atomic_write.hpp"
 
 namespace shapevo {
@@ -72,17 +73,19 @@ std::vector<std::string> listCheckpoints(const std::string& runDir) {
     return out;
 }
 
-void pruneCheckpoints(const std::string& runDir, int keep) {
-    const std::vector<std::string> published = listCheckpoints(runDir);
+void pruneCheckpoints(const std::string& runDir, int keep, const std::string& runId) {
+    std::vector<std::string> ours;
+    for (const std::string& c : listCheckpoints(runDir))
+        if (checkpointRunId(c) == runId) ours.push_back(c);
     std::error_code ec;
-    for (std::size_t i = std::size_t(std::max(keep, 1)); i < published.size(); ++i) fs::remove_all(published[i], ec);
+    for (std::size_t i = std::size_t(std::max(keep, 1)); i < ours.size(); ++i) fs::remove_all(ours[i], ec);
     std::vector<fs::path> partial;
     for (fs::directory_iterator it(runDir, ec), end; !ec && it != end; it.increment(ec))
         if (isLeftover(it->path().filename().string())) partial.push_back(it->path());
     for (const fs::path& p : partial) fs::remove_all(p, ec);
 }
 
-void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder) {
+void publishCheckpoint(const std::string& partialFolder, const std::string& finalFolder, const std::string& runId) {
     // The files were fsynced as they were written; fsync the folder so their names are durable too.
     syncToDisk(partialFolder);
     const fs::path final(finalFolder);
@@ -97,6 +100,10 @@ void publishCheckpoint(const std::string& partialFolder, const std::string& fina
     const fs::path displaced = parent / hidden;
     const bool replacing = fs::exists(final, ec);
     if (replacing) {
+        const std::optional<std::string> owner = checkpointRunId(finalFolder);
+        if (owner && *owner != runId)
+            throw std::runtime_error(finalFolder + " is a checkpoint of another run (run id " + *owner +
+                                     "); it is never replaced: move it out of this run folder");
         fs::remove_all(displaced, ec);
         fs::rename(final, displaced, ec);
         if (ec) throw std::runtime_error("cannot move " + finalFolder + " aside to publish a new one: " + ec.message());

@@ -3,6 +3,9 @@
 //
 //   /                         root group, attributes:
 //       schema_version        u32   format version of this layout (2)
+//       run_id                string  the run this island belongs to (as in run.h5)
+//       seed                  u64   the run's seed (as in run.h5)
+//       ranks                 i32   islands in the run (as in run.h5)
 //       rank                  i32   the island (MPI rank) this file belongs to
 //       generation            u32   generations completed
 //       evaluations           u64   fitness evaluations on this island so far
@@ -17,7 +20,8 @@
 //                                          chunked and extendible (G unlimited); attribute
 //       columns               string "generation,seconds,evaluations,best,mean,std"
 //
-// Every dataset has an attribute "xxh3_64" (u64): XXH3-64 of its raw little-endian bytes.
+// Every dataset has an attribute "xxh3_64" (u64): XXH3-64 of its raw little-endian bytes; the
+// root attribute attributes_xxh3_64 covers every other attribute (hdf5_file.hpp).
 // All numbers are stored little-endian. Reading checks types and shapes, every checksum (naming
 // the dataset that does not match), and then the content (island_codec.cpp): offsets start at 0,
 // never decrease and end at W, counts match N, each chromosome is a valid derivation of the
@@ -34,6 +38,9 @@ void writeIslandFile(const std::string& path, const IslandState& s) {
     const IslandBytes b = encodeIsland(s);
     h5::H5Writer w(path);
     w.attribute(w.root(), "schema_version", kCheckpointSchemaVersion);
+    w.attribute(w.root(), "run_id", s.runId);
+    w.attribute(w.root(), "seed", s.seed);
+    w.attribute(w.root(), "ranks", s.ranks);
     w.attribute(w.root(), "rank", b.rank);
     w.attribute(w.root(), "generation", b.generation);
     w.attribute(w.root(), "evaluations", b.evaluations);
@@ -75,7 +82,11 @@ IslandState readIslandFile(const std::string& path, const Grammar& g, const Geno
     b.curve = r.dataset(kCurve, H5T_IEEE_F64LE, 2, kCurveWidth);
     if (r.string(kCurve, "columns") != kCurveColumns)
         throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + kCurveColumns + "\"");
-    return decodeIsland(b.view(), g, limits, path);
+    IslandState s = decodeIsland(b.view(), g, limits, path);
+    s.runId = r.string("/", "run_id");
+    s.seed = r.u64("/", "seed");
+    s.ranks = r.i32("/", "ranks");
+    return s;
 }
 
 }  // namespace shapevo

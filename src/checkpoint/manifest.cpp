@@ -201,6 +201,16 @@ std::string verifyCheckpoint(const std::string& folder) {
             return e.name + ": content hashes to " + hex16(d.hash) + " but MANIFEST lists " + hex16(e.xxh3_64) +
                    " (altered or damaged)";
     }
+    // Every file in the folder must be listed: an unlisted one would reach libhdf5 unchecked.
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name == kManifest) continue;
+        bool listed = false;
+        for (const ManifestEntry& e : entries) listed = listed || e.name == name;
+        if (!listed) return name + ": in the folder but not in MANIFEST";
+    }
+    if (ec) return "cannot list the folder: " + ec.message();
     return "";
 }
 

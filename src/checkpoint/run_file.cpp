@@ -3,6 +3,8 @@
 //
 //   /                     root group, attributes:
 //       schema_version    u32     format version of the checkpoint layout (2)
+//       run_id            string  32 random hex digits made when the run started: with seed,
+//                                 config and inputs the run's identity
 //       seed              u64     the run's seed
 //       generation        u32     generations completed by every island
 //       ranks             i32     number of islands (files island-0000.h5 ...)
@@ -13,6 +15,9 @@
 //       path              string  where it was read from
 //   /grammar/text         string  the grammar source; attribute
 //       path              string  where it was read from
+//   /inputs/text          string  one line per input file when the run started:
+//                                 "<role> <xxh3-64 hex> <absolute path>" (role: config, grammar,
+//                                 mesh, target)
 //   /curve                f64 [G x 6]  the global fitness curve (best/mean/std over all
 //                                      islands), chunked and extendible; attribute
 //       columns           string  "generation,seconds,evaluations,best,mean,std"
@@ -26,6 +31,7 @@
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/hdf5_file.hpp"
 #include "checkpoint/island_codec.hpp"
+#include "checkpoint/run_identity.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {
@@ -38,6 +44,7 @@ void writeRunMetadata(const std::string& path, const RunMetadata& m) {
     const std::vector<std::uint8_t> curve = encodeCurve(m.curve);
     h5::H5Writer w(path);
     w.attribute(w.root(), "schema_version", kCheckpointSchemaVersion);
+    w.attribute(w.root(), "run_id", m.runId);
     w.attribute(w.root(), "seed", m.seed);
     w.attribute(w.root(), "generation", m.generation);
     w.attribute(w.root(), "ranks", m.ranks);
@@ -49,6 +56,10 @@ void writeRunMetadata(const std::string& path, const RunMetadata& m) {
         h5::Handle g = w.group(w.root(), group);
         h5::Handle d = w.text(g.get(), "text", *text);
         w.attribute(d.get(), "path", *source);
+    }
+    {
+        h5::Handle g = w.group(w.root(), "inputs");
+        w.text(g.get(), "text", formatInputs(m.inputs));
     }
     const hsize_t dims[] = {m.curve.size(), kCurveWidth};
     h5::Handle d = w.dataset(w.root(), "curve", H5T_IEEE_F64LE, curve, dims, /*extendible=*/true);
@@ -62,6 +73,7 @@ RunMetadata readRunMetadata(const std::string& path) {
     const h5::H5Reader r(path, kCheckpointSchemaVersion);
     RunMetadata m;
     m.schemaVersion = kCheckpointSchemaVersion;
+    m.runId = r.string("/", "run_id");
     m.seed = r.u64("/", "seed");
     m.generation = r.u32("/", "generation");
     m.ranks = r.i32("/", "ranks");
@@ -75,6 +87,7 @@ RunMetadata readRunMetadata(const std::string& path) {
     m.configPath = r.string("/config/text", "path");
     m.grammarText = r.text("/grammar/text");
     m.grammarPath = r.string("/grammar/text", "path");
+    m.inputs = parseInputs(r.text("/inputs/text"), path);
     m.curve = decodeCurve(r.dataset(kCurve, H5T_IEEE_F64LE, 2, kCurveWidth), path, kCurve);
     if (r.string(kCurve, "columns") != kCurveColumns)
         throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + kCurveColumns + "\"");

@@ -2,6 +2,7 @@
 #include "island/stop_signal.hpp"
 
 #include <csignal>
+#include <initializer_list>
 
 namespace shapevo {
 
@@ -15,8 +16,9 @@ void installStopSignalHandlers() {
     action.sa_handler = onStopSignal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
-    sigaction(SIGTERM, &action, nullptr);
-    sigaction(SIGUSR1, &action, nullptr);
+    // The handler stays installed (no SA_RESETHAND): a second signal while the checkpoint is being
+    // written only sets the flag again, it never kills the rank half-way.
+    for (int s : {SIGTERM, SIGUSR1, SIGINT, SIGHUP}) sigaction(s, &action, nullptr);
 }
 
 int stopSignalReceived() { return gSignal; }
@@ -25,6 +27,8 @@ const char* signalName(int signal) {
     switch (signal) {
     case SIGTERM: return "SIGTERM";
     case SIGUSR1: return "SIGUSR1";
+    case SIGINT: return "SIGINT";
+    case SIGHUP: return "SIGHUP";
     default: return "a signal";
     }
 }

@@ -1,5 +1,6 @@
-// Stop signals: SIGTERM and SIGUSR1 (what Slurm sends before the wall-time limit) ask the run to
-// finish its generation, write a checkpoint and exit 0. The handler only sets a flag.
+// Stop signals: SIGTERM and SIGUSR1 (what Slurm sends before the wall-time limit), SIGINT (Ctrl-C)
+// and SIGHUP (a closed terminal) ask the run to finish its generation, write a checkpoint and
+// exit 0. The handler only sets a flag, and stays installed, so a second signal changes nothing.
 #pragma once
 
 namespace shapevo {

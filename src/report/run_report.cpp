@@ -65,6 +65,11 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
     t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
     t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
+    if (!s.changedInputs.empty()) {
+        t += "  \"changed_inputs\": [";
+        for (std::size_t i = 0; i < s.changedInputs.size(); ++i) t += (i ? ", " : "") + jsonString(s.changedInputs[i]);
+        t += "],\n";
+    }
     t += "  \"threads\": " + std::to_string(s.threads) + "\n}\n";
     writeText(path, t);
 }

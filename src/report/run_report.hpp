@@ -24,6 +24,7 @@ struct RunSummary {
     int threads = 0;   ///< evaluation threads per island
     int islands = 1;   ///< MPI ranks
     double migrationSeconds = 0, checkpointSeconds = 0;  ///< slowest rank's time in each
+    std::vector<std::string> changedInputs;  ///< inputs accepted with --allow-changed-inputs on resume
 };
 
 /// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).

@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "checkpoint/run_identity.hpp"
 #include "report/curve_plot.hpp"
 #include "genome/genome_file.hpp"
 #include "mesh/glb_writer.hpp"
@@ -35,9 +36,10 @@ std::string humanSeconds(double s) {
 std::uint64_t islandSeed(std::uint64_t seed, int rank) { return seed + 0x9e3779b97f4a7c15ULL * std::uint64_t(rank); }
 
 /// Every rank writes its island into the partial folder; once all have, rank 0 adds run.h5 and
-/// MANIFEST and publishes it with one rename. Returns false (nothing published) on failure.
-bool writeCheckpoint(const MpiSession& mpi, const std::string& folder, const IslandState& island, const RunMetadata& meta,
-                     int keep, std::ostream& log) {
+/// MANIFEST and publishes it with one rename. Returns "" on success; otherwise, on rank 0, why not
+/// (every rank learns of the failure: the result's emptiness is agreed).
+std::string writeCheckpoint(const MpiSession& mpi, const std::string& folder, const IslandState& island,
+                            const RunMetadata& meta, int keep, std::ostream& log) {
     namespace fs = std::filesystem;
     const std::string name = checkpointName(meta.generation);
     const std::string partial = folder + "/." + name + ".partial", published = folder + "/" + name;
@@ -48,39 +50,43 @@ bool writeCheckpoint(const MpiSession& mpi, const std::string& folder, const Isl
         fs::create_directories(partial, ec);
         if (ec) problem = "cannot create " + partial + ": " + ec.message();
     }
-    if (!mpi.fromRoot(problem.empty())) {
-        if (mpi.rank() == 0) log << "shapevo: warning: checkpoint skipped: " << problem << "\n";
-        return false;
-    }
+    if (!mpi.fromRoot(problem.empty())) return mpi.rank() == 0 ? problem : "failed on rank 0";
     try {
         writeIslandFile(partial + "/" + islandFileName(mpi.rank()), island);
     } catch (const std::exception& e) {
         problem = e.what();
     }
     if (!mpi.allTrue(problem.empty())) {
-        if (!problem.empty()) log << "shapevo: warning: rank " << mpi.rank() << " could not write its island: " << problem << "\n";
+        if (!problem.empty()) log << "shapevo: rank " << mpi.rank() << " could not write its island: " << problem << "\n";
         if (mpi.rank() == 0) {
             std::error_code ec;
             fs::remove_all(partial, ec);
-            log << "shapevo: warning: checkpoint at generation " << meta.generation << " not written; the previous one stays\n";
+            if (problem.empty()) problem = "another rank could not write its island (it says why)";
         }
-        return false;
+        return mpi.rank() == 0 ? problem : "failed";
     }
-    bool ok = true;
     if (mpi.rank() == 0) {
         try {
             writeRunMetadata(partial + "/run.h5", meta);
             std::vector<std::string> files{"run.h5"};
             for (int r = 0; r < mpi.size(); ++r) files.push_back(islandFileName(r));
             writeManifest(partial, files);
-            publishCheckpoint(partial, published);
-            pruneCheckpoints(folder, keep);
+            publishCheckpoint(partial, published, meta.runId);
+            pruneCheckpoints(folder, keep, meta.runId);
         } catch (const std::exception& e) {
-            log << "shapevo: warning: checkpoint at generation " << meta.generation << " not published: " << e.what() << "\n";
-            ok = false;
+            std::error_code ec;
+            fs::remove_all(partial, ec);
+            problem = e.what();
         }
     }
-    return mpi.fromRoot(ok);
+    return mpi.fromRoot(problem.empty()) ? "" : mpi.rank() == 0 ? problem : "failed";
+}
+
+/// What a user needs after a failed checkpoint: the newest complete checkpoint of this run.
+std::string newestCompleteCheckpoint(const std::string& folder, const std::string& runId) {
+    for (const std::string& c : listCheckpoints(folder))
+        if (checkpointRunId(c) == runId) return "the newest complete checkpoint is " + c + "; resume from it once fixed";
+    return "there is no complete checkpoint of this run yet";
 }
 
 }  // namespace
@@ -161,13 +167,21 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         if (due || !stopReason.empty()) {
             const auto checkpointStart = Clock::now();
             IslandState island;
+            island.runId = meta.runId;
+            island.seed = meta.seed;
+            island.ranks = meta.ranks;
             island.rank = mpi.rank();
             island.generation = ga.generation();
             island.evaluations = ga.evaluations();
             island.rng = ga.rng().state();
             island.population = ga.population();
             island.curve = localCurve;
-            writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
+            const std::string failed = writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
+            if (!failed.empty())  // every rank sees the failure: stop now rather than lose more work
+                throw RunFailure{root ? "checkpoint at generation " + std::to_string(meta.generation) +
+                                            " could not be written: " + failed + "; the run stops; " +
+                                            newestCompleteCheckpoint(folder, meta.runId)
+                                      : std::string()};
             checkpointSeconds += since(checkpointStart);
             lastCheckpoint = Clock::now();
         }
@@ -243,6 +257,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         result.iou = image ? *sum.silhouetteIoU : sum.voxelIoU.value_or(0.0);
         sum.threads = evaluator.threads();
         sum.islands = mpi.size();
+        sum.changedInputs = options.changedInputs;
         sum.migrationSeconds = overhead[0];
         sum.checkpointSeconds = overhead[1];
         writeSummaryJson(sum, folder + "/summary.json");

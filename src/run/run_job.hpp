@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "island/mpi_session.hpp"
 #include "run/settings.hpp"
@@ -16,6 +17,8 @@ namespace shapevo {
 struct JobOptions {
     bool quiet = false;                         ///< no per-generation progress lines
     std::optional<std::uint32_t> generations;   ///< resume: new generation limit
+    bool allowChangedInputs = false;            ///< resume: accept inputs whose files changed
+    std::vector<std::string> changedInputs;     ///< resume: those that did (for summary.json)
 };
 
 struct JobResult {
@@ -34,5 +37,12 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
 
 /// Thrown on ranks whose input was fine when another rank's was not: exit 2 without a message.
 struct SilentFailure {};
+
+/// Thrown on every rank when the run must stop for a fault that is not bad input (a checkpoint
+/// that cannot be written): exit 1; `message` (set on rank 0 only) says what and which
+/// checkpoint is the newest complete one.
+struct RunFailure {
+    std::string message;
+};
 
 }  // namespace shapevo

@@ -42,20 +42,24 @@ TEST(CheckpointFolders, ListIsNewestFirstByNumberAndIgnoresOtherNames) {
 
 TEST(CheckpointFolders, PruneKeepsNewestAndRemovesPartialFolders) {
     test::TempDir dir;
-    makeFolders(dir, {"checkpoint-000010", "checkpoint-000020", "checkpoint-000030", "checkpoint-000040",
-                      ".checkpoint-000050.partial", ".checkpoint-000005.partial", ".checkpoint-000040.replaced",
-                      "checkpoint-000050.old", "best"});
+    for (std::uint32_t g : {10u, 20u, 30u, 40u}) test::writeCheckpoint(dir.path(), g);
+    const std::string foreign = "ffeeddccbbaa99887766554433221100";
+    test::writeCheckpoint(dir.path(), 25, 1, foreign);  // another run's: never pruned
+    makeFolders(dir, {".checkpoint-000050.partial", ".checkpoint-000005.partial", ".checkpoint-000040.replaced",
+                      "checkpoint-000050.old", "best", "checkpoint-000015"});
     test::writeFile(dir.file(".checkpoint-000050.partial/island-0000.h5"), "half written");
-    pruneCheckpoints(dir.path().string(), 2);
+    pruneCheckpoints(dir.path().string(), 2, test::kRunId);
     EXPECT_EQ(names(listCheckpoints(dir.path().string())),
-              (std::vector<std::string>{"checkpoint-000040", "checkpoint-000030"}));
+              (std::vector<std::string>{"checkpoint-000040", "checkpoint-000030", "checkpoint-000025", "checkpoint-000015"}))
+        << "the other run's checkpoint and the unreadable (empty) one are not provably ours: kept";
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000050.partial"));
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000005.partial"));
     EXPECT_FALSE(fs::exists(dir.path() / ".checkpoint-000040.replaced"));
     EXPECT_TRUE(fs::exists(dir.path() / "checkpoint-000050.old"));  // not ours: untouched
     EXPECT_TRUE(fs::exists(dir.path() / "best"));
-    pruneCheckpoints(dir.path().string(), 0);  // never removes the newest
-    EXPECT_EQ(names(listCheckpoints(dir.path().string())), (std::vector<std::string>{"checkpoint-000040"}));
+    pruneCheckpoints(dir.path().string(), 0, test::kRunId);  // never removes the newest
+    EXPECT_EQ(names(listCheckpoints(dir.path().string())),
+              (std::vector<std::string>{"checkpoint-000040", "checkpoint-000025", "checkpoint-000015"}));
 }
 
 TEST(CheckpointFolders, PublishRenamesThePartialFolder) {

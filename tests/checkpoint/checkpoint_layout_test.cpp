@@ -44,7 +44,8 @@ TEST(CheckpointLayout, RunFileListsExactlyTheDocumentedNames) {
     writeRunMetadata(dir.file("run.h5"), test::makeRun(2));
     const auto names = h5lsNames(dir.file("run.h5"));
     if (!names) GTEST_SKIP() << "h5ls (hdf5-tools) not installed";
-    EXPECT_EQ(*names, (std::set<std::string>{"/", "/config", "/config/text", "/curve", "/grammar", "/grammar/text"}));
+    EXPECT_EQ(*names, (std::set<std::string>{"/", "/config", "/config/text", "/curve", "/grammar", "/grammar/text", "/inputs",
+                                              "/inputs/text"}));
 }
 
 }  // namespace

@@ -46,8 +46,13 @@ inline IslandState makeIsland(int rank, std::size_t individuals = 24, std::size_
     return s;
 }
 
-inline RunMetadata makeRun(int ranks, std::uint32_t generation = 5) {
+/// The run id of makeRun's run (any 32 hex digits).
+inline const std::string kRunId = "00112233445566778899aabbccddeeff";
+
+inline RunMetadata makeRun(int ranks, std::uint32_t generation = 5, const std::string& runId = kRunId) {
     RunMetadata m;
+    m.runId = runId;
+    m.inputs = {{"grammar", sourcePath("grammars/spaceship.grammar"), 0x1234}};
     m.seed = 0xfeedface12345678ULL;
     m.generation = generation;
     m.ranks = ranks;
@@ -64,18 +69,25 @@ inline RunMetadata makeRun(int ranks, std::uint32_t generation = 5) {
 
 /// A complete checkpoint folder `dir/checkpoint-NNNNNN` with `ranks` islands, as a run makes it
 /// (written into a partial folder, MANIFEST last, then published). Returns its path.
-inline std::string writeCheckpoint(const std::filesystem::path& dir, std::uint32_t generation, int ranks = 1) {
+inline std::string writeCheckpoint(const std::filesystem::path& dir, std::uint32_t generation, int ranks = 1,
+                                   const std::string& runId = kRunId) {
     const std::string partial = (dir / ("." + checkpointName(generation) + ".partial")).string();
     std::filesystem::create_directories(partial);
     std::vector<std::string> files{"run.h5"};
-    writeRunMetadata(partial + "/run.h5", makeRun(ranks, generation));
+    const RunMetadata run = makeRun(ranks, generation, runId);
+    writeRunMetadata(partial + "/run.h5", run);
     for (int r = 0; r < ranks; ++r) {
-        writeIslandFile(partial + "/" + islandFileName(r), makeIsland(r));
+        IslandState island = makeIsland(r);
+        island.runId = run.runId;
+        island.seed = run.seed;
+        island.ranks = ranks;
+        island.generation = generation;
+        writeIslandFile(partial + "/" + islandFileName(r), island);
         files.push_back(islandFileName(r));
     }
     writeManifest(partial, files);
     const std::string final = (dir / checkpointName(generation)).string();
-    publishCheckpoint(partial, final);
+    publishCheckpoint(partial, final, runId);
     return final;
 }
 
