@@ -162,12 +162,14 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                 p.half = halfAbs(s.size);
                 // The kind's own part (a cone's taper, a mesh's index): K::emit reads its arguments.
                 struct Arguments {
+                    const Grammar& g;
                     const Statement& st;
-                    decltype(eval)& evaluate;
-                    float expression(int i) const { return evaluate(st.expr[i]); }
+                    const float *params, *size, *parentSize;
+                    float* evalStack;
+                    float expression(int i) const { return evaluate(g, st.expr[i], params, size, parentSize, evalStack); }
                     std::uint16_t slot() const { return st.slot; }
                 };
-                const Arguments args{st, eval};
+                const Arguments args{g, st, params, &s.size.x, &parentSize.x, evalStack};
                 visitKind(st.primitive, [&](auto kind) { decltype(kind)::type::emit(p, args); });
                 break;
             }

@@ -192,7 +192,7 @@ private:
 /// (and x < c_0 when n is odd, which a closed mesh never gives). Calls run(lo, hi) with the
 /// index interval of each non-empty run within [first, last].
 template <class Run>
-void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long first, long last, Run run) {
+[[gnu::always_inline]] inline void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long first, long last, Run run) {
     const double base = -grid.origin[0] / grid.voxelSize - 0.5, perUnit = 1.0 / grid.voxelSize;
     for (long m = long(n) - 1; m >= 0; m -= 2) {
         const double from = m >= 1 ? c[m - 1].x : -INFINITY, to = c[m].x;
