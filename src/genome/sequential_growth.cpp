@@ -12,11 +12,7 @@ namespace {
 bool emitsGeometry(const Rule& r) {
     for (const Statement& s : r.statements) {
         switch (s.kind) {
-        case StatementKind::Box:
-        case StatementKind::Cylinder:
-        case StatementKind::Cone:
-        case StatementKind::Sphere:
-        case StatementKind::Mesh: return true;
+        case StatementKind::Primitive: return true;
         default: break;
         }
     }

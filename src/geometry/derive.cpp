@@ -10,6 +10,7 @@
 #endif
 
 #include "grammar/expression.hpp"
+#include "shape/kinds.hpp"
 
 namespace shapevo {
 
@@ -72,16 +73,6 @@ glm::mat3 multiply(const glm::mat3& a, const glm::mat3& b) { return a * b; }
 glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) { return a * v; }
 glm::vec3 halfAbs(const glm::vec3& v) { return glm::abs(v) * 0.5f; }
 #endif
-
-PrimitiveKind primitiveKind(StatementKind k) {
-    switch (k) {
-    case StatementKind::Cylinder: return PrimitiveKind::Cylinder;
-    case StatementKind::Cone: return PrimitiveKind::Cone;
-    case StatementKind::Sphere: return PrimitiveKind::Sphere;
-    case StatementKind::Mesh: return PrimitiveKind::Mesh;
-    default: return PrimitiveKind::Box;
-    }
-}
 
 bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
     for (std::uint32_t k = 0; k < r.childOffsets; ++k)
@@ -159,26 +150,27 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                 stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
-            case StatementKind::Box:
-            case StatementKind::Cylinder:
-            case StatementKind::Cone:
-            case StatementKind::Sphere:
-            case StatementKind::Mesh: {
+            case StatementKind::Primitive: {
                 // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
                 if (out.primitives.size() >= maxPrimitives) return false;
                 Primitive& p = out.primitives.emplace_back();
-                p.kind = primitiveKind(st.kind);
+                p.kind = st.primitive;
                 p.mesh = 0;
                 p.taper = 1.0f;
                 p.centre = s.origin;
                 p.axes = s.axes;
                 p.half = halfAbs(s.size);
-                if (st.kind == StatementKind::Cone) {
-                    const float top = eval(st.expr[0]);
-                    p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
-                } else if (st.kind == StatementKind::Mesh) {
-                    p.mesh = st.slot;
-                }
+                // The kind's own part (a cone's taper, a mesh's index): K::emit reads its arguments.
+                struct Arguments {
+                    const Grammar& g;
+                    const Statement& st;
+                    const float *params, *size, *parentSize;
+                    float* evalStack;
+                    float expression(int i) const { return evaluate(g, st.expr[i], params, size, parentSize, evalStack); }
+                    std::uint16_t slot() const { return st.slot; }
+                };
+                const Arguments args{g, st, params, &s.size.x, &parentSize.x, evalStack};
+                visitKind(st.primitive, [&](auto kind) { decltype(kind)::type::emit(p, args); });
                 break;
             }
             case StatementKind::TerminalBegin:

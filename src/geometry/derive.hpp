@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "genome/chromosome.hpp"
-#include "geometry/primitive.hpp"
+#include "shape/primitive.hpp"
 
 namespace shapevo {
 

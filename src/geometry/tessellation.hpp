@@ -1,7 +1,8 @@
 // Tessellation: the surface of a primitive as outward-facing triangles in world coordinates, for
-// exported meshes (OBJ, PLY, GLB). Each kind is built in the frame's unit coordinates u (see
-// primitive.hpp) and placed with world = centre + axes * (half * u); frames with det(axes) < 0
-// (mirrored) get their triangles reversed so that they still face outwards.
+// exported meshes (OBJ, PLY, GLB). Each kind builds its piece (K::surface in shape/kinds/*.hpp)
+// in the frame's unit coordinates u and SurfaceBuilder (shape/surface.hpp) places it with
+// world = centre + axes * (half * u); frames with det(axes) < 0 (mirrored) get their triangles
+// reversed so that they still face outwards.
 //   Box       8 vertices, 12 triangles
 //   Cylinder  a kRoundSides-gon prism: 2 * kRoundSides vertices, 4 * kRoundSides - 4 triangles
 //   Cone      a kRoundSides-gon frustum like the cylinder; with taper 0 a pyramid with one apex
@@ -12,14 +13,11 @@
 #pragma once
 #include <vector>
 
-#include "geometry/primitive.hpp"
 #include "mesh/mesh.hpp"
+#include "shape/kinds/sphere.hpp"  // kSphereStacks
+#include "shape/primitive.hpp"
 
 namespace shapevo {
-
-/// Latitude bands of the UV sphere (kRoundSides meridians); vertex rings at latitudes
-/// -90 + 180 * i / kSphereStacks degrees, i = 1 .. kSphereStacks - 1, plus the two poles.
-inline constexpr int kSphereStacks = 8;
 
 /// Appends the surface of `p` to `out` (its vertices after those already there).
 /// `meshes` is Geometry::meshes; only Mesh primitives read it.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/mesh_shape.hpp"
+#include "shape/primitive.hpp"
 
 namespace shapevo {
 
@@ -68,15 +69,16 @@ struct Slot {
 
 enum class StatementKind : std::uint8_t {
     Scale, Size, Translate, Rotate, Mirror, Child,
-    Box, Cylinder, Cone, Sphere, Mesh,   // primitives (Cone: expr[0] = top radius ratio)
+    Primitive,                           // emit a primitive of kind `primitive` (its arguments: shape/kinds/)
     TerminalBegin, TerminalEnd,          // `terminal { ... }`: runs only on genes without expressed children
 };
 struct Statement {
     StatementKind kind;
     std::uint8_t axis = 0;       ///< Rotate, Mirror
-    std::uint16_t slot = 0;      ///< Child: slot index; Mesh: index into Grammar::meshes
+    PrimitiveKind primitive = PrimitiveKind::Box;  ///< Primitive: its kind
+    std::uint16_t slot = 0;      ///< Child: slot index; Primitive of kind Mesh: index into Grammar::meshes
     std::uint32_t end = 0;       ///< TerminalBegin: index of its TerminalEnd
-    ExprRef expr[3];             ///< vector statements use 3, Rotate and Cone use expr[0]
+    ExprRef expr[3];             ///< vector statements use 3, Rotate and a cone Primitive use expr[0]
 };
 
 struct SourceLocation {

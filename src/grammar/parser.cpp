@@ -2,8 +2,10 @@
 //   start NAME
 //   attr NAME = NUMBER
 //   rule NAME { param NAME = PRIOR ...  STATEMENT ... }
-// with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, box, cylinder,
-// cone [top EXPR], sphere, mesh "FILE", terminal { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after parsing live in grammar_checks.cpp.
+// with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, a primitive
+// (its keyword and arguments are its kind's, shape/kinds/: box, cylinder, cone [top EXPR], sphere,
+// mesh "FILE"), terminal { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after
+// parsing live in grammar_checks.cpp.
 #include "grammar/parser.hpp"
 
 #include <cmath>
@@ -18,6 +20,7 @@
 #include "mesh/mesh_shape_file.hpp"
 #include "grammar/grammar_checks.hpp"
 #include "base/input_error.hpp"
+#include "shape/kinds.hpp"
 
 namespace shapevo {
 
@@ -296,7 +299,7 @@ private:
     void parseStatement(Rule& rule) {
         const Token word = tokens_.take();
         if (word.kind != TokenKind::Identifier)
-            tokens_.fail(word.where, "expected a statement (" + std::string(kStatementList) + "), found " + word.describe());
+            tokens_.fail(word.where, "expected a statement (" + statementList() + "), found " + word.describe());
         if (word.text == "param") return parseParam(rule);
         Statement s{};
         const ExpressionContext ctx{&rule.params, &attrs_};
@@ -313,19 +316,13 @@ private:
             s.axis = std::uint8_t(axisIndex(axis));
             s.kind = word.text == "rotate" ? StatementKind::Rotate : StatementKind::Mirror;
             if (s.kind == StatementKind::Rotate) exprs_.compile(ctx, 1, g_.code, s.expr, g_.maxStack);
-        } else if (word.text == "box" || word.text == "cylinder" || word.text == "sphere") {
-            s.kind = word.text == "box" ? StatementKind::Box : word.text == "cylinder" ? StatementKind::Cylinder : StatementKind::Sphere;
-        } else if (word.text == "cone") {
-            s.kind = StatementKind::Cone;
-            if (tokens_.peek().isWord("top")) {  // cone top RATIO: a frustum
-                tokens_.take();
-                exprs_.compile(ctx, 1, g_.code, s.expr, g_.maxStack);
-            } else {  // a pointed cone: top radius 0
-                s.expr[0] = constantExpression(0.0f);
-            }
-        } else if (word.text == "mesh") {
-            s.kind = StatementKind::Mesh;
-            s.slot = parseMesh();
+        } else if (visitKeyword(word.text, [&](auto kind) {
+                       using K = typename decltype(kind)::type;
+                       s.kind = StatementKind::Primitive;
+                       s.primitive = K::kind;
+                       PrimitiveArguments args{*this, s, ctx};
+                       K::parseArguments(args);
+                   })) {
         } else if (word.text == "terminal") {
             return parseTerminal(rule, word.where);
         } else if (word.text == "child") {
@@ -335,13 +332,32 @@ private:
             s.kind = StatementKind::Child;
             parseChild(rule, s, word.where);
         } else {
-            tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + std::string(kStatementList));
+            tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + statementList());
         }
         rule.statements.push_back(s);
     }
 
-    static constexpr const char* kStatementList =
-        "param, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, terminal or child";
+    static std::string statementList() {
+        return "param, scale, size, translate, rotate, mirror, " + kindKeywords() + ", terminal or child";
+    }
+
+    /// What a kind's parseArguments reads its arguments with (shape/kinds.hpp).
+    struct PrimitiveArguments {
+        Parser& parser;
+        Statement& s;
+        const ExpressionContext& ctx;
+        /// `WORD EXPR` if the next token is WORD, into expr[0]; otherwise the constant `otherwise`.
+        void optionalExpression(std::string_view word, float otherwise) {
+            if (parser.tokens_.peek().isWord(word)) {
+                parser.tokens_.take();
+                parser.exprs_.compile(ctx, 1, parser.g_.code, s.expr, parser.g_.maxStack);
+            } else {
+                s.expr[0] = parser.constantExpression(otherwise);
+            }
+        }
+        /// A mesh file name in quotes; its index in Grammar::meshes into slot.
+        void meshFile() { s.slot = parser.parseMesh(); }
+    };
 
     ExprRef constantExpression(float v) {
         const ExprRef e{std::uint32_t(g_.code.size()), std::uint32_t(g_.code.size() + 1)};

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "geometry/primitive.hpp"
+#include "shape/primitive.hpp"
 #include "mesh/mesh.hpp"
 
 namespace shapevo {

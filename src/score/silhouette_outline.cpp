@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "shape/kinds.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -159,7 +161,7 @@ bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
 
 bool OutlineBuilder::prepare(const Primitive& p, const std::vector<MeshShape>* meshes) {
     prepared_ = nullptr;
-    if (p.kind == PrimitiveKind::Mesh && (!meshes || p.mesh >= meshes->size())) return false;
+    if (!hasShapeData(p, meshes)) return false;
     if (!localMap(p, map_)) return false;
     prepared_ = &p;
     meshes_ = meshes;
@@ -199,31 +201,7 @@ void OutlineBuilder::addPrepared(Outline& out) {
     lastRoundPoints_ = 0;
     if (!prepared_) return;
     const Primitive& p = *prepared_;
-    const LocalMap& map = map_;
-    switch (p.kind) {
-    case PrimitiveKind::Box:
-        if (!addRingsFast(map, &squareRing_, 1.0, out)) addConvex(map, box_, out);
-        break;
-    case PrimitiveKind::Cylinder:
-        if (!addRingsFast(map, nullptr, 1.0, out)) addConvex(map, prism_, out);
-        break;
-    case PrimitiveKind::Cone:
-        if (addRingsFast(map, nullptr, std::clamp(double(p.taper), 0.0, 1.0), out)) break;  // (NaN: 0)
-        if (!(p.taper > 0.0f)) {
-            addConvex(map, pyramid_, out);
-        } else {
-            const std::size_t n = prism_.ringSize;
-            for (std::size_t k = 0; k < n; ++k) {
-                const glm::dvec3& v = prism_.vertices[n + k];
-                const double t = std::min(double(p.taper), 1.0);
-                cone_.vertices[n + k] = {v.x * t, v.y, v.z * t};
-            }
-            addConvex(map, cone_, out);
-        }
-        break;
-    case PrimitiveKind::Sphere: addSphere(map, p, out); break;
-    case PrimitiveKind::Mesh: addMesh(map, (*meshes_)[p.mesh], out); break;
-    }
+    visitKind(p.kind, [&](auto kind) { decltype(kind)::type::outline(*this, map_, p, out); });
 }
 
 bool OutlineBuilder::localEye(const LocalMap& map, glm::dvec3& e, double& ew) const {
@@ -301,101 +279,6 @@ void OutlineBuilder::addClippedPiece(const Homogeneous* h, std::size_t n, bool c
         out.points.push_back(snapToFixed(std::clamp(v.x, lo, width_ + kGuardBand), std::clamp(v.y, lo, height_ + kGuardBand)));
     const auto count = std::uint32_t(xy_.size());
     out.pieces.push_back({std::uint32_t(first), count, 1, std::uint16_t(count)});
-}
-
-void OutlineBuilder::addSphere(const LocalMap& map, const Primitive& p, Outline& out) {
-    // In the primitive's own frame the solid is the unit ball. The contact curve seen from the
-    // homogeneous eye (e, ew) (ew = 1: a point; ew = 0: parallel rays along e) is the circle
-    // u . e = ew on the unit sphere.
-    const glm::dvec3 clipNormal(map.m[3][0], map.m[3][1], map.m[3][2]);
-    const bool inFront = map.m[3][3] - glm::length(clipNormal) >= 0.0;
-    const bool solid = p.half.x != 0.0f && p.half.y != 0.0f && p.half.z != 0.0f;
-    glm::dvec3 e(0.0);
-    double ew = 0.0;
-    const bool eye = localEye(map, e, ew);
-    const double len = glm::length(e);
-    if (!inFront || !solid || !eye || !(len > ew)) {
-        addConvex(map, uvSphere_, out);
-        return;
-    }
-    const glm::dvec3 n = e / len;
-    const double offset = ew / len, radius = std::sqrt(1.0 - offset * offset);
-    const glm::dvec3 axis = std::fabs(n.x) <= std::fabs(n.y) && std::fabs(n.x) <= std::fabs(n.z) ? glm::dvec3(1, 0, 0)
-                            : std::fabs(n.y) <= std::fabs(n.z)                                   ? glm::dvec3(0, 1, 0)
-                                                                                                 : glm::dvec3(0, 0, 1);
-    const glm::dvec3 a = glm::normalize(glm::cross(n, axis)), b = glm::cross(n, a);
-    // h(k) = map(centre) + cos_k * map'(radius a) + sin_k * map'(radius b), map' the linear part
-    const Homogeneous hc = map.apply(offset * n);
-    const glm::dvec3 ra = radius * a, rb = radius * b;
-    Homogeneous ha{}, hb{};
-    double* pa = &ha.x;
-    double* pb = &hb.x;
-    for (int r = 0; r < 4; ++r) {
-        pa[r] = map.m[r][0] * ra.x + map.m[r][1] * ra.y + map.m[r][2] * ra.z;
-        pb[r] = map.m[r][0] * rb.x + map.m[r][1] * rb.y + map.m[r][2] * rb.z;
-    }
-    auto point = [&](int k) {
-        const glm::dvec2 cs = sphereRing_[std::size_t(k)];
-        return Homogeneous{hc.x + cs.x * ha.x + cs.y * hb.x, hc.y + cs.x * ha.y + cs.y * hb.y,
-                           hc.w + cs.x * ha.w + cs.y * hb.w, hc.clip + cs.x * ha.clip + cs.y * hb.clip};
-    };
-    const int level = detailLevel(projectedRadius(hc, ha, hb), kSphereLevelRadius);
-    const int points = kSphereSides >> level;
-    const std::size_t first = out.points.size();
-    out.points.resize(first + std::size_t(points));
-    FixedPoint* pts = out.points.data() + first;
-    bool fast = true;
-    for (int k = 0; k < points && fast; ++k) {
-        const Homogeneous q = point(k << level);
-        const double inv = 1.0 / q.w, x = q.x * inv, y = q.y * inv;
-        fast = insideGuard(x, y);
-        if (fast) pts[k] = snapToFixed(x, y);
-    }
-    if (fast) {
-        out.pieces.push_back({std::uint32_t(first), std::uint32_t(points), 1, std::uint16_t(points)});
-        lastRoundPoints_ = points;
-        return;
-    }
-    // Reaching beyond the guard band: every point, clipped
-    h_.resize(kSphereSides);
-    for (int k = 0; k < kSphereSides; ++k) h_[std::size_t(k)] = point(k);
-    out.points.resize(first);
-    addClippedPiece(h_.data(), h_.size(), true, out);
-}
-
-void OutlineBuilder::addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out) {
-    const std::size_t n = mesh.vertices.size();
-    h_.resize(n);
-    snapped_.resize(n);
-    fast_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec3& v = mesh.vertices[i];
-        h_[i] = map.apply(glm::dvec3(v.x, v.y, v.z));
-        const double x = h_[i].x / h_[i].w, y = h_[i].y / h_[i].w;
-        fast_[i] = h_[i].clip >= 0.0 && insideGuard(x, y);
-        if (fast_[i]) snapped_[i] = snapToFixed(x, y);
-    }
-    Homogeneous polygon[4];
-    for (const auto& tri : mesh.triangles) {
-        if (tri[0] >= n || tri[1] >= n || tri[2] >= n) continue;
-        if (fast_[tri[0]] && fast_[tri[1]] && fast_[tri[2]]) {
-            const auto first = std::uint32_t(out.points.size());
-            for (int k = 0; k < 3; ++k) out.points.push_back(snapped_[tri[k]]);
-            out.pieces.push_back({first, 3, 1, 3});
-            continue;
-        }
-        // Cut the triangle by the clip plane (Sutherland-Hodgman keeps its cyclic order).
-        std::size_t m = 0;
-        for (int k = 0; k < 3; ++k) {
-            const Homogeneous &p = h_[tri[k]], &q = h_[tri[(k + 1) % 3]];
-            if (p.clip >= 0.0) polygon[m++] = p;
-            if ((p.clip >= 0.0) != (q.clip >= 0.0)) {
-                const double t = p.clip / (p.clip - q.clip);
-                polygon[m++] = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.w + (q.w - p.w) * t, 0.0};
-            }
-        }
-        addClippedPiece(polygon, m, true, out);
-    }
 }
 
 }  // namespace shapevo

@@ -29,6 +29,7 @@
 //    The fewer corners are a subset of the full ones, so the drawn polygon lies inside the full
 //    one. Primitives that take the cut or guard-band path keep every corner.
 //  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
+// Each kind's part (which pieces, which fast path) is its K::outline in shape/kinds/<kind>.hpp.
 // Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
 // whose vertices are its vertices in front plus the points where its edges cross the plane.
 // Guard band: points more than kGuardBand pixels beyond the picture's edges would overflow the
@@ -42,58 +43,15 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/primitive.hpp"
 #include "score/camera.hpp"
+#include "shape/outline.hpp"
+#include "shape/primitive.hpp"
 
 namespace shapevo {
 
-struct FixedPoint {
-    std::int32_t x, y;  ///< pixel coordinates * kSubpixels
-    bool operator==(const FixedPoint&) const = default;
-};
-inline constexpr std::int64_t kSubpixels = 256;
-/// Pixel coordinates -> fixed point, rounded to nearest, halves up (|x|, |y| well below 2^23;
-/// exact: scaling by 256 and adding 0.5 round nothing in that range).
-inline FixedPoint snapToFixed(double x, double y) {
-    return {std::int32_t(std::floor(x * double(kSubpixels) + 0.5)), std::int32_t(std::floor(y * double(kSubpixels) + 0.5))};
-}
-inline constexpr double kGuardBand = 16384.0;
-/// Levels of detail for rings: kRoundSides >> level corners, level 0 .. kRoundLevels - 1.
-inline constexpr int kRoundLevels = 3;
-/// Largest pixel radius (projectedRadius) drawn at level 1 and 2 (8 and 4 ring corners): left-out
-/// corners stay within 1/4 pixel (0.0761 r and 0.293 r from the chords that replace them).
-inline constexpr double kRingLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.0761, 0.25 / 0.293};
-/// The same for the sphere's contact curve (kSphereSides points; levels 1, 2: 16 and 8 points
-/// within 0.0192 r and 0.0761 r of the circle).
-inline constexpr double kSphereLevelRadius[kRoundLevels] = {INFINITY, 0.25 / 0.0192, 0.25 / 0.0761};
-/// The coarsest level whose radius limit (kRingLevelRadius or kSphereLevelRadius) admits a ring
-/// of `pixels` pixel radius.
-inline int detailLevel(double pixels, const double (&limits)[kRoundLevels]) {
-    int level = 0;
-    while (level + 1 < kRoundLevels && pixels <= limits[level + 1]) ++level;
-    return level;
-}
-inline constexpr int kSphereSides = 2 * kRoundSides;
-static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 32-bit masks");
-
-/// Points [first, first + count) of an Outline. The first rings * ringSize of them are `rings`
-/// rings of ringSize points each, in cyclic order around a convex polygon before snapping (a
-/// hint a hull algorithm may use; it must not rely on it); the rest come in no order.
-struct OutlinePiece {
-    std::uint32_t first = 0, count = 0;
-    std::uint16_t rings = 0, ringSize = 0;
-};
-
-struct Outline {
-    std::vector<FixedPoint> points;
-    std::vector<OutlinePiece> pieces;
-    void clear() {
-        points.clear();
-        pieces.clear();
-    }
-};
-
 /// Builds outlines for one camera; holds the unit shapes and scratch space (no allocation once warm).
+/// Which pieces a primitive is drawn with is its kind's `outline` (shape/kinds/*.hpp, called with
+/// static dispatch from addPrepared); the builder gives it the services below "for the kinds".
 class OutlineBuilder {
 public:
     explicit OutlineBuilder(const Camera& camera);
@@ -139,13 +97,12 @@ public:
         double reach = 1.0;    ///< largest distance of a corner from the axis
     };
 
-private:
+    // ---- For the kinds' outline code (shape/kinds/*.hpp) -------------------------------------
     /// Local -> homogeneous map of one primitive: h = m * (u, 1).
     struct LocalMap {
         double m[4][4];  ///< rows: x, y, w, clip
         Homogeneous apply(const glm::dvec3& u) const;
     };
-    bool localMap(const Primitive& p, LocalMap& map) const;  ///< false if not finite
     /// The eye in the primitive's local coordinates, homogeneous: (e, 1) for a perspective
     /// camera, (e, 0) with e along the rays for parallel ones. False if the frame is degenerate.
     bool localEye(const LocalMap& map, glm::dvec3& e, double& ew) const;
@@ -154,14 +111,34 @@ private:
     /// level of detail chosen by size. False (nothing added) if the shape reaches behind the clip
     /// plane or beyond the guard band, or the frame is degenerate.
     bool addRingsFast(const LocalMap& map, const RingTable* table, double topScale, Outline& out);
+    /// One piece: all vertices of `shape`, cut by the clip plane along its edges if needed.
     void addConvex(const LocalMap& map, const UnitShape& shape, Outline& out);
-    void addSphere(const LocalMap& map, const Primitive& p, Outline& out);
-    void addMesh(const LocalMap& map, const MeshShape& mesh, Outline& out);
     /// Points with clip >= 0, already cut: project, hull, clip to the guard band, snap, append.
     void addClippedPiece(const Homogeneous* h, std::size_t n, bool convexCycle, Outline& out);
     bool insideGuard(double x, double y) const {
         return x >= -kGuardBand && x <= width_ + kGuardBand && y >= -kGuardBand && y <= height_ + kGuardBand;
     }
+    void setLastRoundPoints(int points) { lastRoundPoints_ = points; }
+    /// The meshes given to prepare() (a Mesh primitive's mesh is there: prepare checked it).
+    const std::vector<MeshShape>* preparedMeshes() const { return meshes_; }
+    /// Unit shapes: the box; the kRoundSides-gon prism and pyramid; the UV sphere (kRoundSides
+    /// meridians, kRoundSides / 2 bands); a scratch copy of the prism (a cone rescales its top
+    /// ring); the square ring of a box; (cos, sin) of the kSphereSides contact-curve angles.
+    const UnitShape& boxShape() const { return box_; }
+    const UnitShape& prismShape() const { return prism_; }
+    const UnitShape& pyramidShape() const { return pyramid_; }
+    const UnitShape& uvSphereShape() const { return uvSphere_; }
+    UnitShape& frustumScratch() { return cone_; }
+    const RingTable& squareRing() const { return squareRing_; }
+    const std::vector<glm::dvec2>& sphereRing() const { return sphereRing_; }
+    /// Reusable scratch: homogeneous points; per mesh vertex its snapped point and whether it is
+    /// in front and inside the guard band.
+    std::vector<Homogeneous>& homogeneousScratch() { return h_; }
+    std::vector<FixedPoint>& snappedScratch() { return snapped_; }
+    std::vector<std::uint8_t>& fastScratch() { return fast_; }
+
+private:
+    bool localMap(const Primitive& p, LocalMap& map) const;  ///< false if not finite
 
     const Camera& camera_;
     double width_, height_;

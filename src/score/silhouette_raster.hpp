@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "geometry/primitive.hpp"
+#include "shape/primitive.hpp"
 #include "score/camera.hpp"
 #include "score/fixed_hull.hpp"
 #include "score/image_target.hpp"

@@ -1,26 +1,14 @@
 // VolumeTarget: a target volume baked into a dense grid of bit rows, ready for the scorer.
 // Rows run along x: row (y, z) starts at word (z * ny + y) * wordsPerRow, bit i of the row is voxel x = i.
-// Voxel (i, j, k) has its centre at origin + (i + 0.5, j + 0.5, k + 0.5) * voxelSize.
+// The grid itself (GridSpec) lives in shape/grid_spec.hpp, where the kinds' row code sees it.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
+#include "shape/grid_spec.hpp"
 
 namespace shapevo {
-
-struct GridSpec {
-    glm::dvec3 origin{0.0};  ///< corner of voxel (0,0,0)
-    double voxelSize = 1.0;
-    int nx = 0, ny = 0, nz = 0;
-
-    int wordsPerRow() const { return (nx + 63) / 64; }
-    std::size_t rows() const { return std::size_t(ny) * std::size_t(nz); }
-    std::size_t words() const { return rows() * std::size_t(wordsPerRow()); }
-    /// Centre of voxel index i along an axis; the one formula every voxel test uses.
-    double centre(int axis, long i) const { return origin[axis] + (double(i) + 0.5) * voxelSize; }
-};
 
 struct VolumeTarget {
     GridSpec grid;

@@ -5,10 +5,6 @@
 #include <bit>
 #include <cmath>
 
-#include "score/box_rows.hpp"
-#include "score/cone_rows.hpp"
-#include "score/cylinder_rows.hpp"
-#include "score/sphere_rows.hpp"
 
 namespace shapevo {
 
@@ -47,21 +43,6 @@ void Voxelizer::markRows(long z, long y0, long y1, long lo, long hi) {
     }
 }
 
-namespace {
-/// True if every box axis is a distinct grid axis (the common case: unrotated grammars, mirrors).
-bool axisAligned(const BoxFrame& b) {
-    int seen = 0;
-    for (int k = 0; k < 3; ++k) {
-        int nonzero = 0, axis = 0;
-        for (int j = 0; j < 3; ++j)
-            if (b.a[k][j] != 0.0) ++nonzero, axis = j;
-        if (nonzero != 1 || (seen & (1 << axis))) return false;
-        seen |= 1 << axis;
-    }
-    return true;
-}
-}  // namespace
-
 void Voxelizer::addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
     const long nx = grid_.nx;
     if (z < 0 || z >= grid_.nz || y < 0 || y >= grid_.ny) {
@@ -95,122 +76,7 @@ bool Voxelizer::indexBounds(const double c[3], const double reach[3], long first
 }
 
 void Voxelizer::add(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts) {
-    switch (p.kind) {
-    case PrimitiveKind::Box: addBox(p, counts); return;
-    case PrimitiveKind::Cylinder: addRound(CylinderSolid::from(p), counts); return;
-    case PrimitiveKind::Cone: addRound(ConeSolid::from(p), counts); return;
-    case PrimitiveKind::Sphere: addRound(SphereSolid::from(p), counts); return;
-    case PrimitiveKind::Mesh:
-        if (meshes && p.mesh < meshes->size()) addMesh(p, (*meshes)[p.mesh], counts);
-        return;
-    }
-}
-
-template <class Solid>
-void Voxelizer::addRound(const Solid& s, VoxelCounts& counts) {
-    if (!s.valid()) return;
-    const double reach[3] = {s.reach(0), s.reach(1), s.reach(2)};
-    long first[3], last[3];
-    if (!indexBounds(s.f.box.c, reach, first, last)) return;
-    for (long z = first[2]; z <= last[2]; ++z) {
-        const double cz = grid_.centre(2, z);
-        for (long y = first[1]; y <= last[1]; ++y) {
-            ++counts.rows;
-            long lo, hi;
-            if (chordInterval(s.chord(grid_.centre(1, y), cz), s.cx(), grid_, first[0], last[0], lo, hi))
-                addRow(y, z, lo, hi, counts);
-        }
-    }
-}
-
-void Voxelizer::addMesh(const Primitive& p, const MeshShape& shape, VoxelCounts& counts) {
-    if (!mesh_.place(p, shape)) return;
-    double c[3], reach[3];
-    for (int j = 0; j < 3; ++j) {
-        c[j] = 0.5 * (mesh_.lo(j) + mesh_.hi(j));
-        reach[j] = 0.5 * (mesh_.hi(j) - mesh_.lo(j));
-    }
-    long first[3], last[3];
-    if (!indexBounds(c, reach, first, last)) return;
-    counts.rows += std::uint64_t(last[1] - first[1] + 1) * std::uint64_t(last[2] - first[2] + 1);
-    crossings_.clear();
-    mesh_.collectCrossings(grid_, first[1], last[1], first[2], last[2], crossings_);
-    // Bucket the crossings by row (a counting sort: the row keys are dense), then sort each
-    // row's few crossings by x.
-    const std::uint32_t ny = std::uint32_t(last[1] - first[1] + 1);
-    const std::size_t rows = std::size_t(ny) * std::size_t(last[2] - first[2] + 1);
-    rowEnd_.assign(rows + 1, 0);
-    for (const RowCrossing& c : crossings_) ++rowEnd_[c.row + 1];
-    for (std::size_t r = 0; r < rows; ++r) rowEnd_[r + 1] += rowEnd_[r];  // now: where row r starts
-    byRow_.resize(crossings_.size());
-    for (const RowCrossing& c : crossings_) byRow_[rowEnd_[c.row]++] = c;  // afterwards: where row r ends
-    // Runs may start before a row's first crossing only if it crosses an odd number of
-    // triangles (never for a closed mesh); the whole halo keeps even that case exact.
-    const long xFirst = -long(grid_.nx), xLast = 2 * long(grid_.nx) - 1;
-    for (std::uint32_t r = 0, begin = 0; r < rows; begin = rowEnd_[r], ++r) {
-        const std::uint32_t end = rowEnd_[r];
-        if (begin == end) continue;
-        RowCrossing* c = byRow_.data() + begin;
-        std::sort(c, c + (end - begin));
-        const long y = first[1] + long(r % ny), z = first[2] + long(r / ny);
-        rowRuns(c, end - begin, grid_, xFirst, xLast, [&](long lo, long hi) { addRow(y, z, lo, hi, counts); });
-    }
-}
-
-void Voxelizer::addBox(const Primitive& p, VoxelCounts& counts) {
-    const BoxFrame b = BoxFrame::from(p);
-    if (!b.finite()) return;
-    const long n[3] = {grid_.nx, grid_.ny, grid_.nz};
-    const double reach[3] = {b.reach(0), b.reach(1), b.reach(2)};
-    long first[3], last[3];
-    if (!indexBounds(b.c, reach, first, last)) return;
-    if (axisAligned(b)) {
-        // Each slab depends on one grid axis only (the other products are exact zeros, and
-        // v + 0 == v), so the covered voxels are a box of index ranges, one per axis.
-        long range[3][2];
-        for (int k = 0; k < 3; ++k) {
-            int j = 0;
-            while (b.a[k][j] == 0.0) ++j;
-            if (!slabInterval(SlabLine::of(b, k, j, grid_), 0.0, grid_, first[j], last[j], range[j][0], range[j][1])) return;
-        }
-        // Everything below is arithmetic on the three ranges: rows off the grid in y or z count
-        // their whole interval as outside, rows on it count the part beyond x.
-        const long lo = range[0][0], hi = range[0][1];
-        const std::uint64_t len = std::uint64_t(hi - lo + 1);
-        const std::uint64_t rowsY = std::uint64_t(range[1][1] - range[1][0] + 1);
-        const std::uint64_t rowsZ = std::uint64_t(range[2][1] - range[2][0] + 1);
-        counts.rows += rowsY * rowsZ;
-        const long gy0 = std::max(range[1][0], 0L), gy1 = std::min(range[1][1], n[1] - 1);
-        const long gz0 = std::max(range[2][0], 0L), gz1 = std::min(range[2][1], n[2] - 1);
-        const long gx0 = std::max(lo, 0L), gx1 = std::min(hi, n[0] - 1);
-        const std::uint64_t inGridRows =
-            (gy0 <= gy1 && gz0 <= gz1) ? std::uint64_t(gy1 - gy0 + 1) * std::uint64_t(gz1 - gz0 + 1) : 0;
-        const std::uint64_t inGridLen = gx0 <= gx1 ? std::uint64_t(gx1 - gx0 + 1) : 0;
-        counts.outside += (rowsY * rowsZ - inGridRows) * len + inGridRows * (len - inGridLen);
-        if (inGridRows == 0 || inGridLen == 0) return;
-        for (long z = gz0; z <= gz1; ++z) markRows(z, gy0, gy1, gx0, gx1);
-        return;
-    }
-    const SlabLine slab[3] = {SlabLine::of(b, 0, 0, grid_), SlabLine::of(b, 1, 0, grid_), SlabLine::of(b, 2, 0, grid_)};
-    auto rowInterval = [&](double cy, double cz, long& lo, long& hi) {
-        lo = first[0];
-        hi = last[0];
-        for (int k = 0; k < 3; ++k) {
-            long l, h;
-            if (!slabInterval(slab[k], b.rowTerm(k, cy, cz), grid_, lo, hi, l, h)) return false;
-            lo = l;
-            hi = h;
-        }
-        return true;
-    };
-    for (long z = first[2]; z <= last[2]; ++z) {
-        const double cz = grid_.centre(2, z);
-        for (long y = first[1]; y <= last[1]; ++y) {
-            ++counts.rows;
-            long lo, hi;
-            if (rowInterval(grid_.centre(1, y), cz, lo, hi)) addRow(y, z, lo, hi, counts);
-        }
-    }
+    visitKind(p.kind, [&](auto kind) { decltype(kind)::type::voxelize(p, meshes, *this, counts); });
 }
 
 namespace {

@@ -1,9 +1,9 @@
 // Voxelizer: turns a model's primitives into bit rows over the target grid and counts them
 // against the target. For each voxel row a primitive crosses, the covered x-interval is computed
 // directly and OR-ed in as word masks; a voxel covered twice sets its overlap bit. Each kind's
-// inside test and row intervals live in their own header: box_rows.hpp, cylinder_rows.hpp,
-// cone_rows.hpp, sphere_rows.hpp (chord_rows.hpp for what the round kinds share) and
-// mesh_rows.hpp (runs between the sorted crossings of a row with the mesh's triangles).
+// inside test and row intervals live in its kind file (shape/kinds/*.hpp, K::voxelize), called
+// with static dispatch per primitive; this class is their row interface (grid, indexBounds,
+// addRow, markRows, scratch).
 // Voxel centres outside the grid (within a halo of one grid extent on every side) count as
 // "outside", once per primitive that covers them.
 //
@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/primitive.hpp"
-#include "score/mesh_rows.hpp"
 #include "score/volume_target.hpp"
+#include "shape/kinds.hpp"
+#include "shape/primitive.hpp"
 
 namespace shapevo {
 
@@ -42,12 +42,7 @@ public:
     void clear();
     const GridSpec& grid() const { return grid_; }
 
-private:
-    void addBox(const Primitive& p, VoxelCounts& counts);
-    /// Cylinder, cone or sphere: one chord per row (chord_rows.hpp).
-    template <class Solid>
-    void addRound(const Solid& s, VoxelCounts& counts);
-    void addMesh(const Primitive& p, const MeshShape& shape, VoxelCounts& counts);
+    // ---- The row interface of the kinds' voxel code (K::voxelize) -----------------------------
     /// Index ranges [first, last] per axis of the voxels within `reach` of `c` (plus one voxel of
     /// padding), clamped to the halo; false if that is empty (or NaN).
     bool indexBounds(const double c[3], const double reach[3], long first[3], long last[3]) const;
@@ -55,16 +50,18 @@ private:
     void addRow(long y, long z, long lo, long hi, VoxelCounts& counts);
     /// OR the same x-interval [lo, hi] (inside the grid) into rows y0..y1 of slice z.
     void markRows(long z, long y0, long y1, long lo, long hi);
+    /// Kind K's reusable work space (K::VoxelScratch).
+    template <class K>
+    auto& scratch() { return voxelScratch<K>(scratch_); }
+
+private:
 
     GridSpec grid_;
     int words_;
     std::vector<std::uint64_t> occupied_, overlap_;
     std::vector<std::int32_t> yMin_, yMax_;  ///< per z slice: written rows, yMin > yMax if none
     std::vector<std::uint32_t> slices_;      ///< z slices with rows written, in first-touch order
-    MeshSolid mesh_;                         ///< the mesh being voxelized (its vertex buffer is reused)
-    std::vector<RowCrossing> crossings_;     ///< its row crossings (reused), in triangle order
-    std::vector<RowCrossing> byRow_;         ///< the same, bucketed by row
-    std::vector<std::uint32_t> rowEnd_;      ///< per row: end of its bucket in byRow_
+    KindVoxelScratch scratch_;               ///< the kinds' work spaces (the mesh kind's buffers)
 };
 
 }  // namespace shapevo

@@ -91,13 +91,13 @@ void checkAccepted(const Grammar& g) {
         float params[256], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
         for (int i = 0; i < 256; ++i) params[i] = 0.5f + float(i);
         for (const Statement& st : rule.statements) {
-            const int n = (st.kind == StatementKind::Rotate || st.kind == StatementKind::Cone) ? 1
+            const int n = (st.kind == StatementKind::Rotate || (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Cone)) ? 1
                           : (st.kind == StatementKind::Scale || st.kind == StatementKind::Size ||
                              st.kind == StatementKind::Translate)
                               ? 3
                               : 0;
             if (st.kind == StatementKind::Child) CHECK(st.slot < rule.slots.size());
-            if (st.kind == StatementKind::Mesh) CHECK(st.slot < g.meshes.size());
+            if (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Mesh) CHECK(st.slot < g.meshes.size());
             if (st.kind == StatementKind::TerminalBegin) CHECK(st.end < rule.statements.size() && rule.statements[st.end].kind == StatementKind::TerminalEnd);
             if (st.kind == StatementKind::Rotate || st.kind == StatementKind::Mirror) CHECK(st.axis < 3);
             for (int c = 0; c < n; ++c) {

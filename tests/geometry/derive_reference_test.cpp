@@ -27,16 +27,6 @@ glm::mat3 referenceRotation(int axis, float degrees) {
     }
 }
 
-PrimitiveKind referenceKind(StatementKind k) {
-    switch (k) {
-    case StatementKind::Cylinder: return PrimitiveKind::Cylinder;
-    case StatementKind::Cone: return PrimitiveKind::Cone;
-    case StatementKind::Sphere: return PrimitiveKind::Sphere;
-    case StatementKind::Mesh: return PrimitiveKind::Mesh;
-    default: return PrimitiveKind::Box;
-    }
-}
-
 /// The semantics of derive, written as plainly as possible.
 bool referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitive>& out, std::size_t maxPrimitives) {
     struct Task {
@@ -91,11 +81,11 @@ bool referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitiv
             }
             default: {
                 if (out.size() >= maxPrimitives) return false;
-                Primitive p{referenceKind(st.kind), 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
-                if (st.kind == StatementKind::Cone) {
+                Primitive p{st.primitive, 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
+                if (st.primitive == PrimitiveKind::Cone) {
                     const float top = eval(st.expr[0]);
                     p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;
-                } else if (st.kind == StatementKind::Mesh) {
+                } else if (st.primitive == PrimitiveKind::Mesh) {
                     p.mesh = st.slot;
                 }
                 out.push_back(p);

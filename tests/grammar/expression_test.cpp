@@ -202,7 +202,8 @@ TEST(GrammarExpression, ExpressionsEndWhereTheNextStatementBegins) {
     EXPECT_EQ(r.statements[0].kind, StatementKind::Scale);
     EXPECT_EQ(r.statements[1].kind, StatementKind::Rotate);
     EXPECT_EQ(r.statements[2].kind, StatementKind::Translate);
-    EXPECT_EQ(r.statements[3].kind, StatementKind::Box);
+    EXPECT_EQ(r.statements[3].kind, StatementKind::Primitive);
+    EXPECT_EQ(r.statements[3].primitive, PrimitiveKind::Box);
 }
 
 }  // namespace

@@ -156,10 +156,11 @@ TEST_F(GrammarSpaceship, StatementsKeepSourceOrder) {
     const Grammar& g = *g_;
     EXPECT_EQ(statementKinds(ruleNamed(g, "S")), (std::vector<K>{K::Size, K::Child}));
     EXPECT_EQ(statementKinds(ruleNamed(g, "B")),
-              (std::vector<K>{K::Scale, K::Translate, K::Box, K::Child, K::Child, K::Child}));
+              (std::vector<K>{K::Scale, K::Translate, K::Primitive, K::Child, K::Child, K::Child}));
     const Rule& w = ruleNamed(g, "W");
-    EXPECT_EQ(statementKinds(w), (std::vector<K>{K::Mirror, K::Scale, K::Translate, K::Box, K::Child}));
+    EXPECT_EQ(statementKinds(w), (std::vector<K>{K::Mirror, K::Scale, K::Translate, K::Primitive, K::Child}));
     EXPECT_EQ(w.statements[0].axis, 0) << "mirror x";
+    EXPECT_EQ(w.statements[3].primitive, PrimitiveKind::Box);
     EXPECT_EQ(w.statements[4].slot, 0);
     const Rule& b = ruleNamed(g, "B");
     EXPECT_EQ(b.statements[3].slot, 0);

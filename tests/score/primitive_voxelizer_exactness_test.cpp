@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "random_primitives.hpp"
-#include "score/mesh_rows.hpp"
+#include "shape/kinds/mesh.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {

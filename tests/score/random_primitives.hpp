@@ -10,11 +10,8 @@
 #include <vector>
 
 #include "genome/random.hpp"
-#include "geometry/primitive.hpp"
-#include "score/box_rows.hpp"
-#include "score/cone_rows.hpp"
-#include "score/cylinder_rows.hpp"
-#include "score/sphere_rows.hpp"
+#include "shape/primitive.hpp"
+#include "shape/kinds.hpp"
 #include "score/volume_target.hpp"
 #include "score/voxelizer.hpp"
 

@@ -19,7 +19,7 @@ namespace {
 using namespace test;
 
 /// All vertices of a box / prism / frustum / pyramid in local coordinates, from the definitions
-/// in geometry/primitive.hpp (not from the outline code).
+/// in shape/primitive.hpp (not from the outline code).
 std::vector<glm::dvec3> allVertices(const Primitive& p) {
     std::vector<glm::dvec3> v;
     if (p.kind == PrimitiveKind::Box) {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "genome/random.hpp"
-#include "score/box_rows.hpp"
+#include "shape/box_frame.hpp"
 #include "score/voxelizer.hpp"
 
 #include "random_primitives.hpp"

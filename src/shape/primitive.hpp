@@ -1,6 +1,8 @@
-// Primitive: what a derivation emits. Every kind lives in an oriented frame: a centre, three
-// unit axes (a right- or left-handed frame; mirroring flips one) and half extents along them.
-// In the frame's local coordinates u = (x/half.x, y/half.y, z/half.z) the solids are:
+// Primitive: what a derivation emits, and Geometry, one model's primitives. Every kind lives in an
+// oriented frame: a centre, three unit axes (a right- or left-handed frame; mirroring flips one)
+// and half extents along them. Each kind is defined in its own file shape/kinds/<kind>.hpp
+// (keyword, exact solid, voxel rows, silhouette outline, tessellation; shape/kinds.hpp lists
+// them). In the frame's local coordinates u = (x/half.x, y/half.y, z/half.z) the solids are:
 //   Box       |u.x| <= 1, |u.y| <= 1, |u.z| <= 1
 //   Cylinder  u.x^2 + u.z^2 <= 1, |u.y| <= 1                (axis = the frame's y axis)
 //   Cone      u.x^2 + u.z^2 <= r(u.y)^2, |u.y| <= 1, with r(y) = (1 + taper)/2 + (taper - 1)/2 * y:
@@ -20,6 +22,7 @@
 
 namespace shapevo {
 
+/// One enumerator per kind, in the order of the kinds list (shape/kinds.hpp checks it).
 enum class PrimitiveKind : unsigned char { Box, Cylinder, Cone, Sphere, Mesh };
 inline constexpr int kPrimitiveKinds = 5;
 /// Polygon sides used wherever a round primitive must be drawn as a polyhedron (exported

@@ -1,10 +1,10 @@
-// Chords: the shared machinery of the round kinds (cylinder, cone, sphere; *_rows.hpp next to
-// this file). A round solid's inside test is written per voxel row: the row's line (fixed y, z,
+// Chords: the shared machinery of the round kinds (cylinder, cone, sphere in shape/kinds/): their
+// row test, its exact index interval, and the voxelizing loop over a round solid's rows. A round solid's inside test is written per voxel row: the row's line (fixed y, z,
 // running along the grid's x axis) is intersected with the solid in the frame's local
 // coordinates, which gives a closed interval of x offsets from the solid's centre, the chord;
 // a point is inside iff its offset x - c.x lies in the chord of its row.
 //
-// In exact arithmetic that is the definition in geometry/primitive.hpp; in doubles it differs
+// In exact arithmetic that is the definition in shape/primitive.hpp; in doubles it differs
 // from evaluating the quadric at the point only within rounding of the surface (the tests check
 // it against the textbook formula in long double). What writing it this way buys: along a row
 // the test is "lo <= x_i - c.x <= hi" with lo, hi fixed and x_i increasing in i, so the voxels
@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "score/box_rows.hpp"
+#include "shape/box_frame.hpp"
 
 namespace shapevo {
 
@@ -123,6 +123,27 @@ inline bool chordInterval(const Chord& ch, double cx, const GridSpec& grid, long
     lo = firstTrue(first, last, base + ch.lo * perUnit, [&](long i) { return grid.centre(0, i) - cx >= ch.lo; });
     hi = firstTrue(first, last, base + ch.hi * perUnit, [&](long i) { return grid.centre(0, i) - cx > ch.hi; }) - 1;
     return lo <= hi;
+}
+
+/// Voxelize a round solid (CylinderSolid, ConeSolid, SphereSolid): every voxel row of its bounding
+/// box gets its chord's exact index interval. `rows` is the voxelizer (score/voxelizer.hpp; the
+/// kinds' row interface: grid(), indexBounds(), addRow()); `counts` its VoxelCounts.
+template <class Solid, class Rows, class Counts>
+void voxelizeChords(const Solid& s, Rows& rows, Counts& counts) {
+    if (!s.valid()) return;
+    const GridSpec& grid = rows.grid();
+    const double reach[3] = {s.reach(0), s.reach(1), s.reach(2)};
+    long first[3], last[3];
+    if (!rows.indexBounds(s.f.box.c, reach, first, last)) return;
+    for (long z = first[2]; z <= last[2]; ++z) {
+        const double cz = grid.centre(2, z);
+        for (long y = first[1]; y <= last[1]; ++y) {
+            ++counts.rows;
+            long lo, hi;
+            if (chordInterval(s.chord(grid.centre(1, y), cz), s.cx(), grid, first[0], last[0], lo, hi))
+                rows.addRow(y, z, lo, hi, counts);
+        }
+    }
 }
 
 }  // namespace shapevo

@@ -1,7 +1,10 @@
-// ConeSolid: the Cone primitive, a frustum u.x^2 + u.z^2 <= r(u.y)^2, |u.y| <= 1 with
-// r(y) = (1 + taper)/2 + (taper - 1)/2 * y (radius 1 at the bottom, `taper` at the top), its
-// voxel-centre inside test and the chord of a voxel row (chord_rows.hpp explains why the test is
-// written per row and why that makes the row interval exact).
+// The Cone kind: `cone` (a pointed cone, taper 0) or `cone top EXPR` (a frustum, taper = EXPR
+// clamped to [0, 1] when derived; NaN -> 0) in a grammar. Solid: a frustum u.x^2 + u.z^2 <=
+// r(u.y)^2, |u.y| <= 1 with r(y) = (1 + taper)/2 + (taper - 1)/2 * y (radius 1 at the bottom,
+// `taper` at the top): ConeSolid, its voxel-centre inside test and the chord of a voxel row
+// (shape/chord_rows.hpp explains why the test is written per row and why that makes the row
+// interval exact). Silhouette: the kRoundSides-gon frustum, or the ring and the apex for taper 0.
+// Surface: the same frustum (kRoundSides + 1 vertices for a pointed cone).
 //
 // Along a row, with dx an offset along it: (u.x, u.z) = A dx + B and r = rho dx + sigma, so the
 // lateral surface is one quadratic f(dx) = |A dx + B|^2 - (rho dx + sigma)^2 <= 0 (set up around
@@ -10,8 +13,12 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <vector>
 
-#include "score/chord_rows.hpp"
+#include "shape/chord_rows.hpp"
+#include "shape/outline.hpp"
+#include "shape/surface.hpp"
 
 namespace shapevo {
 
@@ -98,6 +105,45 @@ struct ConeSolid {
     }
     /// The voxel-centre test: is point (x, y, z) inside the closed frustum? (Never, if not valid().)
     bool contains(double x, double y, double z) const { return valid() && chord(y, z).contains(x - cx()); }
+};
+
+struct ConeKind {
+    static constexpr PrimitiveKind kind = PrimitiveKind::Cone;
+    static constexpr std::string_view keyword = "cone";
+    /// Grammar: optional `top EXPR`, the top radius ratio (expression 0; a constant 0 without it).
+    template <class Args>
+    static void parseArguments(Args& a) {
+        a.optionalExpression("top", 0.0f);
+    }
+    template <class Args>
+    static void emit(Primitive& p, const Args& a) {
+        const float top = a.expression(0);
+        p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
+    }
+    template <class Rows, class Counts>
+    static void voxelize(const Primitive& p, const std::vector<MeshShape>*, Rows& rows, Counts& counts) {
+        voxelizeChords(ConeSolid::from(p), rows, counts);
+    }
+    /// The round two-ring fast path with the top ring scaled by the taper; else the pyramid (taper
+    /// not > 0) or the prism with its top ring scaled, as one convex piece.
+    template <class Builder>
+    static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive& p, Outline& out) {
+        if (b.addRingsFast(map, nullptr, std::clamp(double(p.taper), 0.0, 1.0), out)) return;  // (NaN: 0)
+        if (!(p.taper > 0.0f)) {
+            b.addConvex(map, b.pyramidShape(), out);
+        } else {
+            const auto& prism = b.prismShape();
+            auto& cone = b.frustumScratch();
+            const std::size_t n = prism.ringSize;
+            for (std::size_t k = 0; k < n; ++k) {
+                const glm::dvec3& v = prism.vertices[n + k];
+                const double t = std::min(double(p.taper), 1.0);
+                cone.vertices[n + k] = {v.x * t, v.y, v.z * t};
+            }
+            b.addConvex(map, cone, out);
+        }
+    }
+    static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>*) { frustumSurface(s, p.taper); }
 };
 
 }  // namespace shapevo

@@ -1,4 +1,4 @@
-// The voxel-centre inside tests are the solids of geometry/primitive.hpp: they agree with the
+// The voxel-centre inside tests are the solids of shape/primitive.hpp (shape/kinds/*.hpp): they agree with the
 // textbook formulas (evaluated in long double in the primitive's local coordinates) everywhere
 // except within 1e-9 of the surface; closed meshes cross every row an even number of times, even
 // through vertices and edges; voxel counts approach the analytic volumes; and chordInterval is
@@ -10,8 +10,8 @@
 #include <functional>
 #include <vector>
 
-#include "random_primitives.hpp"
-#include "score/mesh_rows.hpp"
+#include "../score/random_primitives.hpp"
+#include "shape/kinds/mesh.hpp"
 #include "score/voxelizer.hpp"
 
 namespace shapevo {

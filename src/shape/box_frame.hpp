@@ -1,5 +1,6 @@
-// BoxFrame: an oriented box in double precision, the voxel-centre inside test that defines
-// "covered", and the exact per-row x-interval of covered voxel centres.
+// BoxFrame: a primitive's oriented frame as a box in double precision (the Box kind's solid and
+// the frame every other kind's solid is built on), the voxel-centre inside test that defines
+// "covered" for a box, and the exact per-row x-interval of covered voxel centres of one slab.
 //
 // Exactness: along a row (fixed y, z) slab k's test is |a*(x - cx) + b| <= h with b fixed, and
 // x_i = origin + (i + 0.5) * voxel. Every step is a monotone floating-point function of i, so
@@ -10,8 +11,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "geometry/primitive.hpp"
-#include "score/volume_target.hpp"
+#include "shape/grid_spec.hpp"
+#include "shape/primitive.hpp"
 
 namespace shapevo {
 

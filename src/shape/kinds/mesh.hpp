@@ -1,5 +1,10 @@
-// MeshSolid: a Mesh primitive placed in world space, its voxel-centre inside test and the
-// crossings of voxel rows with its triangles.
+// The Mesh kind: `mesh "FILE"` in a grammar (a closed OBJ/PLY/STL mesh, read once when the grammar
+// is loaded into Grammar::meshes; the primitive refers to it by index). Solid: the closed mesh,
+// whose vertices are in the frame's unit coordinates. Voxel rows: MeshSolid below, a Mesh
+// primitive placed in world space, its voxel-centre inside test and the crossings of voxel rows
+// with its triangles. Silhouette: one piece per triangle (all triangles, front or back).
+// Surface: the mesh, vertex for vertex. A primitive whose mesh is missing draws nothing (the
+// surface throws std::out_of_range).
 //
 // The inside test (the definition): a ray from the voxel centre along +x; the centre is inside
 // iff the ray crosses an odd number of triangles. A row (fixed y, z) crosses a triangle iff the
@@ -28,14 +33,20 @@
 // Vertices are placed by the forward map c + sum_k axis_k * h_k * u_k; the other kinds project
 // onto the axes instead. The two agree for orthonormal axes, i.e. to ~1e-7 for float frames.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "mesh/mesh_shape.hpp"
-#include "score/box_rows.hpp"
-#include "score/chord_rows.hpp"
+#include "shape/box_frame.hpp"
+#include "shape/chord_rows.hpp"
+#include "shape/outline.hpp"
+#include "shape/surface.hpp"
 
 namespace shapevo {
 
@@ -181,7 +192,7 @@ private:
 /// (and x < c_0 when n is odd, which a closed mesh never gives). Calls run(lo, hi) with the
 /// index interval of each non-empty run within [first, last].
 template <class Run>
-void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long first, long last, Run run) {
+[[gnu::always_inline]] inline void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long first, long last, Run run) {
     const double base = -grid.origin[0] / grid.voxelSize - 0.5, perUnit = 1.0 / grid.voxelSize;
     for (long m = long(n) - 1; m >= 0; m -= 2) {
         const double from = m >= 1 ? c[m - 1].x : -INFINITY, to = c[m].x;
@@ -190,5 +201,122 @@ void rowRuns(const RowCrossing* c, std::size_t n, const GridSpec& grid, long fir
         if (lo <= hi) run(lo, hi);
     }
 }
+
+struct MeshKind {
+    static constexpr PrimitiveKind kind = PrimitiveKind::Mesh;
+    static constexpr std::string_view keyword = "mesh";
+    /// Grammar: a file name in quotes; the statement's slot is its index in Grammar::meshes.
+    template <class Args>
+    static void parseArguments(Args& a) {
+        a.meshFile();
+    }
+    template <class Args>
+    static void emit(Primitive& p, const Args& a) {
+        p.mesh = a.slot();
+    }
+    /// The primitive's mesh, or null if `meshes` does not hold it.
+    static const MeshShape* shapeOf(const Primitive& p, const std::vector<MeshShape>* meshes) {
+        return meshes && p.mesh < meshes->size() ? &(*meshes)[p.mesh] : nullptr;
+    }
+
+    /// The voxelizer's reusable work space for meshes (no allocation once warm).
+    struct VoxelScratch {
+        MeshSolid mesh;                       ///< the mesh being voxelized (its vertex buffer is reused)
+        std::vector<RowCrossing> crossings;   ///< its row crossings (reused), in triangle order
+        std::vector<RowCrossing> byRow;       ///< the same, bucketed by row
+        std::vector<std::uint32_t> rowEnd;    ///< per row: end of its bucket in byRow
+    };
+    template <class Rows, class Counts>
+    static void voxelize(const Primitive& p, const std::vector<MeshShape>* meshes, Rows& rows, Counts& counts) {
+        const MeshShape* shape = shapeOf(p, meshes);
+        if (!shape) return;
+        VoxelScratch& v = rows.template scratch<MeshKind>();
+        const GridSpec& grid = rows.grid();
+        if (!v.mesh.place(p, *shape)) return;
+        double c[3], reach[3];
+        for (int j = 0; j < 3; ++j) {
+            c[j] = 0.5 * (v.mesh.lo(j) + v.mesh.hi(j));
+            reach[j] = 0.5 * (v.mesh.hi(j) - v.mesh.lo(j));
+        }
+        long first[3], last[3];
+        if (!rows.indexBounds(c, reach, first, last)) return;
+        counts.rows += std::uint64_t(last[1] - first[1] + 1) * std::uint64_t(last[2] - first[2] + 1);
+        v.crossings.clear();
+        v.mesh.collectCrossings(grid, first[1], last[1], first[2], last[2], v.crossings);
+        // Bucket the crossings by row (a counting sort: the row keys are dense), then sort each
+        // row's few crossings by x.
+        const std::uint32_t ny = std::uint32_t(last[1] - first[1] + 1);
+        const std::size_t rowCount = std::size_t(ny) * std::size_t(last[2] - first[2] + 1);
+        v.rowEnd.assign(rowCount + 1, 0);
+        for (const RowCrossing& x : v.crossings) ++v.rowEnd[x.row + 1];
+        for (std::size_t r = 0; r < rowCount; ++r) v.rowEnd[r + 1] += v.rowEnd[r];  // now: where row r starts
+        v.byRow.resize(v.crossings.size());
+        for (const RowCrossing& x : v.crossings) v.byRow[v.rowEnd[x.row]++] = x;  // afterwards: where row r ends
+        // Runs may start before a row's first crossing only if it crosses an odd number of
+        // triangles (never for a closed mesh); the whole halo keeps even that case exact.
+        const long xFirst = -long(grid.nx), xLast = 2 * long(grid.nx) - 1;
+        for (std::uint32_t r = 0, begin = 0; r < rowCount; begin = v.rowEnd[r], ++r) {
+            const std::uint32_t end = v.rowEnd[r];
+            if (begin == end) continue;
+            RowCrossing* x = v.byRow.data() + begin;
+            std::sort(x, x + (end - begin));
+            const long y = first[1] + long(r % ny), z = first[2] + long(r / ny);
+            rowRuns(x, end - begin, grid, xFirst, xLast, [&](long lo, long hi) { rows.addRow(y, z, lo, hi, counts); });
+        }
+    }
+
+    /// One piece per triangle: snapped once per vertex on the fast path; a triangle with a vertex
+    /// behind the clip plane or beyond the guard band is cut and clipped on its own.
+    template <class Builder>
+    static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive& p, Outline& out) {
+        using Homogeneous = typename Builder::Homogeneous;
+        const MeshShape& mesh = *shapeOf(p, b.preparedMeshes());  // prepare() checked it
+        auto& h = b.homogeneousScratch();
+        auto& snapped = b.snappedScratch();
+        auto& fast = b.fastScratch();
+        const std::size_t n = mesh.vertices.size();
+        h.resize(n);
+        snapped.resize(n);
+        fast.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::vec3& v = mesh.vertices[i];
+            h[i] = map.apply(glm::dvec3(v.x, v.y, v.z));
+            const double x = h[i].x / h[i].w, y = h[i].y / h[i].w;
+            fast[i] = h[i].clip >= 0.0 && b.insideGuard(x, y);
+            if (fast[i]) snapped[i] = snapToFixed(x, y);
+        }
+        Homogeneous polygon[4];
+        for (const auto& tri : mesh.triangles) {
+            if (tri[0] >= n || tri[1] >= n || tri[2] >= n) continue;
+            if (fast[tri[0]] && fast[tri[1]] && fast[tri[2]]) {
+                const auto first = std::uint32_t(out.points.size());
+                for (int k = 0; k < 3; ++k) out.points.push_back(snapped[tri[k]]);
+                out.pieces.push_back({first, 3, 1, 3});
+                continue;
+            }
+            // Cut the triangle by the clip plane (Sutherland-Hodgman keeps its cyclic order).
+            std::size_t m = 0;
+            for (int k = 0; k < 3; ++k) {
+                const Homogeneous &a = h[tri[k]], &c = h[tri[(k + 1) % 3]];
+                if (a.clip >= 0.0) polygon[m++] = a;
+                if ((a.clip >= 0.0) != (c.clip >= 0.0)) {
+                    const double t = a.clip / (a.clip - c.clip);
+                    polygon[m++] = {a.x + (c.x - a.x) * t, a.y + (c.y - a.y) * t, a.w + (c.w - a.w) * t, 0.0};
+                }
+            }
+            b.addClippedPiece(polygon, m, true, out);
+        }
+    }
+
+    /// @throw std::out_of_range if `meshes` does not hold the primitive's mesh.
+    static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>* meshes) {
+        if (!meshes || p.mesh >= meshes->size())
+            throw std::out_of_range("mesh primitive refers to mesh " + std::to_string(p.mesh) + " but the model has " +
+                                    std::to_string(meshes ? meshes->size() : 0));
+        const MeshShape& m = (*meshes)[p.mesh];
+        for (const glm::vec3& v : m.vertices) s.vertex(v);
+        for (const auto& t : m.triangles) s.triangle(t[0], t[1], t[2]);
+    }
+};
 
 }  // namespace shapevo

@@ -1,0 +1,117 @@
+// The primitive kinds, listed once, and their static dispatch. Every kind is one file in
+// shape/kinds/ holding one struct K with:
+//   K::kind                                  its PrimitiveKind (the list's order is the enum's)
+//   K::keyword                               its grammar keyword
+//   K::parseArguments(args)                  reads what follows the keyword (grammar/parser.cpp:
+//                                            args.optionalExpression(word, otherwise), args.meshFile())
+//   K::emit(primitive, args)                 sets what the statement adds to the derived frame
+//                                            (geometry/derive.cpp: args.expression(i), args.slot())
+//   K::voxelize(p, meshes, rows, counts)     its exact voxel rows (score/voxelizer.hpp is `rows`)
+//   K::outline(builder, map, p, out)         its silhouette pieces (score/silhouette_outline.hpp)
+//   K::surface(surfaceBuilder, p, meshes)    its tessellation (shape/surface.hpp)
+// and optionally K::VoxelScratch (the voxelizer keeps one, rows.scratch<K>()) and K::shapeOf(p,
+// meshes) (null: the primitive refers to data it does not have, and draws nothing).
+// visitKind(kind, f) calls f(KindTag<K>{}) for the kind's struct: one compare chain per primitive
+// (or statement), inlined, so the per-row and per-span loops inside a kind are monomorphic; no
+// virtual call anywhere.
+//
+// A new kind: its file in shape/kinds/, its enumerator in shape/primitive.hpp, one line below.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "shape/kinds/box.hpp"
+#include "shape/kinds/cone.hpp"
+#include "shape/kinds/cylinder.hpp"
+#include "shape/kinds/mesh.hpp"
+#include "shape/kinds/sphere.hpp"
+#include "shape/primitive.hpp"
+
+namespace shapevo {
+
+template <class... K>
+struct KindList {
+    static constexpr std::size_t size = sizeof...(K);
+};
+
+/// The kinds, in PrimitiveKind order.
+using Kinds = KindList<BoxKind, CylinderKind, ConeKind, SphereKind, MeshKind>;
+
+template <class K>
+struct KindTag {
+    using type = K;
+};
+
+namespace detail {
+template <class... K>
+constexpr bool kindsInEnumOrder(KindList<K...>) {
+    int i = 0;
+    return ((int(K::kind) == i++) && ...);
+}
+template <class F, class K, class... Rest>
+[[gnu::always_inline]] inline decltype(auto) visitKind(PrimitiveKind k, F& f, KindList<K, Rest...>) {
+    if constexpr (sizeof...(Rest) == 0) {
+        return f(KindTag<K>{});  // the last kind: no test left
+    } else {
+        if (k == K::kind) return f(KindTag<K>{});
+        return visitKind(k, f, KindList<Rest...>{});
+    }
+}
+template <class K>
+struct VoxelScratchOf {
+    struct type {};
+};
+template <class K>
+    requires requires { typename K::VoxelScratch; }
+struct VoxelScratchOf<K> {
+    using type = typename K::VoxelScratch;
+};
+template <class List>
+struct AllVoxelScratch;
+template <class... K>
+struct AllVoxelScratch<KindList<K...>> : VoxelScratchOf<K>::type... {};
+}  // namespace detail
+
+static_assert(Kinds::size == std::size_t(kPrimitiveKinds), "one kind per PrimitiveKind");
+static_assert(detail::kindsInEnumOrder(Kinds{}), "the kinds list follows the PrimitiveKind order");
+
+/// f(KindTag<K>{}) for the kind struct K of `k`.
+template <class F>
+[[gnu::always_inline]] inline decltype(auto) visitKind(PrimitiveKind k, F&& f) {
+    return detail::visitKind(k, f, Kinds{});
+}
+
+/// The kind whose keyword is `word`: calls f(KindTag<K>{}) and returns true; false if none is.
+template <class F>
+bool visitKeyword(std::string_view word, F&& f) {
+    return [&]<class... K>(KindList<K...>) { return ((word == K::keyword ? (f(KindTag<K>{}), true) : false) || ...); }(Kinds{});
+}
+
+/// The keywords, comma separated ("box, cylinder, ..."), for error messages.
+inline std::string kindKeywords() {
+    return [&]<class... K>(KindList<K...>) {
+        std::string s;
+        ((s += (s.empty() ? "" : ", "), s += K::keyword), ...);
+        return s;
+    }(Kinds{});
+}
+
+/// Per-kind voxelizer work space: one K::VoxelScratch for each kind that declares one.
+using KindVoxelScratch = detail::AllVoxelScratch<Kinds>;
+template <class K>
+typename detail::VoxelScratchOf<K>::type& voxelScratch(KindVoxelScratch& all) {
+    return all;
+}
+
+/// False if p refers to data `meshes` does not hold (K::shapeOf; kinds without one always draw).
+inline bool hasShapeData(const Primitive& p, const std::vector<MeshShape>* meshes) {
+    return visitKind(p.kind, [&](auto tag) {
+        using K = typename decltype(tag)::type;
+        if constexpr (requires { K::shapeOf(p, meshes); }) return K::shapeOf(p, meshes) != nullptr;
+        else return true;
+    });
+}
+
+}  // namespace shapevo
