@@ -1,11 +1,14 @@
 // H5Writer: creates checkpoint HDF5 files (see hdf5_file.hpp): checksummed datasets, scalar
-// attributes, no timestamps, and a flush + close + fsync at the end.
+// attributes, no timestamps. The file is built in memory (HDF5's core driver, no backing store)
+// and written out by finish() with our own checked write and fsync: a full disk or a quota is
+// then one clean error, and libhdf5 never holds a file it cannot flush (it would crash at exit).
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <vector>
 
 #include "checkpoint/hdf5_file.hpp"
 #include "base/atomic_write.hpp"
@@ -28,7 +31,10 @@ Handle untimed(hid_t cls) {
 
 H5Writer::H5Writer(std::string path) : path_(std::move(path)) {
     silenceErrorPrinting();
-    file_ = fileHandle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    Handle fapl = plistHandle(H5Pcreate(H5P_FILE_ACCESS));
+    if (!fapl.valid() || H5Pset_fapl_core(fapl.get(), 1 << 20, /*backing_store=*/false) < 0)
+        fail("cannot set up an in-memory HDF5 file");
+    file_ = fileHandle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()));
     if (!file_.valid()) fail("cannot create HDF5 file");
 }
 
@@ -134,8 +140,27 @@ void H5Writer::finish() {
         fail(std::string("cannot write attribute ") + kAttributesChecksum);
     a = Handle();
     if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush");
+    const ssize_t size = H5Fget_file_image(file_.get(), nullptr, 0);
+    if (size <= 0) fail("cannot take the file image");
+    std::vector<char> image(static_cast<std::size_t>(size));
+    if (H5Fget_file_image(file_.get(), image.data(), image.size()) != size) fail("cannot take the file image");
     if (!file_.close()) fail("cannot close");
-    // HDF5 leaves the data in the page cache; fsync so a crash after publishing cannot lose it.
+    const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error(path_ + ": cannot create: " + std::strerror(errno));
+    std::size_t done = 0;
+    while (done < image.size()) {
+        const ssize_t n = ::write(fd, image.data() + done, image.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int err = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            throw std::runtime_error(path_ + ": cannot write (" + std::to_string(done) + " of " +
+                                     std::to_string(image.size()) + " bytes written): " + std::strerror(err));
+        }
+        done += std::size_t(n);
+    }
+    if (::close(fd) != 0) throw std::runtime_error(path_ + ": cannot close: " + std::strerror(errno));
+    // The bytes are in the page cache; fsync so a crash after publishing cannot lose them.
     syncToDisk(path_);
 }
 
