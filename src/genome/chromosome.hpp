@@ -49,6 +49,8 @@ struct Chromosome {
 /// Limits every operator respects.
 struct GenomeLimits {
     std::uint32_t maxGenes = 100;
+    /// genome.max_primitives: a derivation stops after this many primitives (geometry/derive.hpp)
+    std::uint32_t maxPrimitives = 1u << 18;
 };
 
 /// Reusable buffers for the operators, sized on first use; no allocation per gene or per call

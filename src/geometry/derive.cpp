@@ -81,10 +81,23 @@ bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
 }
 }  // namespace
 
-bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
+namespace {
+/// All 15 numbers finite and within kMaxCoordinate (NaN fails every comparison).
+bool bounded(const Primitive& p) {
+    bool ok = true;
+    for (int a = 0; a < 3; ++a) {
+        ok &= std::fabs(p.centre[a]) <= kMaxCoordinate;
+        ok &= std::fabs(p.half[a]) <= kMaxCoordinate;
+        for (int b = 0; b < 3; ++b) ok &= std::fabs(p.axes[a][b]) <= kMaxCoordinate;
+    }
+    return ok;
+}
+}  // namespace
+
+DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
     out.clear();
     out.meshes = &g.meshes;
-    if (c.empty()) return true;
+    if (c.empty()) return DeriveStatus::Complete;
     auto& stack = scratch.stack;
     auto& scopes = scratch.scopes;
     stack.clear();
@@ -98,7 +111,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
     stack.push_back({0, 0, 0, 0});
     std::size_t tasks = 0;
     while (!stack.empty()) {
-        if (++tasks > 4 * maxPrimitives + 1024) return false;  // mirrors without boxes multiply too
+        if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;  // mirrors without boxes multiply too
         const DeriveScratch::Task task = stack.back();
         stack.pop_back();
         // Every task still on the stack refers to scopes at or below this task's own one.
@@ -152,7 +165,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             }
             case StatementKind::Primitive: {
                 // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
-                if (out.primitives.size() >= maxPrimitives) return false;
+                if (out.primitives.size() >= maxPrimitives) return DeriveStatus::Truncated;
                 Primitive& p = out.primitives.emplace_back();
                 p.kind = st.primitive;
                 p.mesh = 0;
@@ -171,6 +184,11 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
                 };
                 const Arguments args{g, st, params, &s.size.x, &parentSize.x, evalStack};
                 visitKind(st.primitive, [&](auto kind) { decltype(kind)::type::emit(p, args); });
+                if (!bounded(p)) {
+                    out.primitives.pop_back();
+                    scratch.badRule = c.rule(task.gene);
+                    return DeriveStatus::NonFinite;
+                }
                 break;
             }
             case StatementKind::TerminalBegin:
@@ -201,7 +219,7 @@ bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch&
             }
         }
     }
-    return true;
+    return DeriveStatus::Complete;
 }
 
 }  // namespace shapevo

@@ -28,12 +28,28 @@ struct DeriveScratch {
     /// entries above the popped task's own scope are no longer referenced).
     std::vector<Scope> scopes;
     std::vector<float> params;
+    std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
+};
+
+/// Every number of a primitive (centre, axes, half extents) must be finite and at most this in
+/// absolute value: a model beyond a million units is a runaway expression (a division by zero,
+/// `scale 1e30`), never a model.
+inline constexpr float kMaxCoordinate = 1e6f;
+/// The default of genome.max_primitives: derivation stops after this many primitives.
+inline constexpr std::size_t kDefaultMaxPrimitives = GenomeLimits{}.maxPrimitives;
+
+enum class DeriveStatus : unsigned char {
+    Complete,   ///< the whole derivation
+    Truncated,  ///< stopped at `maxPrimitives` primitives (or 4x as many scopes): `out` holds the first ones
+    NonFinite,  ///< a primitive had a non-finite or absurd number (kMaxCoordinate); it is not in `out`,
+                ///< derivation stopped there and scratch.badRule names its rule
 };
 
 /// Derive `c` into `out` (cleared first). A mirror inside a recursion doubles the work at every
-/// level, so derivation stops after `maxPrimitives` primitives (or 4x as many scopes) and returns
-/// false; `out` then holds the primitives made so far.
-bool derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch,
-            std::size_t maxPrimitives = 1u << 18);
+/// level, so derivation stops after `maxPrimitives` primitives (or 4x as many scopes) and says
+/// Truncated; a primitive with a non-finite or absurd number stops it with NonFinite. Either way
+/// `out` holds only finite, bounded primitives.
+DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch,
+                    std::size_t maxPrimitives = kDefaultMaxPrimitives);
 
 }  // namespace shapevo

@@ -65,6 +65,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
     t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
     t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
+    t += "  \"non_finite_models\": " + std::to_string(s.nonFiniteModels) + ",\n";
+    t += "  \"truncated_models\": " + std::to_string(s.truncatedModels) + ",\n";
     if (!s.changedInputs.empty()) {
         t += "  \"changed_inputs\": [";
         for (std::size_t i = 0; i < s.changedInputs.size(); ++i) t += (i ? ", " : "") + jsonString(s.changedInputs[i]);

@@ -25,6 +25,8 @@ struct RunSummary {
     int islands = 1;   ///< MPI ranks
     double migrationSeconds = 0, checkpointSeconds = 0;  ///< slowest rank's time in each
     std::vector<std::string> changedInputs;  ///< inputs accepted with --allow-changed-inputs on resume
+    std::uint64_t nonFiniteModels = 0;  ///< evaluations with a non-finite or absurd coordinate (worst fitness)
+    std::uint64_t truncatedModels = 0;  ///< evaluations that reached genome.max_primitives
 };
 
 /// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).

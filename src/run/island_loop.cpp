@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <ostream>
 
 #include "checkpoint/checkpoint_file.hpp"
@@ -99,6 +100,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     auto elapsed = [&] { return wallBefore + std::chrono::duration<double>(Clock::now() - start).count(); };
     const bool root = mpi.rank() == 0;
     Evaluator evaluator(scene.scorer(), s.threads);
+    const Scorer::Anomalies anomaliesBefore = scene.scorer().anomalies();  // the start-up checks' models do not count
     const std::unique_ptr<SearchMethod> method = makeSearchMethod(s.search, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()));
     SearchMethod& ga = *method;
     RingMigration migration(mpi, s.migration, grammar, s.limits);
@@ -217,7 +219,9 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         packed.insert(packed.end(), c.words.begin(), c.words.end());
     }
     packed = mpi.transfer(packed, bestRank, 0);
-    std::vector<double> totals{double(ga.evaluations())};
+    const Scorer::Anomalies anomalies = scene.scorer().anomalies();
+    std::vector<double> totals{double(ga.evaluations()), double(anomalies.nonFinite - anomaliesBefore.nonFinite),
+                               double(anomalies.truncated - anomaliesBefore.truncated)};
     mpi.sum(totals);
     std::vector<double> overhead{migrationSeconds, checkpointSeconds};
     mpi.max(overhead);  // the slowest rank's share is what the run waited for
@@ -231,7 +235,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         champion.words.assign(packed.begin() + 1, packed.end());
         Geometry geometry;
         DeriveScratch scratch;
-        derive(grammar, champion, geometry, scratch);
+        derive(grammar, champion, geometry, scratch, s.limits.maxPrimitives);
         const Mesh mesh = meshOf(geometry);
         writeObj(mesh, folder + "/best.obj");
         writePly(mesh, folder + "/best.ply");
@@ -258,6 +262,15 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.threads = evaluator.threads();
         sum.islands = mpi.size();
         sum.changedInputs = options.changedInputs;
+        sum.nonFiniteModels = std::uint64_t(totals[1]);
+        sum.truncatedModels = std::uint64_t(totals[2]);
+        if (sum.nonFiniteModels > 0)
+            std::cerr << "shapevo: warning: " << sum.nonFiniteModels << " evaluation(s) made a primitive with a non-finite "
+                      << "coordinate or one beyond 1e6 and got the worst fitness (" << Scorer::kWorstFitness << ")\n";
+        if (sum.truncatedModels > 0)
+            std::cerr << "shapevo: warning: " << sum.truncatedModels << " evaluation(s) reached genome.max_primitives = "
+                      << s.limits.maxPrimitives << " and were scored on their first " << s.limits.maxPrimitives
+                      << " primitives\n";
         sum.migrationSeconds = overhead[0];
         sum.checkpointSeconds = overhead[1];
         writeSummaryJson(sum, folder + "/summary.json");

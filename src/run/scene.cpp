@@ -14,12 +14,37 @@ namespace shapevo {
 Scene::~Scene() = default;
 
 namespace {
+
+constexpr int kCheckModels = 64;
+constexpr std::uint64_t kCheckSeed = 12345;
+
+/// A grammar whose every model has a non-finite or absurd coordinate (a division by zero, the
+/// square root of a negative, `scale 1e30`) can never give a usable best: refuse it up front,
+/// naming the rule, rather than evolve to the end. The same random models as the camera check.
+void requireFiniteModels(const RunSettings& s, const Grammar& g) {
+    Rng rng(kCheckSeed);
+    Chromosome c;
+    Geometry geometry;
+    DeriveScratch scratch;
+    std::uint32_t badRule = 0;
+    for (int i = 0; i < kCheckModels; ++i) {
+        growRandomLength(g, c, rng, s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax);
+        if (derive(g, c, geometry, scratch, s.limits.maxPrimitives) != DeriveStatus::NonFinite) return;
+        badRule = scratch.badRule;
+    }
+    const Rule& r = g.rules[badRule];
+    throw InputError(g.path, "line " + std::to_string(r.where.line) + " (rule " + r.name + ")",
+                     "every one of " + std::to_string(kCheckModels) +
+                         " random models has a primitive with a non-finite coordinate or one beyond 1e6 (last seen in "
+                         "this rule); look for a division by zero, the square root of a negative number or a huge scale");
+}
+
 /// A camera that sees nothing makes every fitness equal and the search blind: refuse it. Random
 /// models of the run's initial sizes (a fixed seed, so the check is repeatable) must cover at
 /// least one pixel between them.
 void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& scorer) {
-    constexpr int kModels = 64;
-    Rng rng(12345);
+    constexpr int kModels = kCheckModels;
+    Rng rng(kCheckSeed);
     ImageScorer::Workspace ws(scorer.camera());
     Chromosome c;
     for (int i = 0; i < kModels; ++i) {
@@ -37,11 +62,13 @@ void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& s
 
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     std::unique_ptr<Scene> scene(new Scene);
+    requireFiniteModels(s, g);
     if (s.image) {
         scene->camera_ = Camera::compile(s.image->camera, s.configPath);
         scene->image_ = loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height());
         const ImageTarget& t = *scene->image_;
         auto scorer = std::make_unique<ImageScorer>(g, *scene->camera_, t, s.fitness);
+        scorer->setMaxPrimitives(s.limits.maxPrimitives);
         scene->imageScorer_ = scorer.get();
         scene->scorer_ = std::move(scorer);
         scene->hash_ = t.hash;
@@ -57,6 +84,7 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     scene->volume_ = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
     const VolumeTarget& t = *scene->volume_;
     auto scorer = std::make_unique<VolumeScorer>(g, t, s.fitness);
+    scorer->setMaxPrimitives(s.limits.maxPrimitives);
     scene->volumeScorer_ = scorer.get();
     scene->scorer_ = std::move(scorer);
     scene->hash_ = t.hash;

@@ -4,7 +4,7 @@
 namespace shapevo {
 
 void ImageScorer::modelMask(const Chromosome& c, Workspace& w, std::vector<std::uint8_t>& mask) const {
-    derive(grammar_, c, w.geometry, w.derive);
+    derive(grammar_, c, w.geometry, w.derive, maxPrimitives());  // a non-finite primitive is left out
     w.raster.clear();
     w.raster.add(w.geometry);
     w.raster.fillMask(mask);

@@ -35,7 +35,10 @@ public:
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
     double fitness(const Chromosome& c, Workspace& w, SilhouetteCounts* countsOut) const {
-        derive(grammar_, c, w.geometry, w.derive);
+        if (!deriveCounted(c, w)) {
+            if (countsOut) *countsOut = SilhouetteCounts{};
+            return kWorstFitness;
+        }
         w.raster.add(w.geometry);
         const SilhouetteCounts counts = w.raster.score(target_);
         if (countsOut) *countsOut = counts;

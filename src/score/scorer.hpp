@@ -1,7 +1,13 @@
 // Scorer: the one interface search methods see: chromosome -> fitness, a pure function.
 // Volume (score/volume_scorer.hpp) and image (score/image_scorer.hpp) targets implement it;
-// each thread brings its own workspace, made by the scorer that uses it.
+// each thread brings its own workspace, made by the scorer that uses it. A model whose
+// derivation makes a non-finite or absurd number (geometry/derive.hpp) gets kWorstFitness; one
+// that reaches the primitive limit is scored as it stands (its first maxPrimitives primitives).
+// Both are counted (anomalies()), so a run can report them; the counts are sums over
+// evaluations, the same whatever the thread count.
 #pragma once
+#include <atomic>
+#include <cstdint>
 #include <memory>
 
 #include "genome/chromosome.hpp"
@@ -19,11 +25,43 @@ struct ScoreWorkspace {
 
 class Scorer {
 public:
+    /// The fitness of a model with a non-finite or absurd coordinate: below every real fitness.
+    static constexpr double kWorstFitness = -1e30;
+
+    struct Anomalies {
+        std::uint64_t nonFinite = 0;  ///< evaluations whose model had a non-finite or absurd number
+        std::uint64_t truncated = 0;  ///< evaluations whose derivation reached the primitive limit
+    };
+
+    Scorer() = default;
+    Scorer(const Scorer&) = delete;
+    Scorer& operator=(const Scorer&) = delete;
     virtual ~Scorer() = default;
     virtual std::unique_ptr<ScoreWorkspace> makeWorkspace() const = 0;
     /// Higher is better. Must not allocate once the workspace is warm.
     virtual double fitness(const Chromosome& c, ScoreWorkspace& w) const = 0;
     virtual const Grammar& grammar() const = 0;
+
+    /// genome.max_primitives: derivation stops (Truncated) after this many primitives.
+    void setMaxPrimitives(std::size_t n) { maxPrimitives_ = n; }
+    std::size_t maxPrimitives() const { return maxPrimitives_; }
+    Anomalies anomalies() const { return {nonFinite_.load(), truncated_.load()}; }
+
+protected:
+    /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
+    bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
+        switch (derive(grammar(), c, w.geometry, w.derive, maxPrimitives_)) {
+        case DeriveStatus::Complete: return true;
+        case DeriveStatus::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return true;
+        case DeriveStatus::NonFinite: break;
+        }
+        nonFinite_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+
+private:
+    std::size_t maxPrimitives_ = kDefaultMaxPrimitives;
+    mutable std::atomic<std::uint64_t> nonFinite_{0}, truncated_{0};
 };
 
 }  // namespace shapevo

@@ -25,7 +25,10 @@ public:
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
     double fitness(const Chromosome& c, Workspace& w, VoxelCounts* countsOut) const {
-        derive(grammar_, c, w.geometry, w.derive);
+        if (!deriveCounted(c, w)) {
+            if (countsOut) *countsOut = VoxelCounts{};
+            return kWorstFitness;
+        }
         const VoxelCounts counts = w.voxelizer.score(w.geometry, target_);
         if (countsOut) *countsOut = counts;
         return volumeFitness(settings_, counts, target_.fillCount, c.genes);

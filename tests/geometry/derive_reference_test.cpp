@@ -27,20 +27,30 @@ glm::mat3 referenceRotation(int axis, float degrees) {
     }
 }
 
+/// Every number of `p` finite and within kMaxCoordinate, written plainly.
+bool referenceBounded(const Primitive& p) {
+    const float numbers[] = {p.centre.x, p.centre.y, p.centre.z, p.half.x, p.half.y, p.half.z,
+                             p.axes[0].x, p.axes[0].y, p.axes[0].z, p.axes[1].x, p.axes[1].y, p.axes[1].z,
+                             p.axes[2].x, p.axes[2].y, p.axes[2].z};
+    for (float v : numbers)
+        if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate) return false;
+    return true;
+}
+
 /// The semantics of derive, written as plainly as possible.
-bool referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitive>& out, std::size_t maxPrimitives) {
+DeriveStatus referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitive>& out, std::size_t maxPrimitives) {
     struct Task {
         std::uint32_t gene, statement;
         Scope scope, parent;
     };
     out.clear();
-    if (c.empty()) return true;
+    if (c.empty()) return DeriveStatus::Complete;
     std::vector<Task> stack{{0, 0, Scope{}, Scope{}}};
     std::vector<float> params(256);
     float evalStack[kMaxExpressionStack];
     std::size_t tasks = 0;
     while (!stack.empty()) {
-        if (++tasks > 4 * maxPrimitives + 1024) return false;
+        if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;
         const Task task = stack.back();
         stack.pop_back();
         const Rule& r = g.rules[c.rule(task.gene)];
@@ -80,7 +90,7 @@ bool referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitiv
                 break;
             }
             default: {
-                if (out.size() >= maxPrimitives) return false;
+                if (out.size() >= maxPrimitives) return DeriveStatus::Truncated;
                 Primitive p{st.primitive, 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
                 if (st.primitive == PrimitiveKind::Cone) {
                     const float top = eval(st.expr[0]);
@@ -88,12 +98,13 @@ bool referenceDerive(const Grammar& g, const Chromosome& c, std::vector<Primitiv
                 } else if (st.primitive == PrimitiveKind::Mesh) {
                     p.mesh = st.slot;
                 }
+                if (!referenceBounded(p)) return DeriveStatus::NonFinite;
                 out.push_back(p);
             }
             }
         }
     }
-    return true;
+    return DeriveStatus::Complete;
 }
 
 /// Index of the first primitive that differs in any bit of any field, or -1 if none does.
@@ -126,8 +137,8 @@ void expectSameAsReference(const Grammar& g, int chromosomes, std::uint32_t maxG
         }
         if (n % 3 == 1) alter(g, c, rng);
         if (n % 5 == 2) cut(g, c, rng, genomeScratch);
-        const bool a = derive(g, c, fast, scratch, maxPrimitives);
-        const bool b = referenceDerive(g, c, slow, maxPrimitives);
+        const DeriveStatus a = derive(g, c, fast, scratch, maxPrimitives);
+        const DeriveStatus b = referenceDerive(g, c, slow, maxPrimitives);
         ASSERT_EQ(a, b) << g.path << " chromosome " << n;
         ASSERT_EQ(firstDifference(fast.primitives, slow), -1) << g.path << " chromosome " << n << " of "
                                                                << c.genes << " genes";

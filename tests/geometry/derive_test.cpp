@@ -108,7 +108,7 @@ TEST(Derive, MirrorsInsideRecursionStopAtTheCapInsteadOfRunningAway) {
     }
     Geometry geo;
     DeriveScratch scratch;
-    EXPECT_FALSE(derive(g, c, geo, scratch, 1000));  // 2^60 boxes would never finish
+    EXPECT_EQ(derive(g, c, geo, scratch, 1000), DeriveStatus::Truncated);  // 2^60 boxes would never finish
     EXPECT_EQ(geo.primitives.size(), 1000u);
 }
 
@@ -116,7 +116,7 @@ TEST(Derive, EmptyChromosomeGivesNoGeometry) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
     Geometry geo;
     DeriveScratch scratch;
-    EXPECT_TRUE(derive(g, Chromosome{}, geo, scratch));
+    EXPECT_EQ(derive(g, Chromosome{}, geo, scratch), DeriveStatus::Complete);
     EXPECT_TRUE(geo.primitives.empty());
 }
 

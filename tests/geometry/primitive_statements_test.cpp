@@ -28,7 +28,7 @@ TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
         "kinds.grammar");
     Geometry out;
     DeriveScratch scratch;
-    ASSERT_TRUE(derive(g, rootOnly(g), out, scratch));
+    ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 6u);
     const PrimitiveKind kinds[] = {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone,
                                    PrimitiveKind::Cone, PrimitiveKind::Cone, PrimitiveKind::Sphere};
@@ -52,7 +52,7 @@ TEST(PrimitiveStatements, TerminalBlockRunsOnlyWithoutExpressedChildrenAndRestor
     Geometry out;
     Chromosome c = rootOnly(g);
     ASSERT_EQ(c.genes, 1u);
-    ASSERT_TRUE(derive(g, c, out, scratch));
+    ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 2u);  // no children: the sphere, then the box
     EXPECT_EQ(out.primitives[0].kind, PrimitiveKind::Sphere);
     EXPECT_EQ(out.primitives[0].centre, glm::vec3(0, 5, 0));
@@ -62,7 +62,7 @@ TEST(PrimitiveStatements, TerminalBlockRunsOnlyWithoutExpressedChildrenAndRestor
     Rng rng(3);
     appendGene(g, c, std::uint16_t(g.findRule("B")), 0, 0, rng);
     ASSERT_EQ(c.genes, 2u);
-    ASSERT_TRUE(derive(g, c, out, scratch));
+    ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 2u);  // a child: no sphere
     for (const Primitive& p : out.primitives) EXPECT_NE(p.kind, PrimitiveKind::Sphere);
 }
@@ -81,7 +81,7 @@ TEST(PrimitiveStatements, MeshFilesAreReadOnceRelativeToTheGrammarAndNormalized)
     EXPECT_EQ(hi, 1.0f);
     Geometry out;
     DeriveScratch scratch;
-    ASSERT_TRUE(derive(g, rootOnly(g), out, scratch));
+    ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 2u);
     EXPECT_EQ(out.primitives[1].kind, PrimitiveKind::Mesh);
     EXPECT_EQ(out.primitives[1].mesh, 0);
@@ -113,7 +113,7 @@ TEST(PrimitiveStatements, ShippedTreeAndCityGrammarsLoadAndDerive) {
             Chromosome c;
             while (c.genes < 60 && grow(g, c, rng, limits)) {
             }
-            ASSERT_TRUE(derive(g, c, out, scratch)) << name;
+            ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete) << name;
             for (const Primitive& p : out.primitives)
                 for (int j = 0; j < 3; ++j) ASSERT_TRUE(std::isfinite(p.centre[j]) && p.half[j] >= 0) << name;
         }
