@@ -53,6 +53,12 @@ bool decode(LibpngContext& ctx, png_structp png, png_infop info, std::vector<std
     png_set_read_fn(png, &ctx, readBytes);
     png_set_sig_bytes(png, 8);
     png_set_user_limits(png, kMaxPngSide, kMaxPngSide);
+    // Read past the ancillary chunks we do not use (all but tRNS) without storing them: libpng
+    // would allocate and zero the length a text or colour chunk announces (2 GB for a 45-byte
+    // file) before it finds that the file is too short.
+    static constexpr png_byte kUnused[] =
+        "bKGD\0cHRM\0eXIf\0gAMA\0hIST\0iCCP\0iTXt\0oFFs\0pCAL\0pHYs\0sBIT\0sCAL\0sPLT\0sRGB\0sTER\0tEXt\0tIME\0zTXt";
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, kUnused, int(sizeof kUnused / 5));
     png_read_info(png, info);
     png_uint_32 w = 0, h = 0;
     int depth = 0, colour = 0, interlace = 0;

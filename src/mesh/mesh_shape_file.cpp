@@ -18,7 +18,8 @@ MeshShape loadMeshShape(const std::string& path) {
         lo = glm::min(lo, v);
         hi = glm::max(hi, v);
     }
-    const glm::vec3 mid = (lo + hi) * 0.5f, halfExtent = (hi - lo) * 0.5f;
+    // halves first: (lo + hi) overflows to infinity for a mesh far from the origin
+    const glm::vec3 mid = lo * 0.5f + hi * 0.5f, halfExtent = hi * 0.5f - lo * 0.5f;
     if (!(std::max({halfExtent.x, halfExtent.y, halfExtent.z}) > 0.0f))
         throw InputError(path, "", "the mesh has no extent (all vertices are equal)");
     MeshShape s;

@@ -225,7 +225,10 @@ Mesh parsePly(std::string_view data, const std::string& path) {
                 }
                 const double count = body->read(p.countType, e.name, i);
                 const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
-                if (count < 0) throw InputError(path, body->where(e.name, i), "negative list length");
+                // A float count type may hold NaN, a fraction or 1e30: converting those to size_t is UB.
+                if (!(count >= 0 && count <= 4294967295.0 && count == std::floor(count)))
+                    throw InputError(path, body->where(e.name, i),
+                                     "list length " + numberText(count) + " is not a whole number from 0 to 4294967295");
                 if (indices && count < 3)
                     throw InputError(path, body->where(e.name, i),
                                      "face has " + std::to_string(long(count)) + " vertices, needs at least 3");

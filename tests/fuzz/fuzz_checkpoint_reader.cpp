@@ -231,8 +231,9 @@ void removeFolder() {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     static const Grammar g = loadGrammar(std::string(SHAPEVO_SOURCE_DIR) + "/grammars/spaceship.grammar");
     grammar = &g;
-    char name[] = "/tmp/fuzz_checkpoint_reader.XXXXXX";
-    if (!mkdtemp(name)) {
+    const char* tmp = std::getenv("TMPDIR");  // .ci/fuzz points it into its own work folder
+    std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz_checkpoint_reader.XXXXXX";
+    if (!mkdtemp(name.data())) {
         std::perror("mkdtemp");
         std::abort();
     }

@@ -231,5 +231,10 @@ TEST_F(PngRead, ImagesWithoutPixelsOrTooLargeAreRefused) {
     expectBadPng(dir.file("headonly.png"), "truncated");
 }
 
+TEST(PngReadRegression, AHugeAncillaryChunkIsSkippedNotAllocated) {  // found by fuzz_png_reader
+    // 45 bytes announcing a 2 GB iTXt chunk: libpng used to allocate and zero 2 GB for it.
+    expectBadPng(test::sourcePath("tests/fuzz/regressions/fuzz_png_reader/itxt_length_2gb.png"), "truncated");
+}
+
 }  // namespace
 }  // namespace shapevo

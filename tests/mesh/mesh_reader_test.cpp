@@ -9,6 +9,7 @@
 #include "cube_mesh.hpp"
 #include "base/input_error.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_shape_file.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {
@@ -311,6 +312,27 @@ TEST(RequireClosed, EdgeSharedByThreeTrianglesIsRejected) {
     Mesh cube = cubeMesh(1.0f);
     cube.triangles.push_back(cube.triangles[0]);  // duplicate face: its edges are used 3 or 4 times
     expectInputError([&] { requireClosed(cube, "fin.obj"); }, {"fin.obj", "not closed"});
+}
+
+TEST(MeshReaderErrors, PlyListLengthMustBeAWholeNumber) {  // found by fuzz_ply_reader
+    TempDir dir;
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list float int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+    for (const char* count : {"1e30", "nan", "3.5", "-1"}) {
+        const std::string path = writeFile(dir, std::string("count-") + count + ".ply", head + count + " 0 1 2\n");
+        expectInputError([&] { readMesh(path); }, {path + ":13:", "list length"});
+    }
+}
+
+TEST(MeshShapeFile, AMeshFarFromTheOriginKeepsItsShape) {  // (lo + hi) / 2 overflowed to infinity
+    TempDir dir;
+    const std::string path = writeFile(dir, "far.obj", "v 3e38 0 0\nv 3.4e38 0 0\nv 3e38 1 0\nv 3e38 0 1\n"
+                                                       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    const MeshShape shape = loadMeshShape(path);
+    float lo = 1, hi = -1;
+    for (const glm::vec3& v : shape.vertices) lo = std::min(lo, v.x), hi = std::max(hi, v.x);
+    EXPECT_EQ(lo, -1.0f);
+    EXPECT_EQ(hi, 1.0f) << "the two x values stay apart";
 }
 
 }  // namespace
