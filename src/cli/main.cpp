@@ -1,7 +1,11 @@
 // shapevo command line: run, resume, inspect, export, sample, target, evaluate. Bad input
 // (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
 // other failures exit with code 1. Under mpirun every rank runs this; only run and resume use
-// more than one rank.
+// more than one rank. Results go to stdout; errors, warnings and notices ("shapevo: ...") to
+// stderr (cli/log_router.hpp). Output file names are checked (extension, existence), and a new
+// run's memory estimate, before anything is read or created.
+#include <charconv>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -17,11 +21,15 @@
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "cli/log_router.hpp"
 #include "run/config_file.hpp"
+#include "run/island_loop.hpp"
+#include "run/memory_check.hpp"
 #include "run/model_export.hpp"
 #include "run/run_job.hpp"
 #include "run/scene.hpp"
 #include "score/vdb_target_file.hpp"
+#include "search/evaluator.hpp"
 
 namespace {
 
@@ -30,6 +38,30 @@ using namespace shapevo;
 void refuseExisting(const std::string& path) {
     if (std::filesystem::exists(path))
         throw InputError(path, "", "already exists; shapevo does not overwrite files (remove it or choose another -o)");
+}
+
+/// The seed an option gives: a whole number in [0, max], exactly (never saturated or wrapped).
+std::uint64_t parseSeed(const std::string& text, const std::string& option, std::uint64_t max) {
+    const std::string range = "[0, " + std::to_string(max) + "]";
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (text.empty() || ptr != end || (ec != std::errc() && ec != std::errc::result_out_of_range))
+        throw InputError(option, "", "expected a whole number in " + range + ", got \"" + shortened(text) + "\"");
+    if (ec == std::errc::result_out_of_range || v > max)
+        throw InputError(option, "", shortened(text) + " is out of range " + range +
+                                         (max < UINT64_MAX ? " (the largest seed a config's run.seed holds; the run's config.toml records it)" : ""));
+    return v;
+}
+
+/// MPI ranks on this machine, from the launcher's environment (Open MPI, MPICH, Slurm); 1 if unknown.
+int ranksOnThisMachine() {
+    for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "SLURM_NTASKS_PER_NODE"})
+        if (const char* v = std::getenv(name)) {
+            const int n = std::atoi(v);
+            if (n > 0) return n;
+        }
+    return 1;
 }
 
 /// What inspect and export accept (checkpoint/checkpoint_path.hpp).
@@ -49,13 +81,13 @@ int main(int argc, char** argv) {
     // run
     auto* run = app.add_subcommand("run", "Evolve a model: shapevo run CONFIG.toml");
     std::string config;
-    std::uint64_t seed = 0;
+    std::string seed;
     std::vector<std::string> sets;
     std::string out;
     bool quiet = false;
     int threads = -1;
     run->add_option("config", config, "TOML config (see configs/)")->required();
-    auto* seedOpt = run->add_option("--seed", seed, "random seed (overrides run.seed)");
+    auto* seedOpt = run->add_option("--seed", seed, "random seed, 0 to 2^63-1 (overrides run.seed; written into the run's config.toml)");
     run->add_option("--set", sets, "override a config value, e.g. --set ga.population=50 (repeatable)");
     run->add_option("--out", out, "output folder; must not exist (default runs/<name>, runs/<name>-2, ...)");
     run->add_option("--threads", threads, "threads (overrides run.threads; 0 = all cores)")->check(CLI::NonNegativeNumber);
@@ -64,14 +96,14 @@ int main(int argc, char** argv) {
     // sample
     auto* sample = app.add_subcommand("sample", "Write one random derivation of a grammar (no evolution)");
     std::string grammarPath, sampleOut, genomeOut;
-    std::uint64_t sampleSeed = 1;
+    std::string sampleSeed = "1";
     std::uint32_t minGenes = 1, maxGenes = 100;
     sample->add_option("grammar", grammarPath, "grammar file")->required();
-    sample->add_option("--seed", sampleSeed, "random seed")->capture_default_str();
+    sample->add_option("--seed", sampleSeed, "random seed, 0 to 2^64-1")->capture_default_str();
     sample->add_option("--min-genes", minGenes, "grow to at least this many genes (if the grammar allows)")->capture_default_str();
     sample->add_option("--max-genes", maxGenes, "never more genes than this")->capture_default_str();
-    sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb)")->required();
-    sample->add_option("--genome", genomeOut, "also save the chromosome (.genome) for shapevo evaluate");
+    sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb; must not exist)")->required();
+    sample->add_option("--genome", genomeOut, "also save the chromosome (a .genome file) for shapevo evaluate");
 
     // target
     auto* target = app.add_subcommand("target", "Make a volume target: closed mesh (OBJ/PLY/STL) -> OpenVDB level set");
@@ -98,6 +130,10 @@ int main(int argc, char** argv) {
     resume->add_option("run_dir", runDir, "the run folder")->required();
     auto* resumeGenOpt = resume->add_option("--generations", resumeGenerations, "new generation limit (extends a finished run)");
     resume->add_flag("-q,--quiet", resumeQuiet, "no per-generation progress lines");
+    bool allowChangedInputs = false;
+    resume->add_flag("--allow-changed-inputs", allowChangedInputs,
+                     "continue although an input file (config, grammar, mesh, target) changed since the run "
+                     "started; the change is recorded in summary.json");
 
     // inspect
     auto* inspect = app.add_subcommand("inspect", "Summarise a checkpoint: shapevo inspect RUN_DIR|CHECKPOINT|ISLAND.h5");
@@ -113,11 +149,11 @@ int main(int argc, char** argv) {
     bool exportBest = false;
     exportCmd->add_option("path", exportPath, kCheckpointPaths)->required();
     exportCmd->add_flag("--best", exportBest, "the best individual over all islands (the only choice for now)")->required();
-    exportCmd->add_option("-o,--output", exportOut, "output file; must not exist")->required();
+    exportCmd->add_option("-o,--output", exportOut, "output file (.obj, .ply, .glb, .vdb or .png); must not exist")->required();
     std::string exportFormat;
     exportCmd->add_option("--format", exportFormat,
                           "obj, ply, glb (the model), vdb (its voxels on a volume target's grid) or png (its silhouette "
-                          "over an image target); default: the output file's extension")
+                          "over an image target); must match the output file's extension")
         ->check(CLI::IsMember({"obj", "ply", "glb", "vdb", "png"}));
 
     try {
@@ -141,23 +177,39 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    LogRouter router(std::cout, std::cerr);
+    std::ostream log(&router);
     try {
         if (*run) {
+            // --seed is an override like --set, after them (it wins), so the config text the run
+            // stores (config.toml, checkpoints) holds the seed it ran with.
+            if (*seedOpt) sets.push_back("run.seed=" + std::to_string(parseSeed(seed, "--seed", INT64_MAX)));
             RunSettings s = loadConfig(config, sets);
-            if (*seedOpt) s.seed = seed;
             if (threads >= 0) s.threads = threads;
             if (!out.empty()) s.out = out;
-            runJob(mpi, s, JobOptions{quiet, {}}, std::cout);
+            if (const int used = Evaluator::usableThreads(s.threads); s.threads > used && mpi.rank() == 0)
+                std::cerr << "shapevo: warning: " << (threads >= 0 ? "--threads " : "run.threads = ") << s.threads
+                          << " is more than the " << used << " hardware thread(s) this process may use; using " << used << "\n";
+            together(mpi, [&] { requireMemoryFits(s, loadGrammar(s.grammarPath), ranksOnThisMachine(), usableMemoryBytes()); });
+            JobOptions o;
+            o.quiet = quiet;
+            runJob(mpi, s, o, log);
         } else if (*resume) {
-            JobOptions o{resumeQuiet, {}};
+            JobOptions o;
+            o.quiet = resumeQuiet;
             if (*resumeGenOpt) o.generations = resumeGenerations;
-            resumeJob(mpi, runDir, o, std::cout);
+            o.allowChangedInputs = allowChangedInputs;
+            resumeJob(mpi, runDir, o, log);
         } else if (*inspect) {
             std::cout << describeCheckpoint(resolveCheckpointPath(inspectPath), inspectVerbose);
         } else if (*exportCmd) {
+            requireOutputFormat(exportOut, kExportFormats, "-o", exportFormat);
             refuseExisting(exportOut);
             std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(exportPath)), exportFormat, exportOut) << "\n";
         } else if (*sample) {
+            const std::uint64_t sampleSeedValue = parseSeed(sampleSeed, "--seed", UINT64_MAX);
+            const std::string sampleFormat = requireOutputFormat(sampleOut, kModelFormats, "-o");
+            if (!genomeOut.empty()) requireOutputFormat(genomeOut, kGenomeFormats, "--genome");
             const Grammar g = loadGrammar(grammarPath);
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
             if (g.mandatoryGenes[g.start] > maxGenes)
@@ -166,7 +218,7 @@ int main(int argc, char** argv) {
                                                         grammarPath + " needs");
             refuseExisting(sampleOut);
             if (!genomeOut.empty()) refuseExisting(genomeOut);
-            Rng rng(sampleSeed);
+            Rng rng(sampleSeedValue);
             const GenomeLimits limits{maxGenes};
             Chromosome c;
             while (c.genes < minGenes && grow(g, c, rng, limits)) {
@@ -174,10 +226,12 @@ int main(int argc, char** argv) {
             Geometry geo;
             DeriveScratch scratch;
             derive(g, c, geo, scratch);
-            writeModelFile(geo, formatOfPath(sampleOut), sampleOut);
+            writeModelFile(geo, sampleFormat, sampleOut);
             if (!genomeOut.empty()) writeGenome(g, c, genomeOut);
             std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives -> " << sampleOut << "\n";
         } else if (*target) {
+            requireOutputFormat(vdbOut, kTargetFormats, "-o");
+            refuseExisting(vdbOut);
             const Mesh mesh = readMesh(meshPath);
             requireClosed(mesh, meshPath);
             writeTargetVdb(mesh, voxelSize, meshPath, vdbOut);
@@ -191,10 +245,15 @@ int main(int argc, char** argv) {
         }
     } catch (const SilentFailure&) {
         return 2;  // another rank's input was bad; that rank has said why
+    } catch (const RunFailure& e) {  // a fault every rank saw (a checkpoint that cannot be written)
+        if (!e.message.empty()) std::cerr << "shapevo: error: " << e.message << "\n";
+        return 1;
     } catch (const InputError& e) {
+        log.flush();
         std::cerr << "shapevo: error: " << e.what() << "\n";
         return 2;
     } catch (const std::exception& e) {
+        log.flush();
         std::cerr << "shapevo: failed" << (mpi.size() > 1 ? " on rank " + std::to_string(mpi.rank()) : "") << ": "
                   << e.what() << "\n";
         if (mpi.size() > 1) mpi.abort(1);  // the other ranks would wait for this one forever

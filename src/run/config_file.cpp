@@ -1,7 +1,10 @@
 // Config reader: toml++ parse, --set overrides, then a strict walk over known sections and keys.
+// A value that came from --set is blamed on --set, never on a line of the file; a value quoted
+// in a message is cut to 80 characters.
 #include "run/config_file.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -13,6 +16,7 @@
 
 #include "base/section_reader.hpp"
 #include "base/input_error.hpp"
+#include "run/output_folder.hpp"
 #include "search/search_methods.hpp"
 
 namespace shapevo {
@@ -34,6 +38,47 @@ public:
         throw InputError(path_, place(n), what);
     }
 
+    /// The node of `sec`.`k` ("ga", "population"), or nullptr.
+    const toml::node* find(const std::string& sec, const std::string& k) const {
+        const toml::node* t = root_.get(sec);
+        return t && t->is_table() ? t->as_table()->get(k) : nullptr;
+    }
+
+    /// A rule over several keys ("ga.elitism", "ga.population") is broken: blame --set if one of
+    /// them came from it, else the place of the last of them in the file, else `section`.
+    [[noreturn]] void failKeys(std::initializer_list<std::string_view> keys, const std::string& section,
+                               const std::string& what) const {
+        const toml::node* last = nullptr;
+        for (const std::string_view qualified : keys) {
+            const auto dot = qualified.find('.');
+            const toml::node* n = find(std::string(qualified.substr(0, dot)), std::string(qualified.substr(dot + 1)));
+            if (!n) continue;
+            if (!n->source().path) throw InputError("--set", "", what);
+            const auto& a = n->source().begin;
+            if (!last || a.line > last->source().begin.line ||
+                (a.line == last->source().begin.line && a.column > last->source().begin.column))
+                last = n;
+        }
+        if (last) throw InputError(path_, place(*last), what);
+        throw InputError(path_, section, what);
+    }
+
+    /// Run `check`, a stage's own check that throws InputError(path_, "section.key", what): give
+    /// its error the key's line, or blame --set if the key came from there.
+    template <class F>
+    void located(F&& check) const {
+        try {
+            check();
+        } catch (const InputError& e) {
+            const std::string& where = e.where();
+            const auto dot = where.find('.');
+            const toml::node* n = dot == std::string::npos ? nullptr : find(where.substr(0, dot), where.substr(dot + 1));
+            if (!n) throw;
+            if (!n->source().path) throw InputError("--set", where, e.message());
+            throw InputError(path_, place(*n), where + ": " + e.message());
+        }
+    }
+
     const toml::table* section(const std::string& name) {
         known_[name];
         const toml::node* n = root_.get(name);
@@ -52,13 +97,30 @@ public:
         double v;
         if (auto i = n->value_exact<std::int64_t>()) v = double(*i);
         else if (auto d = n->value_exact<double>()) v = *d;
-        else fail(*n, sec + "." + k + " must be a number");
+        else fail(*n, sec + "." + k + " must be a number" + got(*n));
         if constexpr (std::is_integral_v<T>) {
             if (v != std::floor(v)) fail(*n, sec + "." + k + " must be a whole number");
         }
         if (!(v >= lo && v <= hi))
             fail(*n, sec + "." + k + " = " + toml_value(*n) + " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
         out = T(v);
+    }
+    /// A whole number in [0, 2^63 - 1] (TOML's largest integer), read exactly (not through a double).
+    void wholeNumber64(const toml::table* t, const std::string& sec, const std::string& k, std::uint64_t& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return;
+        const std::string range = " is out of range [0, 9223372036854775807]";
+        if (auto i = n->value_exact<std::int64_t>()) {
+            if (*i < 0) fail(*n, sec + "." + k + " = " + std::to_string(*i) + range);
+            out = std::uint64_t(*i);
+        } else if (auto d = n->value_exact<double>()) {
+            if (*d != std::floor(*d)) fail(*n, sec + "." + k + " must be a whole number");
+            if (!(*d >= 0 && *d <= 9.007199254740992e15))  // exact as a double; write larger ones as integers
+                fail(*n, sec + "." + k + " = " + toml_value(*n) + range + " (write large seeds as integers, not floats)");
+            out = std::uint64_t(*d);
+        } else {
+            fail(*n, sec + "." + k + " must be a whole number" + got(*n));
+        }
     }
     void string(const toml::table* t, const std::string& sec, const std::string& k, std::string& out) {
         const toml::node* n = key(t, sec, k);
@@ -107,11 +169,12 @@ public:
         for (const auto& [k, v] : root_) {
             const std::string name(k.str());
             auto it = known_.find(name);
-            if (it == known_.end()) fail(v, "unknown section [" + name + "] (expected one of: " + list(known_) + ")");
+            if (it == known_.end())
+                fail(v, "unknown section [" + shortened(name) + "] (expected one of: " + list(known_) + ")");
             for (const auto& entry : *v.as_table()) {
                 const toml::key& kk = entry.first;
                 if (!it->second.count(std::string(kk.str()))) {
-                    const std::string what = "unknown key '" + std::string(kk.str()) + "' in [" + name +
+                    const std::string what = "unknown key '" + shortened(kk.str()) + "' in [" + name +
                                              "] (expected one of: " + join(it->second) + ")";
                     if (!kk.source().path) throw InputError("--set", "", what);
                     throw InputError(path_, std::to_string(kk.source().begin.line) + ":" +
@@ -130,7 +193,12 @@ private:
     static std::string toml_value(const toml::node& n) {
         std::ostringstream s;
         n.visit([&](auto&& v) { s << v; });
-        return s.str();
+        return shortened(s.str());
+    }
+    /// ", got \"text\"" for a string value (cut to 80 characters), "" otherwise.
+    static std::string got(const toml::node& n) {
+        if (const auto* str = n.as_string()) return ", got \"" + shortened(str->get()) + "\"";
+        return "";
     }
     static std::string join(const std::set<std::string>& s) {
         std::string r;
@@ -163,7 +231,7 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     }
     if (!root.contains(section)) root.insert(section, toml::table{});
     toml::table* t = root[section].as_table();
-    if (!t) throw InputError("--set", assignment, "[" + section + "] is not a table in the config");
+    if (!t) throw InputError("--set", assignment, "[" + shortened(section) + "] is not a table in the config");
     t->insert_or_assign(name, std::move(*parsed.get("v")));
 }
 
@@ -195,7 +263,7 @@ void readSearch(Reader& rd, RunSettings& r) {
     SearchSettings& s = r.search;
     rd.string(t, "search", "method", s.method);
     if (!findSearchMethod(s.method))
-        rd.fail(*t->get("method"), "search.method must be " + searchMethodNames() + ", got \"" + s.method + "\"");
+        rd.fail(*t->get("method"), "search.method must be " + searchMethodNames() + ", got \"" + shortened(s.method) + "\"");
     TomlSection section(rd, t, "search");
     for (const SearchMethodEntry& e : searchMethods()) e.readSettings(section, s);
 }
@@ -209,7 +277,7 @@ void readCamera(Reader& rd, const toml::table* t, CameraSpec& c, const std::stri
     if (projection == "perspective") c.projection = Projection::Perspective;
     else if (projection == "orthographic") c.projection = Projection::Orthographic;
     else if (projection == "shadow") c.projection = Projection::Shadow;
-    else rd.fail(*t->get("projection"), "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + projection + "\"");
+    else rd.fail(*t->get("projection"), "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + shortened(projection) + "\"");
     rd.number(t, sec, "width", c.width, 1, 16384);
     rd.number(t, sec, "height", c.height, 1, 16384);
     rd.vec3(t, sec, "eye", c.eye);
@@ -222,7 +290,7 @@ void readCamera(Reader& rd, const toml::table* t, CameraSpec& c, const std::stri
     rd.number(t, sec, "ground_y", c.groundY, -1e12, 1e12);
     rd.vec2(t, sec, "ground_min", c.groundMin);
     rd.vec2(t, sec, "ground_max", c.groundMax);
-    Camera::compile(c, path, sec);  // located errors now, not when the run starts
+    rd.located([&] { Camera::compile(c, path, sec); });  // located errors now, not when the run starts
 }
 
 }  // namespace
@@ -253,7 +321,12 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
 
     const toml::table* run = rd.section("run");
     rd.string(run, "run", "name", r.name);
-    rd.number(run, "run", "seed", r.seed, 0, 9.007199254740992e15);
+    if (const std::string problem = runNameProblem(r.name); !problem.empty())
+        rd.fail(*run->get("name"), "run.name = \"" + shortened(r.name) + "\" " + problem +
+                                       "; it names the output folder runs/<name>, so it must be a plain name: 1-" +
+                                       std::to_string(kMaxRunNameLength) +
+                                       " bytes, no '/', '\\' or control character, not starting with '.' or '-'");
+    rd.wholeNumber64(run, "run", "seed", r.seed);
     rd.number(run, "run", "threads", r.threads, 0, 4096);
     rd.string(run, "run", "out", r.out);
     rd.number(run, "run", "wall_time", r.wallTime, 0, 1e9);
@@ -265,7 +338,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
 
     const toml::table* grammar = rd.section("grammar");
     rd.string(grammar, "grammar", "file", r.grammarPath);
-    if (r.grammarPath.empty()) throw InputError(path, "", "missing [grammar] file = \"...\"");
+    if (r.grammarPath.empty()) rd.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
     r.grammarPath = resolve(r.grammarPath);
 
     const toml::table* target = rd.section("target");
@@ -286,17 +359,23 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     const toml::table* camera = rd.section("camera");
     if (!image.empty()) {
         if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))
-            throw InputError(path, "[target]", "an image target cannot be combined with fill/avoid volumes or a grid");
+            rd.failKeys({"target.image", "target.fill", "target.avoid", "target.grid_min", "target.grid_max", "target.voxel_size"},
+                        "[target]", "an image target cannot be combined with fill/avoid volumes or a grid");
         pixels.png = resolve(image);
-        pixels.rule.check(path, "target");
+        rd.located([&] { pixels.rule.check(path, "target"); });
         readCamera(rd, camera, pixels.camera, path);
         r.image = pixels;
     } else {
-        if (camera) throw InputError(path, "[camera]", "a camera is only used with an image target ([target] image = \"FILE.png\")");
+        if (camera) {
+            if (!camera->source().path) throw InputError("--set", "", "a camera is only used with an image target ([target] image = \"FILE.png\")");
+            throw InputError(path, "[camera]", "a camera is only used with an image target ([target] image = \"FILE.png\")");
+        }
         if (r.targets.empty() || r.targets.front().avoid)
-            throw InputError(path, "", "missing [target] fill = \"FILE.vdb\" (at least one fill target) or image = \"FILE.png\"");
+            rd.failKeys({"target.fill", "target.avoid"}, "",
+                        "missing [target] fill = \"FILE.vdb\" (at least one fill target) or image = \"FILE.png\"");
         if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
-            throw InputError(path, "[target]", "grid_min, grid_max and voxel_size must be given together");
+            rd.failKeys({"target.grid_min", "target.grid_max", "target.voxel_size"}, "[target]",
+                        "grid_min, grid_max and voxel_size must be given together");
         if (hasMin) r.grid = grid;
     }
 
@@ -305,7 +384,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.string(score, "score", "form", form);
     if (form == "smootherstep") r.fitness.form = VolumeFitnessSettings::Form::Smootherstep;
     else if (form == "weighted") r.fitness.form = VolumeFitnessSettings::Form::WeightedSum;
-    else rd.fail(*score->get("form"), "score.form must be \"smootherstep\" or \"weighted\", got \"" + form + "\"");
+    else rd.fail(*score->get("form"), "score.form must be \"smootherstep\" or \"weighted\", got \"" + shortened(form) + "\"");
     auto& f = r.fitness;
     constexpr double big = 1e12;
     rd.number(score, "score", "alpha", f.alpha, -big, big);
@@ -319,10 +398,11 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.number(score, "score", "overlap_weight", f.overlapWeight, -big, big);
     rd.number(score, "score", "outside_weight", f.outsideWeight, -big, big);
     if (f.lengthMax <= f.lengthOptimal)
-        throw InputError(path, "[score]", "length_max must be greater than length_optimal");
+        rd.failKeys({"score.length_optimal", "score.length_max"}, "[score]", "length_max must be greater than length_optimal");
 
     const toml::table* genome = rd.section("genome");
     rd.number(genome, "genome", "max_genes", r.limits.maxGenes, 1, 1e7);
+    rd.number(genome, "genome", "max_primitives", r.limits.maxPrimitives, 1, 1 << 26);
 
     const toml::table* ga = rd.section("ga");
     auto& g = r.ga;
@@ -337,14 +417,29 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.number(ga, "ga", "crossover_retries", g.crossoverRetries, 1, 1000);
     rd.number(ga, "ga", "initial_genes_min", g.initialGenesMin, 1, 1e7);
     rd.number(ga, "ga", "initial_genes_max", g.initialGenesMax, 1, 1e7);
-    if (g.elitism >= g.population) throw InputError(path, "[ga]", "elitism must be smaller than population");
-    if (g.tournament > g.population) throw InputError(path, "[ga]", "tournament must not exceed population");
+    const auto n = [](std::uint32_t v) { return std::to_string(v); };
+    if (g.elitism >= g.population)
+        rd.failKeys({"ga.elitism", "ga.population"}, "[ga]",
+                    "elitism must be smaller than population (ga.elitism = " + n(g.elitism) + ", ga.population = " + n(g.population) + ")");
+    if (g.tournament > g.population)
+        rd.failKeys({"ga.tournament", "ga.population"}, "[ga]",
+                    "tournament must not exceed population (ga.tournament = " + n(g.tournament) + ", ga.population = " + n(g.population) + ")");
     if (g.growWeight + g.cutWeight + g.alterWeight <= 0)
-        throw InputError(path, "[ga]", "grow, cut and alter weights must not all be 0");
-    if (g.initialGenesMin > g.initialGenesMax)
-        throw InputError(path, "[ga]", "initial_genes_min must not exceed initial_genes_max");
+        rd.failKeys({"ga.grow", "ga.cut", "ga.alter"}, "[ga]", "grow, cut and alter weights must not all be 0");
     if (g.initialGenesMin > r.limits.maxGenes)
-        throw InputError(path, "[ga]", "initial_genes_min must not exceed genome.max_genes (" + std::to_string(r.limits.maxGenes) + ")");
+        rd.failKeys({"ga.initial_genes_min", "genome.max_genes"}, "[ga]",
+                    "ga.initial_genes_min = " + n(g.initialGenesMin) + " exceeds genome.max_genes = " + n(r.limits.maxGenes) +
+                        "; no chromosome is longer than max_genes");
+    // The default initial_genes_max (40) may exceed a small max_genes (growth stops there, as
+    // before); one that is given must fit.
+    if (rd.find("ga", "initial_genes_max") && g.initialGenesMax > r.limits.maxGenes)
+        rd.failKeys({"ga.initial_genes_max", "genome.max_genes"}, "[ga]",
+                    "ga.initial_genes_max = " + n(g.initialGenesMax) + " exceeds genome.max_genes = " + n(r.limits.maxGenes) +
+                        "; no chromosome is longer than max_genes");
+    if (g.initialGenesMin > g.initialGenesMax)
+        rd.failKeys({"ga.initial_genes_min", "ga.initial_genes_max"}, "[ga]",
+                    "initial_genes_min must not exceed initial_genes_max (ga.initial_genes_min = " + n(g.initialGenesMin) +
+                        ", ga.initial_genes_max = " + n(g.initialGenesMax) + ")");
     readSearch(rd, r);
     const toml::table* migration = rd.section("migration");
     rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
@@ -352,10 +447,12 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     std::string mode = "sync";
     rd.string(migration, "migration", "mode", mode);
     if (mode != "sync" && mode != "async")
-        rd.fail(*migration->get("mode"), "migration.mode must be \"sync\" or \"async\", got \"" + mode + "\"");
+        rd.fail(*migration->get("mode"), "migration.mode must be \"sync\" or \"async\", got \"" + shortened(mode) + "\"");
     r.migration.async = mode == "async";
     if (r.migration.count > g.population - g.elitism && r.migration.interval > 0)
-        throw InputError(path, "[migration]", "count must not exceed population - elitism");
+        rd.failKeys({"migration.count", "migration.interval", "ga.population", "ga.elitism"}, "[migration]",
+                    "count must not exceed population - elitism (migration.count = " + n(r.migration.count) +
+                        ", ga.population - ga.elitism = " + n(g.population - g.elitism) + ")");
 
     const toml::table* checkpoint = rd.section("checkpoint");
     rd.number(checkpoint, "checkpoint", "interval", r.checkpoint.interval, 0, 1e9);
@@ -366,10 +463,14 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
 }
 
 RunSettings loadConfig(const std::string& path, const std::vector<std::string>& overrides) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path, "", "is a folder, not a config file (name the .toml file, e.g. configs/spaceship.toml)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot open config file");
     std::ostringstream ss;
     ss << in.rdbuf();
+    if (in.bad()) throw InputError(path, "", "cannot read config file");
     return parseConfig(ss.str(), path, overrides);
 }
 

@@ -1,6 +1,7 @@
 // Model export: mesh files, and the best model of a checkpoint in any format.
 #include "run/model_export.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -17,8 +18,29 @@
 namespace shapevo {
 
 std::string formatOfPath(const std::string& path) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    return ext.empty() ? ext : ext.substr(1);
+    std::string ext = std::filesystem::path(path).extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    for (char& c : ext)
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+    return ext;
+}
+
+std::string requireOutputFormat(const std::string& path, std::span<const std::string_view> accepted,
+                                const std::string& option, const std::string& requested) {
+    std::string list;
+    for (std::size_t i = 0; i < accepted.size(); ++i) {
+        if (i) list += i + 1 == accepted.size() ? " or " : ", ";
+        list += '.';
+        list += accepted[i];
+    }
+    const std::string takes = option + " takes a " + list + " file";
+    const std::string format = formatOfPath(path);
+    if (format.empty()) throw InputError(path, "", "has no file extension; " + takes);
+    if (std::find(accepted.begin(), accepted.end(), format) == accepted.end())
+        throw InputError(path, "", "unknown output extension '." + shortened(format) + "'; " + takes);
+    if (!requested.empty() && requested != format)
+        throw InputError(path, "", "--format " + shortened(requested) + " does not match the file's extension ." + format);
+    return format;
 }
 
 void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path) {

@@ -2,18 +2,36 @@
 // mesh (obj, ply, glb); `export` also writes what only the run's scene can make (vdb: the model's
 // voxels on a volume target's grid; png: its silhouette over an image target), loading the scene
 // from the config and grammar stored in the checkpoint, exactly as `resume` does.
+// Every command checks its output file's extension before it reads or writes anything.
 #pragma once
+#include <array>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "genome/chromosome.hpp"
-#include "geometry/primitive.hpp"
+#include "shape/primitive.hpp"
 #include "grammar/grammar.hpp"
 #include "run/settings.hpp"
 
 namespace shapevo {
 
-/// A file's format from its extension ("out/m.obj" -> "obj"; "" without one).
+/// A file's format from its extension, lower-cased ("out/m.OBJ" -> "obj"; "" without one).
 std::string formatOfPath(const std::string& path);
+
+/// What `shapevo sample -o` writes (a mesh), what `shapevo export` writes, what `shapevo target` writes.
+inline constexpr std::array<std::string_view, 3> kModelFormats{"obj", "ply", "glb"};
+inline constexpr std::array<std::string_view, 5> kExportFormats{"obj", "ply", "glb", "vdb", "png"};
+inline constexpr std::array<std::string_view, 1> kTargetFormats{"vdb"};
+/// What `shapevo sample --genome` writes.
+inline constexpr std::array<std::string_view, 1> kGenomeFormats{"genome"};
+
+/// The format of output file `path` (its extension), which must be one of `accepted`; `option`
+/// names the command's flag in the message ("-o"). A `requested` format (export's --format; ""
+/// = none) must agree with the extension. @throw InputError(path) for a path without an
+/// extension, with another one, or with one that is not the requested format.
+std::string requireOutputFormat(const std::string& path, std::span<const std::string_view> accepted,
+                                const std::string& option, const std::string& requested = "");
 
 /// Write `geometry` as a mesh in `format` (obj, ply or glb). @throw InputError(path) for another format.
 void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path);

@@ -7,6 +7,18 @@
 
 namespace shapevo {
 
+std::string runNameProblem(const std::string& name) {
+    if (name.empty()) return "is empty";
+    if (name.size() > kMaxRunNameLength)
+        return "is " + std::to_string(name.size()) + " bytes long (at most " + std::to_string(kMaxRunNameLength) + ")";
+    if (name[0] == '.' || name[0] == '-') return std::string("starts with '") + name[0] + "'";
+    for (const char c : name) {
+        if (c == '/' || c == '\\') return "contains a path separator";
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "contains a control character";
+    }
+    return "";
+}
+
 std::string claimOutputFolder(const std::string& requested, const std::string& name) {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -20,6 +32,8 @@ std::string claimOutputFolder(const std::string& requested, const std::string& n
             throw InputError(requested, "", "cannot create output folder: " + (ec ? ec.message() : "it exists"));
         return requested;
     }
+    if (const std::string problem = runNameProblem(name); !problem.empty())
+        throw InputError("run.name", "", "\"" + shortened(name) + "\" " + problem + "; it must be a plain folder name");
     fs::create_directories("runs", ec);
     for (int n = 1; n < 100000; ++n) {
         std::string candidate = "runs/";

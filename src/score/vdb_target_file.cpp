@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
 
@@ -110,30 +111,45 @@ void writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourc
 
 namespace {
 
-/// Reads the grid named "target" if there is one, else the first FloatGrid in the file.
+/// Reads the float grid named "target" if there is one, else the first float level set, else
+/// the first float grid; refuses it unless it is a non-empty level set (GRID_LEVEL_SET).
 openvdb::FloatGrid::Ptr readLevelSet(const std::string& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path, "", "cannot open VDB file: is a directory");
-    if (!std::ifstream(path, std::ios::binary)) throw InputError(path, "", "cannot open VDB file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open VDB file");
     openvdb::GridPtrVecPtr grids;
     try {
-        openvdb::io::File file(path);
-        file.open(/*delayLoad=*/false);
-        grids = file.getGrids();
-        file.close();
+        // A read past the end throws at once. (openvdb::io::File reads on with garbage instead: a
+        // file cut short "holds no grid", or a length read from nowhere allocates gigabytes.)
+        in.exceptions(std::ios::failbit | std::ios::badbit | std::ios::eofbit);
+        openvdb::io::Stream stream(in, /*delayLoad=*/false);
+        grids = stream.getGrids();
+    } catch (const std::ios_base::failure&) {
+        throw InputError(path, "", "is truncated or unreadable: the file ends inside its VDB data");
     } catch (const std::exception& e) {
-        throw InputError(path, "", std::string("not a readable VDB file (") + e.what() + ")");
+        // OpenVDB's messages about damaged files can quote megabytes of the damage: cut them.
+        throw InputError(path, "", "is truncated or unreadable: not a readable VDB file (OpenVDB: " + shortened(e.what()) + ")");
     }
+    if (!grids || grids->empty()) throw InputError(path, "", "holds no grids (expected a level set)");
     openvdb::FloatGrid::Ptr chosen;
+    auto rank = [](const openvdb::FloatGrid& f) {
+        return f.getName() == "target" ? 2 : f.getGridClass() == openvdb::GRID_LEVEL_SET ? 1 : 0;
+    };
     for (const openvdb::GridBase::Ptr& g : *grids) {
         auto f = openvdb::gridPtrCast<openvdb::FloatGrid>(g);
-        if (!f) continue;
-        if (!chosen || (f->getName() == "target" && chosen->getName() != "target")) chosen = f;
+        if (f && (!chosen || rank(*f) > rank(*chosen))) chosen = f;
     }
     if (!chosen) throw InputError(path, "", "holds no float grid (expected a level set)");
+    const std::string grid = "grid '" + shortened(chosen->getName()) + "'";
     if (chosen->getGridClass() == openvdb::GRID_FOG_VOLUME)
-        throw InputError(path, "", "grid '" + chosen->getName() + "' is a fog volume; expected a level set");
-    if (chosen->activeVoxelCount() == 0) throw InputError(path, "", "grid '" + chosen->getName() + "' is empty");
+        throw InputError(path, "", grid + " is a fog volume; expected a level set");
+    if (chosen->activeVoxelCount() == 0) throw InputError(path, "", grid + " is empty");
+    if (chosen->getGridClass() != openvdb::GRID_LEVEL_SET)
+        throw InputError(path, "", grid + " is not a level set (its grid class is '" +
+                                       openvdb::GridBase::gridClassToString(chosen->getGridClass()) +
+                                       "'); a target must be a signed-distance level set (class level set), as "
+                                       "`shapevo target` writes");
     return chosen;
 }
 

@@ -1,12 +1,19 @@
 // Evaluator: TBB parallel_for inside a task_arena limited to the configured thread count.
 #include "search/evaluator.hpp"
 
+#include <algorithm>
+
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 namespace shapevo {
 
-Evaluator::Evaluator(const Scorer& scorer, int threads)
-    : scorer_(scorer), arena_(threads > 0 ? threads : tbb::task_arena::automatic) {}
+int Evaluator::usableThreads(int requested) {
+    const int available = std::max(1, tbb::info::default_concurrency());
+    return requested > 0 && requested < available ? requested : available;
+}
+
+Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {}
 
 void Evaluator::evaluate(Population& pop, std::size_t from) {
     pop.fitness.resize(pop.size());

@@ -47,11 +47,12 @@ std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const GaSettin
     return std::make_unique<Rjmcmc>(g, s.rjmcmc, ga, limits, seed);
 }
 
+// populationCopies: GA pop_ + next_; SMC pop_ + next_; RJMCMC pop_ + proposals_ + second_ + star_.
 constexpr std::array<SearchMethodEntry, 4> kMethods{{
-    {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa},
-    {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc},
-    {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc},
-    {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc},
+    {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa, 2},
+    {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc, 2},
+    {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc, 2},
+    {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc, 4},
 }};
 
 }  // namespace
@@ -68,7 +69,9 @@ std::string searchMethodNames() {
     std::string out;
     for (std::size_t i = 0; i < kMethods.size(); ++i) {
         if (i) out += i + 1 == kMethods.size() ? " or " : ", ";
-        out += "\"" + std::string(kMethods[i].name) + "\"";
+        out += '"';
+        out += kMethods[i].name;
+        out += '"';
     }
     return out;
 }

@@ -20,6 +20,8 @@ struct SearchMethodEntry {
     void (*readSettings)(SectionReader& search, SearchSettings& s);
     std::unique_ptr<SearchMethod> (*make)(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
                                           const GenomeLimits& limits, std::uint64_t seed);
+    /// Whole populations of chromosomes the method keeps (the memory estimate, memory_estimate.hpp).
+    std::uint32_t populationCopies = 2;
 };
 
 /// The method `search.method` names (@throw std::invalid_argument if none), seeded with `seed`; `ga` gives population size and initial

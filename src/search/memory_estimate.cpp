@@ -1,0 +1,26 @@
+// The memory estimate of memory_estimate.hpp: the method table gives the copies, the grammar the
+// largest gene.
+#include "search/memory_estimate.hpp"
+
+#include <algorithm>
+
+#include "search/search_methods.hpp"
+
+namespace shapevo {
+
+MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const GaSettings& ga,
+                                    const GenomeLimits& limits) {
+    MemoryEstimate e;
+    const SearchMethodEntry* method = findSearchMethod(search.method);
+    e.copies = (method ? method->populationCopies : 2u) + 2u;  // + a checkpoint's copy and its encoding
+    for (const Rule& r : g.rules) e.largestGeneWords = std::max(e.largestGeneWords, r.geneWords());
+    const double perIndividual = double(sizeof(Chromosome) + sizeof(double)) +
+                                 double(limits.maxGenes) * 4.0 * double(e.largestGeneWords);
+    e.bytes = double(ga.population) * double(e.copies) * perIndividual;
+    e.formula = "population " + std::to_string(ga.population) + " x " + std::to_string(e.copies) + " copies x (" +
+                std::to_string(sizeof(Chromosome) + sizeof(double)) + " + max_genes " + std::to_string(limits.maxGenes) +
+                " x 4 x " + std::to_string(e.largestGeneWords) + " words of the largest gene) bytes";
+    return e;
+}
+
+}  // namespace shapevo
