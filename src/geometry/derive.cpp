@@ -82,15 +82,16 @@ bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
 }  // namespace
 
 namespace {
-/// All 15 numbers finite and within kMaxCoordinate (NaN fails every comparison).
+/// Centre and half extents finite and within kMaxCoordinate (NaN fails every comparison). The
+/// axes need no test: they are products of rotations by finite angles (Rotate refuses others)
+/// and sign flips, so every entry stays within [-1, 1] up to rounding.
 bool bounded(const Primitive& p) {
-    bool ok = true;
-    for (int a = 0; a < 3; ++a) {
-        ok &= std::fabs(p.centre[a]) <= kMaxCoordinate;
-        ok &= std::fabs(p.half[a]) <= kMaxCoordinate;
-        for (int b = 0; b < 3; ++b) ok &= std::fabs(p.axes[a][b]) <= kMaxCoordinate;
-    }
-    return ok;
+    // Six independent comparisons, combined without branches (NaN fails every comparison).
+    const bool centre = (std::fabs(p.centre.x) <= kMaxCoordinate) & (std::fabs(p.centre.y) <= kMaxCoordinate) &
+                        (std::fabs(p.centre.z) <= kMaxCoordinate);
+    const bool half = (std::fabs(p.half.x) <= kMaxCoordinate) & (std::fabs(p.half.y) <= kMaxCoordinate) &
+                      (std::fabs(p.half.z) <= kMaxCoordinate);
+    return centre & half;
 }
 }  // namespace
 
@@ -150,10 +151,16 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 stored = UINT32_MAX;
                 break;
             }
-            case StatementKind::Rotate:
-                s.axes = multiply(s.axes, axisRotation(st.axis, eval(st.expr[0])));
+            case StatementKind::Rotate: {
+                const float degrees = eval(st.expr[0]);
+                if (!std::isfinite(degrees)) [[unlikely]] {
+                    scratch.badRule = c.rule(task.gene);
+                    return DeriveStatus::NonFinite;
+                }
+                s.axes = multiply(s.axes, axisRotation(st.axis, degrees));
                 stored = UINT32_MAX;
                 break;
+            }
             case StatementKind::Mirror: {
                 Scope mirrored = s;
                 mirrored.axes[st.axis] = -mirrored.axes[st.axis];

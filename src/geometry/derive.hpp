@@ -31,9 +31,9 @@ struct DeriveScratch {
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
 };
 
-/// Every number of a primitive (centre, axes, half extents) must be finite and at most this in
-/// absolute value: a model beyond a million units is a runaway expression (a division by zero,
-/// `scale 1e30`), never a model.
+/// Every number of a primitive (centre, half extents; its axes follow from finite rotation
+/// angles) must be finite and at most this in absolute value: a model beyond a million units is
+/// a runaway expression (a division by zero, `scale 1e30`), never a model.
 inline constexpr float kMaxCoordinate = 1e6f;
 /// The default of genome.max_primitives: derivation stops after this many primitives.
 inline constexpr std::size_t kDefaultMaxPrimitives = GenomeLimits{}.maxPrimitives;
@@ -41,8 +41,9 @@ inline constexpr std::size_t kDefaultMaxPrimitives = GenomeLimits{}.maxPrimitive
 enum class DeriveStatus : unsigned char {
     Complete,   ///< the whole derivation
     Truncated,  ///< stopped at `maxPrimitives` primitives (or 4x as many scopes): `out` holds the first ones
-    NonFinite,  ///< a primitive had a non-finite or absurd number (kMaxCoordinate); it is not in `out`,
-                ///< derivation stopped there and scratch.badRule names its rule
+    NonFinite,  ///< a primitive had a non-finite or absurd number (kMaxCoordinate), or a rotation a
+                ///< non-finite angle; that primitive is not in `out`, derivation stopped there and
+                ///< scratch.badRule names its rule
 };
 
 /// Derive `c` into `out` (cleared first). A mirror inside a recursion doubles the work at every

@@ -27,7 +27,8 @@ glm::mat3 referenceRotation(int axis, float degrees) {
     }
 }
 
-/// Every number of `p` finite and within kMaxCoordinate, written plainly.
+/// Every number of `p` finite and within kMaxCoordinate (axes too: with finite rotation angles
+/// they always are), written plainly.
 bool referenceBounded(const Primitive& p) {
     const float numbers[] = {p.centre.x, p.centre.y, p.centre.z, p.half.x, p.half.y, p.half.z,
                              p.axes[0].x, p.axes[0].y, p.axes[0].z, p.axes[1].x, p.axes[1].y, p.axes[1].z,
@@ -66,7 +67,12 @@ DeriveStatus referenceDerive(const Grammar& g, const Chromosome& c, std::vector<
             case StatementKind::Scale: s.size *= vec(); break;
             case StatementKind::Size: s.size = vec(); break;
             case StatementKind::Translate: s.origin += s.axes * vec(); break;
-            case StatementKind::Rotate: s.axes = s.axes * referenceRotation(st.axis, eval(st.expr[0])); break;
+            case StatementKind::Rotate: {
+                const float degrees = eval(st.expr[0]);
+                if (!std::isfinite(degrees)) return DeriveStatus::NonFinite;  // axes would not be finite
+                s.axes = s.axes * referenceRotation(st.axis, degrees);
+                break;
+            }
             case StatementKind::Mirror: {
                 Task mirrored{task.gene, i + 1, s, task.parent};
                 mirrored.scope.axes[st.axis] = -mirrored.scope.axes[st.axis];

@@ -42,6 +42,15 @@ TEST(NonFinite, DivisionByZeroSqrtOfANegativeAndHugeScalesStopTheDerivationNamin
     }
 }
 
+TEST(NonFinite, ANonFiniteRotationAngleStopsTheDerivation) {
+    const Grammar g = parseGrammar("start A\nrule A {\n  box\n  child B\n}\nrule B {\n  rotate y (0 / 0)\n  box\n}\n", "turn.grammar");
+    Geometry out;
+    DeriveScratch scratch;
+    EXPECT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::NonFinite);
+    EXPECT_EQ(g.rules[scratch.badRule].name, "B");
+    EXPECT_EQ(out.primitives.size(), 1u);
+}
+
 TEST(NonFinite, ANearlyAbsurdScaleIsStillAModel) {
     const Grammar g = withChildScale("(1, 1, 9e5)");
     Geometry out;
