@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <regex>
 
 #include "../test_support.hpp"
 
@@ -21,14 +20,7 @@ using test::writeFile;
 const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set ga.generations=8 -q";
 
 /// A config for `grammar` (written next to it) with the spaceship's target.
-std::string configFor(const TempDir& dir, const std::string& grammar) {
-    writeFile(dir.file("g.grammar"), grammar);
-    std::string cfg = readFile(sourcePath("configs/spaceship.toml"));
-    cfg = std::regex_replace(cfg, std::regex("\"\\.\\./grammars/spaceship.grammar\""), "\"g.grammar\"");
-    cfg = std::regex_replace(cfg, std::regex("\"\\.\\./targets/"), "\"" + sourcePath("targets/"));
-    writeFile(dir.file("g.toml"), cfg);
-    return dir.file("g.toml");
-}
+std::string configFor(const TempDir& dir, const std::string& grammar) { return test::configWithGrammar(dir, grammar); }
 
 TEST(FiniteGeometry, SometimesNonFiniteModelsEvolveAreCountedAndNeverExported) {
     TempDir dir;

@@ -11,7 +11,6 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <thread>
 
 #include "../test_support.hpp"
@@ -130,14 +129,9 @@ std::string meshRun(const TempDir& dir) {
     std::string grammar = readFile(sourcePath("grammars/spaceship.grammar"));
     const auto body = grammar.find("  box\n");
     grammar.replace(body, 6, "  mesh \"part.obj\"\n");
-    writeFile(dir.file("ship.grammar"), grammar);
     writeFile(dir.file("part.obj"), "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
                                     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n");
-    std::string cfg = readFile(config());
-    cfg = std::regex_replace(cfg, std::regex("\"\\.\\./grammars/spaceship.grammar\""), "\"ship.grammar\"");
-    cfg = std::regex_replace(cfg, std::regex("\"\\.\\./targets/"), "\"" + sourcePath("targets/"));
-    writeFile(dir.file("ship.toml"), cfg);
-    return dir.file("ship.toml");
+    return test::configWithGrammar(dir, grammar, "ship");
 }
 
 TEST(RunFolder, AChangedMeshIsRefusedByNameUnlessAllowedAndThenRecorded) {
