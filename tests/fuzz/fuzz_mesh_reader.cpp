@@ -26,6 +26,7 @@
 #include "mesh/mesh_formats.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_shape_file.hpp"
+#include "scratch_folder.hpp"
 
 #ifndef SHAPEVO_FUZZ_MESH_FORMAT
 #error "define SHAPEVO_FUZZ_MESH_FORMAT (0 OBJ, 1 PLY, 2 STL)"
@@ -85,22 +86,10 @@ void checkShape(std::string_view data, const Mesh& m) {
         for (int a = 0; a < 3; ++a) CHECK(v[a] >= -1.0f && v[a] <= 1.0f);
 }
 
-void removeFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(folder, ec);
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    const char* tmp = std::getenv("TMPDIR");  // .ci/fuzz points it into its own work folder
-    std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz_mesh_reader.XXXXXX";
-    if (!mkdtemp(name.data())) {
-        std::perror("mkdtemp");
-        std::abort();
-    }
-    folder = name;
-    std::atexit(removeFolder);
+    folder = shapevo::fuzz::scratchFolder("fuzz_mesh_reader");
     return 0;
 }
 

@@ -25,6 +25,7 @@
 
 #include "base/input_error.hpp"
 #include "image/png_image.hpp"
+#include "scratch_folder.hpp"
 
 namespace {
 
@@ -86,23 +87,11 @@ bool tooLarge(const std::vector<std::uint8_t>& b) {
     return w <= std::uint64_t(kMaxPngSide) && h <= std::uint64_t(kMaxPngSide) && w * h > kMaxFuzzPixels;
 }
 
-void removeFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(folder, ec);
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    const char* tmp = std::getenv("TMPDIR");  // .ci/fuzz points it into its own work folder
-    std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz_png_reader.XXXXXX";
-    if (!mkdtemp(name.data())) {
-        std::perror("mkdtemp");
-        std::abort();
-    }
-    folder = name;
+    folder = shapevo::fuzz::scratchFolder("fuzz_png_reader");
     file = folder + "/fuzz.png";
-    std::atexit(removeFolder);
     return 0;
 }
 
