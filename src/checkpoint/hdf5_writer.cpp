@@ -1,11 +1,7 @@
 // H5Writer: creates checkpoint HDF5 files (see hdf5_file.hpp): checksummed datasets, scalar
 // attributes, no timestamps. The file is built in memory (HDF5's core driver, no backing store)
-// and written out by finish() with our own checked write and fsync: a full disk or a quota is
-// then one clean error, and libhdf5 never holds a file it cannot flush (it would crash at exit).
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
+// and written out by finish() through base/atomic_write.hpp: a full disk or a quota is then one
+// clean error, and libhdf5 never holds a file it cannot flush (it would crash at exit).
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -145,23 +141,8 @@ void H5Writer::finish() {
     std::vector<char> image(static_cast<std::size_t>(size));
     if (H5Fget_file_image(file_.get(), image.data(), image.size()) != size) fail("cannot take the file image");
     if (!file_.close()) fail("cannot close");
-    const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error(path_ + ": cannot create: " + std::strerror(errno));
-    std::size_t done = 0;
-    while (done < image.size()) {
-        const ssize_t n = ::write(fd, image.data() + done, image.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            const int err = n < 0 ? errno : ENOSPC;
-            ::close(fd);
-            throw std::runtime_error(path_ + ": cannot write (" + std::to_string(done) + " of " +
-                                     std::to_string(image.size()) + " bytes written): " + std::strerror(err));
-        }
-        done += std::size_t(n);
-    }
-    if (::close(fd) != 0) throw std::runtime_error(path_ + ": cannot close: " + std::strerror(errno));
-    // The bytes are in the page cache; fsync so a crash after publishing cannot lose them.
-    syncToDisk(path_);
+    // The one atomic writer (temporary file, checked write, fsync, rename, fsync of the folder).
+    writeStreamAtomically(path_, [&](std::ostream& out) { out.write(image.data(), std::streamsize(image.size())); });
 }
 
 }  // namespace shapevo::h5
