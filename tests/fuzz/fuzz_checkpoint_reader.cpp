@@ -1,15 +1,21 @@
 // libFuzzer target: the checkpoint reader. An InputError is the expected way to reject input;
 // any other exception, a sanitizer report, or a broken invariant of an accepted island is a crash.
 //
-// Two modes, chosen by the first input byte:
-//  even  "files": [mode][u16 LE manifest length M][u32 LE run.h5 length R][M bytes MANIFEST]
+// Three modes, chosen by the first input byte (mod 4):
+//  0     "files": [mode][u16 LE manifest length M][u32 LE run.h5 length R][M bytes MANIFEST]
 //        [R bytes run.h5][rest: island-0000.h5]. The three files are written into a temporary
 //        checkpoint folder and verifyCheckpoint runs; only if it passes do readRunMetadata,
 //        readIslandFile and describeCheckpoint run. This fuzzes the MANIFEST parser and the
 //        size/hash gate. libhdf5's own file-format parser is NOT fuzzed here: it is protected by
 //        that gate (no byte reaches H5Fopen before its size and XXH3-64 hash match the MANIFEST,
 //        which only our writer produces), and fuzzing it would be fuzzing libhdf5, not shapevo.
-//  odd   "decoder": [mode][i32 rank][u32 generation][u64 evaluations][u64 individuals]
+//  2     "attributes": [mode][u8 file: even run.h5, odd island-0000.h5][u8 attribute index][rest:
+//        the attribute's new bytes, repeated to its size]. A valid checkpoint is written, one
+//        root attribute of one file is overwritten through libhdf5 (so the file stays valid
+//        HDF5), and the MANIFEST is rebuilt to match, so the change passes the size/hash gate:
+//        the reader must then refuse the file (the attribute checksum, or the schema check)
+//        whenever the bytes changed, and accept it when they did not.
+//  1, 3  "decoder": [mode][i32 rank][u32 generation][u64 evaluations][u64 individuals]
 //        [5 x u32 LE lengths of genes, offsets, gene_counts, fitness, rng][those bytes][rest:
 //        curve], fed straight to decodeIsland, the HDF5-free part of readIslandFile that
 //        validates shapes, offsets, every chromosome (spaceship grammar) and values. So the
@@ -31,6 +37,9 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include <hdf5.h>
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/island_codec.hpp"
@@ -148,6 +157,49 @@ void fuzzFiles(Input in) {
     }
 }
 
+// --- attributes mode -------------------------------------------------------------------------
+
+std::vector<std::uint8_t> baseRun, baseIsland;  // a valid checkpoint's two files
+
+void fuzzAttributes(Input in) {
+    const bool island = in.number<std::uint8_t>() % 2 == 1;
+    const unsigned index = in.number<std::uint8_t>();
+    const std::span<const std::uint8_t> value = in.bytes(in.left);
+    writeBytes(folder + "/run.h5", baseRun);
+    writeBytes(folder + "/island-0000.h5", baseIsland);
+    const std::string path = folder + (island ? "/island-0000.h5" : "/run.h5");
+    bool changed = false;
+    {
+        const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        CHECK(f >= 0);
+        H5O_info_t info;
+        CHECK(H5Oget_info2(f, &info, H5O_INFO_NUM_ATTRS) >= 0 && info.num_attrs > 0);
+        const hid_t a = H5Aopen_by_idx(f, ".", H5_INDEX_NAME, H5_ITER_INC, hsize_t(index % info.num_attrs), H5P_DEFAULT,
+                                       H5P_DEFAULT);
+        CHECK(a >= 0);
+        const hid_t type = H5Aget_type(a);
+        const std::size_t size = H5Tget_size(type);
+        std::vector<std::uint8_t> old(size), now(size, 0);
+        CHECK(H5Aread(a, type, old.data()) >= 0);
+        for (std::size_t i = 0; i < size && !value.empty(); ++i) now[i] = value[i % value.size()];
+        changed = now != old;
+        CHECK(H5Awrite(a, type, now.data()) >= 0);
+        H5Tclose(type);
+        H5Aclose(a);
+        CHECK(H5Fclose(f) >= 0);
+    }
+    writeManifest(folder, {"run.h5", "island-0000.h5"});
+    CHECK(verifyCheckpoint(folder).empty());
+    bool refused = false;
+    try {
+        if (island) readIslandFile(path, *grammar, kLimits);
+        else readRunMetadata(path);
+    } catch (const InputError&) {
+        refused = true;
+    }
+    CHECK(refused == changed);  // an altered attribute is never accepted; an unaltered file always is
+}
+
 // --- seeds -----------------------------------------------------------------------------------
 
 void appendLE(std::vector<std::uint8_t>& out, const void* v, std::size_t n) {
@@ -217,8 +269,11 @@ void writeSeeds(const std::string& dir) {
         for (const auto* part : {&b.genes, &b.offsets, &b.geneCounts, &b.fitness, &b.rng, &b.curve})
             dec.insert(dec.end(), part->begin(), part->end());
         writeBytes(dir + "/decoder-" + std::to_string(seed), dec);
+
+        const std::uint8_t attributes[] = {2, std::uint8_t(seed), std::uint8_t(3 * seed + 1), 0x5a, 0x00, 0x01};
+        writeBytes(dir + "/attributes-" + std::to_string(seed), attributes);
     }
-    std::printf("wrote 8 seeds to %s\n", dir.c_str());
+    std::printf("wrote 12 seeds to %s\n", dir.c_str());
 }
 
 void removeFolder() {
@@ -239,6 +294,29 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     }
     folder = name;
     std::atexit(removeFolder);
+    {  // the attributes mode's valid checkpoint: one island of two random chromosomes
+        Rng rng(7);
+        IslandState s;
+        s.runId = "0123456789abcdef0123456789abcdef";
+        s.generation = 3;
+        for (int i = 0; i < 2; ++i) {
+            Chromosome c;
+            while (c.genes < 4 && grow(*grammar, c, rng, kLimits)) {
+            }
+            s.population.individuals.push_back(c);
+            s.population.fitness.push_back(0.25 * i);
+        }
+        s.rng = rng.state();
+        RunMetadata m;
+        m.runId = s.runId;
+        m.generation = s.generation;
+        m.grammarText = grammar->source;
+        m.grammarPath = "spaceship.grammar";
+        writeIslandFile(folder + "/island-0000.h5", s);
+        writeRunMetadata(folder + "/run.h5", m);
+        baseIsland = readAll(folder + "/island-0000.h5");
+        baseRun = readAll(folder + "/run.h5");
+    }
     if (const char* seeds = std::getenv("SHAPEVO_FUZZ_WRITE_SEEDS")) {
         writeSeeds(seeds);
         std::exit(0);
@@ -249,9 +327,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     Input in{data + 1, size - 1};
-    if (data[0] % 2 == 0)
-        fuzzFiles(in);
-    else
-        fuzzDecoder(in);
+    switch (data[0] % 4) {
+    case 0: fuzzFiles(in); break;
+    case 2: fuzzAttributes(in); break;
+    default: fuzzDecoder(in); break;
+    }
     return 0;
 }
