@@ -1,4 +1,4 @@
-// loadMeshShape: io/mesh_reader does the reading and the closedness check; this file normalizes.
+// loadMeshShape: mesh/mesh_reader does the reading and the closedness check; this file normalizes.
 #include "mesh/mesh_shape_file.hpp"
 
 #include <algorithm>
