@@ -21,8 +21,9 @@ namespace {
 
 std::string temporaryPath(const fs::path& out) {
     static std::atomic<unsigned> counter{0};
-    const std::string name = "." + out.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                             std::to_string(counter++);
+    std::string name(1, '.');  // built step by step: GCC 12 warns (-Wrestrict) on "." + string
+    name += out.filename().string();
+    name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     return (out.parent_path() / name).string();
 }
 

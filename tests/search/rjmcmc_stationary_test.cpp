@@ -109,8 +109,9 @@ TEST_P(RjmcmcStationary, VisitFrequenciesMatchTheTemperedPosterior) {
             ASSERT_DOUBLE_EQ(mcmc.population().fitness[c], fitnessOf(decode(g, x)));
             visits[c][std::size_t(decode(g, x).index())] += 1;
         }
-        if (i % 5000 == 0)
+        if (i % 5000 == 0) {
             for (const Chromosome& x : mcmc.population().individuals) ASSERT_EQ(validateChromosome(g, x, limits), "");
+        }
     }
     for (std::uint32_t c = 0; c < k.chains; ++c) {
         const std::vector<double> exact = exactTarget(mcmc.temperature(c), k.maxGenes);
@@ -121,8 +122,12 @@ TEST_P(RjmcmcStationary, VisitFrequenciesMatchTheTemperedPosterior) {
     const auto& n = mcmc.counters();
     EXPECT_GT(n.jumpsAccepted, 1000u);
     EXPECT_GT(n.diffusionsAccepted, 1000u);
-    if (k.delayedRejection) EXPECT_GT(n.secondStagesAccepted, 1000u) << n.secondStages;
-    if (k.chains > 1) EXPECT_GT(n.swapsAccepted, 100u);
+    if (k.delayedRejection) {
+        EXPECT_GT(n.secondStagesAccepted, 1000u) << n.secondStages;
+    }
+    if (k.chains > 1) {
+        EXPECT_GT(n.swapsAccepted, 100u);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, RjmcmcStationary,

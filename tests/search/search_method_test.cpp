@@ -136,7 +136,9 @@ TEST(SearchMethods, FactoryBuildsTheNamedMethodAndEveryOneImproves) {
         while (m->generation() < 25) m->step(evaluator);
         EXPECT_GT(m->stats().best, first);
         EXPECT_LE(m->evaluations(), 25u * 30u) << "at most one evaluation per individual and generation";
-        if (method.name == "rjmcmc") EXPECT_GE(m->evaluations(), 25u * 30u * 3 / 4);
+        if (method.name == "rjmcmc") {
+            EXPECT_GE(m->evaluations(), 25u * 30u * 3 / 4);
+        }
         for (const Chromosome& c : m->population().individuals) ASSERT_EQ(validateChromosome(fx.grammar, c, limits), "");
     }
 }
