@@ -133,7 +133,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
             skip("cannot be read");
             continue;
         }
-        if (meta.runId != runId) {  // the same on every rank: each read the same verified run.h5
+        if (!mpi.allTrue(meta.runId == runId)) {  // agreed, even if a rank's file system showed another run.h5
             skip("belongs to another run (run id " + meta.runId + ", seed " + std::to_string(meta.seed) +
                  "), not to this folder's run " + runId + "; it is left untouched");
             continue;
