@@ -12,20 +12,25 @@ namespace shapevo::fuzz {
 
 /// Makes the folder `$TMPDIR/<prefix>.XXXXXX` (aborting if it cannot) and returns its path.
 inline const std::string& scratchFolder(const char* prefix) {
-    static const std::string folder = [prefix] {
+    // Never destroyed: the exit handler below runs after function-local statics are gone.
+    static const std::string* const folder = [prefix] {
         const char* tmp = std::getenv("TMPDIR");
-        std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/" + prefix + ".XXXXXX";
-        if (!mkdtemp(name.data())) {
+        auto* name = new std::string(std::string(tmp && *tmp ? tmp : "/tmp") + "/" + prefix + ".XXXXXX");
+        if (!mkdtemp(name->data())) {
             std::perror("mkdtemp");
             std::abort();
         }
-        std::atexit([] {
-            std::error_code ec;
-            std::filesystem::remove_all(scratchFolder(""), ec);
-        });
         return name;
     }();
-    return folder;
+    static const bool removeAtExit = [] {
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(*folder, ec);
+        });
+        return true;
+    }();
+    (void)removeAtExit;
+    return *folder;
 }
 
 }  // namespace shapevo::fuzz
