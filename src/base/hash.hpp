@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -16,6 +17,16 @@ namespace shapevo {
 /// XXH3-64 of `bytes` bytes at `data` (data may be null when bytes == 0).
 std::uint64_t hash64(const void* data, std::size_t bytes);
 inline std::uint64_t hash64(std::string_view s) { return hash64(s.data(), s.size()); }
+
+/// A hash as 16 lowercase hex digits, as MANIFEST lines and `xxhsum -H3` show it.
+std::string hashHex(std::uint64_t hash);
+
+/// A file's size and hash64 of its bytes, read in blocks; ok = false if it could not be read.
+struct FileHash {
+    std::uint64_t size = 0, hash = 0;
+    bool ok = false;
+};
+FileHash hashFile(const std::string& path);
 
 /// The same hash over a stream of pieces: Hasher h; h.add(p, n); ...; h.digest() equals
 /// hash64 of the concatenated pieces.

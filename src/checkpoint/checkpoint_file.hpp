@@ -61,6 +61,10 @@ std::vector<ManifestEntry> readManifest(const std::string& folder);
 /// only: no file reaches libhdf5 before it has passed this check.
 std::string verifyCheckpoint(const std::string& folder);
 
+/// True if `folder`'s MANIFEST is valid and lists `name` with the size and hash the file has now
+/// (only that file is read).
+bool listedFileIsIntact(const std::string& folder, const std::string& name);
+
 /// Published checkpoint folders of a run (full paths of folders named checkpoint-NNNNNN, six or
 /// more digits), newest (highest generation) first. Empty if `runDir` does not exist.
 std::vector<std::string> listCheckpoints(const std::string& runDir);

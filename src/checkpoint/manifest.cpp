@@ -40,34 +40,6 @@ bool plainName(const std::string& name) {
     return true;
 }
 
-/// Size and XXH3-64 of a file's bytes, read in blocks.
-struct FileDigest {
-    std::uint64_t size = 0, hash = 0;
-    bool ok = false;
-};
-FileDigest digest(const fs::path& path) {
-    FileDigest d;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return d;
-    Hasher hasher;
-    std::vector<char> block(1 << 16);
-    while (in) {
-        in.read(block.data(), std::streamsize(block.size()));
-        const auto n = std::size_t(in.gcount());
-        hasher.add(block.data(), n);
-        d.size += n;
-    }
-    d.ok = in.eof();
-    d.hash = hasher.digest();
-    return d;
-}
-
-std::string hex16(std::uint64_t v) {
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-    return buf;
-}
-
 /// A size: decimal digits, no sign, no leading zeros, fits in u64.
 bool parseDecimal(const std::string& s, std::uint64_t& out) {
     if (s.empty() || s.size() > 20 || (s.size() > 1 && s[0] == '0')) return false;
@@ -100,9 +72,9 @@ void writeManifest(const std::string& folder, const std::vector<std::string>& fi
     std::string text;
     for (const std::string& name : files) {
         if (!plainName(name)) throw std::runtime_error(folder + ": not a plain file name for MANIFEST: \"" + name + "\"");
-        const FileDigest d = digest(fs::path(folder) / name);
+        const FileHash d = hashFile((fs::path(folder) / name).string());
         if (!d.ok) throw std::runtime_error(folder + "/" + name + ": cannot read to write MANIFEST");
-        text += name + " " + std::to_string(d.size) + " " + hex16(d.hash) + "\n";
+        text += name + " " + std::to_string(d.size) + " " + hashHex(d.hash) + "\n";
     }
     text += "end\n";
     writeStreamAtomically(folder + "/" + kManifest, [&](std::ostream& out) { out.write(text.data(), std::streamsize(text.size())); });
@@ -179,6 +151,35 @@ std::vector<ManifestEntry> readManifest(const std::string& folder) {
     }
 }
 
+namespace {
+/// Empty if the file `e` names in `folder` has the listed size and hash, else why not.
+std::string verifyListed(const std::string& folder, const ManifestEntry& e) {
+    const fs::path path = fs::path(folder) / e.name;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return e.name + ": missing";
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) return e.name + ": cannot read its size";
+    if (size != e.size)
+        return e.name + ": " + std::to_string(size) + " bytes but MANIFEST lists " + std::to_string(e.size) +
+               (size < e.size ? " (truncated)" : " (altered)");
+    const FileHash d = hashFile(path.string());
+    if (!d.ok) return e.name + ": cannot read";
+    if (d.size != e.size || d.hash != e.xxh3_64)
+        return e.name + ": content hashes to " + hashHex(d.hash) + " but MANIFEST lists " + hashHex(e.xxh3_64) +
+               " (altered or damaged)";
+    return "";
+}
+}  // namespace
+
+bool listedFileIsIntact(const std::string& folder, const std::string& name) {
+    try {
+        for (const ManifestEntry& e : parseManifest(folder))
+            if (e.name == name) return verifyListed(folder, e).empty();
+    } catch (const ManifestProblem&) {
+    }
+    return false;
+}
+
 std::string verifyCheckpoint(const std::string& folder) {
     std::vector<ManifestEntry> entries;
     try {
@@ -187,19 +188,8 @@ std::string verifyCheckpoint(const std::string& folder) {
         return std::string(kManifest) + (p.where.empty() ? "" : ":" + p.where) + ": " + p.what;
     }
     for (const ManifestEntry& e : entries) {
-        const fs::path path = fs::path(folder) / e.name;
-        std::error_code ec;
-        if (!fs::is_regular_file(path, ec)) return e.name + ": missing";
-        const std::uintmax_t size = fs::file_size(path, ec);
-        if (ec) return e.name + ": cannot read its size";
-        if (size != e.size)
-            return e.name + ": " + std::to_string(size) + " bytes but MANIFEST lists " + std::to_string(e.size) +
-                   (size < e.size ? " (truncated)" : " (altered)");
-        const FileDigest d = digest(path);
-        if (!d.ok) return e.name + ": cannot read";
-        if (d.size != e.size || d.hash != e.xxh3_64)
-            return e.name + ": content hashes to " + hex16(d.hash) + " but MANIFEST lists " + hex16(e.xxh3_64) +
-                   " (altered or damaged)";
+        std::string problem = verifyListed(folder, e);
+        if (!problem.empty()) return problem;
     }
     // Every file in the folder must be listed: an unlisted one would reach libhdf5 unchecked.
     std::error_code ec;

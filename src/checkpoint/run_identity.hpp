@@ -23,8 +23,8 @@ void writeRunId(const std::string& runDir, const std::string& runId);
 /// The id in `runDir`/run-id. @throw InputError naming the file if it is missing or malformed.
 std::string readRunId(const std::string& runDir);
 
-/// The run id stored in `checkpoint`/run.h5, if the checkpoint is complete (MANIFEST) and its
-/// run.h5 readable; nullopt otherwise. Reads nothing else.
+/// The run id stored in `checkpoint`/run.h5, if its MANIFEST lists run.h5 with the bytes it has
+/// and run.h5 is readable; nullopt otherwise. Reads nothing else (not the island files).
 std::optional<std::string> checkpointRunId(const std::string& checkpoint);
 
 /// Empty if island file `island` (read by rank `rank`) belongs with run file `run`: same run id,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/atomic_write.hpp"
+#include "base/hash.hpp"
 
 namespace shapevo {
 
@@ -46,8 +47,6 @@ void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string&
 }
 
 void writeSummaryJson(const RunSummary& s, const std::string& path) {
-    char hash[32];
-    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.targetHash));
     std::string t = "{\n";
     t += "  \"name\": " + jsonString(s.name) + ",\n";
     t += "  \"config\": " + jsonString(s.config) + ",\n";
@@ -61,7 +60,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     if (s.silhouetteIoU) t += "  \"silhouette_iou\": " + formatDouble(*s.silhouetteIoU) + ",\n";
     t += "  \"best_genes\": " + std::to_string(s.bestGenes) + ",\n";
     t += "  \"best_primitives\": " + std::to_string(s.bestPrimitives) + ",\n";
-    t += "  \"target_hash\": \"" + std::string(hash) + "\",\n";
+    t += "  \"target_hash\": \"" + hashHex(s.targetHash) + "\",\n";
     t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
     t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
     t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";

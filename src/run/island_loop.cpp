@@ -86,7 +86,7 @@ std::string writeCheckpoint(const MpiSession& mpi, const std::string& folder, co
 /// What a user needs after a failed checkpoint: the newest complete checkpoint of this run.
 std::string newestCompleteCheckpoint(const std::string& folder, const std::string& runId) {
     for (const std::string& c : listCheckpoints(folder))
-        if (checkpointRunId(c) == runId) return "the newest complete checkpoint is " + c + "; resume from it once fixed";
+        if (verifyCheckpoint(c).empty() && checkpointRunId(c) == runId) return "the newest complete checkpoint is " + c + "; resume from it once fixed";
     return "there is no complete checkpoint of this run yet";
 }
 
