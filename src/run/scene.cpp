@@ -16,45 +16,50 @@ Scene::~Scene() = default;
 namespace {
 
 constexpr int kCheckModels = 64;
-constexpr std::uint64_t kCheckSeed = 12345;
+
+/// The start-up checks' models: `kCheckModels` random chromosomes of the run's initial sizes,
+/// from a fixed seed (so a check is repeatable), given to `f` until it returns true. Returns
+/// whether it did.
+template <class F>
+bool anyCheckModel(const RunSettings& s, const Grammar& g, F&& f) {
+    Rng rng(12345);
+    Chromosome c;
+    for (int i = 0; i < kCheckModels; ++i) {
+        growRandomLength(g, c, rng, s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax);
+        if (f(c)) return true;
+    }
+    return false;
+}
 
 /// A grammar whose every model has a non-finite or absurd coordinate (a division by zero, the
 /// square root of a negative, `scale 1e30`) can never give a usable best: refuse it up front,
-/// naming the rule, rather than evolve to the end. The same random models as the camera check.
+/// naming the rule, rather than evolve to the end.
 void requireFiniteModels(const RunSettings& s, const Grammar& g) {
-    Rng rng(kCheckSeed);
-    Chromosome c;
     Geometry geometry;
     DeriveScratch scratch;
-    std::uint32_t badRule = 0;
-    for (int i = 0; i < kCheckModels; ++i) {
-        growRandomLength(g, c, rng, s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax);
-        if (derive(g, c, geometry, scratch, s.limits.maxPrimitives) != DeriveStatus::NonFinite) return;
-        badRule = scratch.badRule;
-    }
-    const Rule& r = g.rules[badRule];
+    if (anyCheckModel(s, g, [&](const Chromosome& c) {
+            return derive(g, c, geometry, scratch, s.limits.maxPrimitives) != DeriveStatus::NonFinite;
+        }))
+        return;
+    const Rule& r = g.rules[scratch.badRule];  // the last model's
     throw InputError(g.path, "line " + std::to_string(r.where.line) + " (rule " + r.name + ")",
                      "every one of " + std::to_string(kCheckModels) +
                          " random models has a primitive with a non-finite coordinate or one beyond 1e6 (last seen in "
                          "this rule); look for a division by zero, the square root of a negative number or a huge scale");
 }
 
-/// A camera that sees nothing makes every fitness equal and the search blind: refuse it. Random
-/// models of the run's initial sizes (a fixed seed, so the check is repeatable) must cover at
-/// least one pixel between them.
+/// A camera that sees nothing makes every fitness equal and the search blind: refuse it. The
+/// check models must cover at least one pixel between them.
 void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& scorer) {
-    constexpr int kModels = kCheckModels;
-    Rng rng(kCheckSeed);
     ImageScorer::Workspace ws(scorer.camera());
-    Chromosome c;
-    for (int i = 0; i < kModels; ++i) {
-        growRandomLength(g, c, rng, s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax);
-        SilhouetteCounts counts;
-        scorer.fitness(c, ws, &counts);
-        if (counts.covered > 0) return;
-    }
+    if (anyCheckModel(s, g, [&](const Chromosome& c) {
+            SilhouetteCounts counts;
+            scorer.fitness(c, ws, &counts);
+            return counts.covered > 0;
+        }))
+        return;
     throw InputError(s.configPath, "[camera]",
-                     "sees nothing: none of " + std::to_string(kModels) + " random models of " + g.path +
+                     "sees nothing: none of " + std::to_string(kCheckModels) + " random models of " + g.path +
                          " covers a single pixel of the picture; point the camera (or the shadow's ground rectangle) at "
                          "where the grammar builds");
 }
