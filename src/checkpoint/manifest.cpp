@@ -7,11 +7,8 @@
 // One line per file: plain name, size in bytes (decimal), XXH3-64 of its bytes (16 lowercase
 // hex digits); then "end". verifyCheckpoint checks sizes and hashes by reading bytes only, so a
 // truncated or altered file is reported by name before any of it reaches libhdf5's parser.
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <cctype>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>

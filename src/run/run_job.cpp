@@ -2,7 +2,6 @@
 #include "run/run_job.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <sstream>
 

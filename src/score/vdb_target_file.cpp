@@ -3,8 +3,6 @@
 #include "score/vdb_target_file.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -12,9 +10,6 @@
 #include <limits>
 #include <mutex>
 #include <sstream>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
