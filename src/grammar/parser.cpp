@@ -341,20 +341,41 @@ private:
         return "param, scale, size, translate, rotate, mirror, " + kindKeywords() + ", terminal or child";
     }
 
-    /// What a kind's parseArguments reads its arguments with (shape/kinds.hpp).
+    /// What a kind's parseArguments reads its arguments with (shape/kinds.hpp). Expressions go
+    /// into the statement's expr[index] (three of them), a small tag into its slot field.
     struct PrimitiveArguments {
         Parser& parser;
         Statement& s;
         const ExpressionContext& ctx;
-        /// `WORD EXPR` if the next token is WORD, into expr[0]; otherwise the constant `otherwise`.
-        void optionalExpression(std::string_view word, float otherwise) {
+        /// `WORD EXPR` if the next token is WORD, into expr[index]; otherwise the constant `otherwise`.
+        void optionalExpression(std::string_view word, float otherwise, int index = 0) {
             if (parser.tokens_.peek().isWord(word)) {
                 parser.tokens_.take();
-                parser.exprs_.compile(ctx, 1, parser.g_.code, s.expr, parser.g_.maxStack);
+                expression(index);
             } else {
-                s.expr[0] = parser.constantExpression(otherwise);
+                constant(index, otherwise);
             }
         }
+        /// A scalar expression (required) into expr[index].
+        void expression(int index) {
+            ExprRef e[3];
+            parser.exprs_.compile(ctx, 1, parser.g_.code, e, parser.g_.maxStack);
+            s.expr[index] = e[0];
+        }
+        /// The constant `v` into expr[index].
+        void constant(int index, float v) { s.expr[index] = parser.constantExpression(v); }
+        /// True (and the word taken) if the next token is the word `w`.
+        bool word(std::string_view w) {
+            if (!parser.tokens_.peek().isWord(w)) return false;
+            parser.tokens_.take();
+            return true;
+        }
+        /// The next token must be `c` (else a located error "expected 'c' WHAT").
+        void expect(char c, const std::string& what) { parser.tokens_.expect(c, what); }
+        /// A located error at the next token: "expected WHAT, found ...".
+        [[noreturn]] void expected(const std::string& what) { parser.tokens_.expected(what); }
+        /// A small number the kind's emit reads back as args.slot().
+        void tag(std::uint16_t v) { s.slot = v; }
         /// A mesh file name in quotes; its index in Grammar::meshes into slot.
         void meshFile() { s.slot = parser.parseMesh(); }
     };

@@ -13,6 +13,7 @@
 //             coordinates (the file's bounding box mapped onto [-1, 1]^3)
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -39,13 +40,30 @@ struct Primitive {
     glm::vec3 half{0.5f};    ///< half extents along the axes
 };
 
+/// How a primitive looks in exported meshes: a colour (linear RGB in [0, 1]) and a named
+/// material (an index into Geometry::materialNames; 0 is the unnamed default). Scoring never
+/// reads it.
+struct Appearance {
+    glm::vec3 color{0.8f, 0.8f, 0.8f};
+    std::uint16_t material = 0;
+    bool operator==(const Appearance&) const = default;
+};
+
 /// The geometry of one model; reused between evaluations (clear() keeps capacity).
 struct Geometry {
     std::vector<Primitive> primitives;
+    /// Empty when the grammar sets no colour or material (derive then writes none); otherwise
+    /// one entry per primitive, in the same order.
+    std::vector<Appearance> appearance;
+    /// Names of the grammar's materials, index 0 = "" (owned by the Grammar; may be null).
+    const std::vector<std::string>* materialNames = nullptr;
     /// The grammar's meshes that Mesh primitives refer to (owned by the Grammar; may be null
     /// when there are none).
     const std::vector<MeshShape>* meshes = nullptr;
-    void clear() { primitives.clear(); }
+    void clear() {
+        primitives.clear();
+        appearance.clear();
+    }
 };
 
 }  // namespace shapevo
