@@ -98,18 +98,27 @@ bool bounded(const Primitive& p) {
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
     out.clear();
     out.meshes = &g.meshes;
+    out.materialNames = &g.materialNames;
     if (c.empty()) return DeriveStatus::Complete;
     auto& stack = scratch.stack;
     auto& scopes = scratch.scopes;
+    auto& frames = scratch.frames;
+    auto& looks = scratch.looks;
     stack.clear();
     scopes.clear();
+    frames.clear();
+    if (g.hasAppearance) {
+        looks.clear();
+        looks.push_back(Appearance{});
+    }
     // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
     if (scopes.capacity() < stack.capacity()) scopes.reserve(stack.capacity());
-    scratch.params.resize(256);
+    scratch.params.resize(2 * std::size_t(kFrameBase));
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
+    constexpr std::uint32_t kNoFrame = DeriveScratch::kNoFrame;
     scopes.push_back(Scope{});
-    stack.push_back({0, 0, 0, 0});
+    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
     std::size_t tasks = 0;
     while (!stack.empty()) {
         if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;  // mirrors without boxes multiply too
@@ -120,15 +129,24 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
         const Rule& r = g.rules[c.rule(task.gene)];
         if (r.paramFloats > 0)
             std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
+        if (task.frame != kNoFrame) std::memcpy(params + kFrameBase, frames.data() + task.frame, r.frameFloats * sizeof(float));
+        frames.resize(task.framesTop);
         Scope s = scopes[task.scope], beforeTerminal;
         const glm::vec3 parentSize = scopes[task.parent].size;
         // Index of the stored scope equal to `s`, if the last one stored still is (children of
         // consecutive child statements share it); UINT32_MAX when `s` changed since.
         std::uint32_t stored = UINT32_MAX;
         auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+        // The let values this task has now, for tasks it pushes that go on in this gene.
+        auto snapshot = [&]() {
+            if (r.frameFloats == 0) return kNoFrame;
+            const auto at = std::uint32_t(frames.size());
+            frames.insert(frames.end(), params + kFrameBase, params + kFrameBase + r.frameFloats);
+            return at;
+        };
         // Local copies of pointers the pushes below might otherwise make the compiler reload.
         const Statement* const statementList = r.statements.data();
-        const std::uint32_t statements = std::uint32_t(r.statements.size());
+        const std::uint32_t statements = std::min(task.end, std::uint32_t(r.statements.size()));
         const std::int32_t* const childOffsets = reinterpret_cast<const std::int32_t*>(c.words.data() + task.gene + 2);
         for (std::uint32_t i = task.statement; i < statements; ++i) {
             const Statement& st = statementList[i];
@@ -166,7 +184,9 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 mirrored.axes[st.axis] = -mirrored.axes[st.axis];
                 scopes.push_back(mirrored);
                 // the parent scope stays where it is: at or below task.scope
-                stack.push_back({task.gene, i + 1, std::uint32_t(scopes.size() - 1), task.parent});
+                const std::uint32_t frame = snapshot();
+                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame,
+                                 std::uint32_t(frames.size())});
                 stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
@@ -196,6 +216,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                     scratch.badRule = c.rule(task.gene);
                     return DeriveStatus::NonFinite;
                 }
+                if (g.hasAppearance) out.appearance.push_back(looks[s.look]);
                 break;
             }
             case StatementKind::TerminalBegin:
@@ -218,9 +239,58 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                             scopes.push_back(s);
                             stored = std::uint32_t(scopes.size() - 1);
                         }
-                        stack.push_back({task.gene + std::uint32_t(off), 0, stored, stored});
+                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame,
+                                         std::uint32_t(frames.size())});
                     }
                 }
+                break;
+            }
+            case StatementKind::If: {
+                const float condition = eval(st.expr[0]);
+                if (!(condition > 0.0f || condition < 0.0f)) i = st.end - 1;  // 0 and NaN are false
+                break;
+            }
+            case StatementKind::Jump:
+                i = st.end - 1;
+                break;
+            case StatementKind::Let:
+                for (int k = 0; k < st.axis; ++k) params[st.slot + k] = eval(st.expr[k]);
+                break;
+            case StatementKind::Extrude:
+                s = extrudeScope(s, eval(st.expr[0]));
+                stored = UINT32_MAX;
+                break;
+            case StatementKind::Color:
+            case StatementKind::Material: {
+                Appearance look = looks[s.look];
+                if (st.kind == StatementKind::Color) {
+                    for (int k = 0; k < 3; ++k) {
+                        const float v = eval(st.expr[k]);
+                        look.color[k] = v >= 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN -> 0
+                    }
+                } else {
+                    look.material = st.slot;
+                }
+                s.look = std::uint32_t(looks.size());
+                looks.push_back(look);
+                stored = UINT32_MAX;
+                break;
+            }
+            case StatementKind::Pieces: {
+                makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
+                const std::uint32_t frame = snapshot();
+                const std::uint32_t top = std::uint32_t(frames.size());
+                const std::uint32_t base = std::uint32_t(scopes.size());
+                for (const PieceScope& p : scratch.pieces) scopes.push_back(p.scope);
+                const PieceList& list = g.pieceLists[st.slot];
+                for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
+                    const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
+                    if (piece.begin == piece.end) continue;  // nil
+                    const std::uint32_t at = base + std::uint32_t(k);
+                    stack.push_back({task.gene, piece.begin, piece.end, at, at, frame, top});
+                }
+                stored = UINT32_MAX;
+                i = st.end - 1;
                 break;
             }
             }

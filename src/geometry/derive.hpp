@@ -4,30 +4,31 @@
 #include <vector>
 
 #include "genome/chromosome.hpp"
+#include "geometry/pieces.hpp"
 #include "shape/primitive.hpp"
 
 namespace shapevo {
-
-/// A scope: the oriented frame statements act on (CGA style), centred on `origin`.
-struct Scope {
-    glm::vec3 origin{0.0f};
-    glm::mat3 axes{1.0f};
-    glm::vec3 size{1.0f};
-};
 
 /// Reusable work space for derive (no allocation once warm).
 struct DeriveScratch {
     struct Task {
         std::uint32_t gene;
         std::uint32_t statement;  ///< first statement to run
+        std::uint32_t end;        ///< one past the last (a piece's successor ends early)
         std::uint32_t scope;      ///< index in `scopes`: current scope when the task starts
         std::uint32_t parent;     ///< index in `scopes`: scope the gene received from its parent
+        std::uint32_t frame;      ///< its let values in `frames` (kNoFrame: none)
+        std::uint32_t framesTop;  ///< size of `frames` when it was pushed
     };
+    static constexpr std::uint32_t kNoFrame = UINT32_MAX;
     std::vector<Task> stack;
     /// Scopes the pending tasks start from, stored once per pushed batch of children (a stack:
     /// entries above the popped task's own scope are no longer referenced).
     std::vector<Scope> scopes;
     std::vector<float> params;
+    std::vector<float> frames;         ///< let values of pending tasks that continue a gene
+    std::vector<PieceScope> pieces;    ///< work space of split / comp / lot statements
+    std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
 };
 

@@ -55,7 +55,8 @@ void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::ve
     depth_ = 0;
     const SourceLocation at = tokens_.peek().where;
     start_ = at;
-    const int root = parseSum();
+    const int root = parseOr();
+    lastDims_ = nodes_[root].dims;
     if (nodes_[root].dims == 3 && dims == 1)
         tokens_.fail(at, "expected a scalar expression here, but this expression is a 3-vector (use .x, .y or .z)");
     for (int c = 0; c < dims; ++c) {
@@ -68,6 +69,8 @@ void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::ve
             switch (code[i].op) {
             case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
             case OpCode::Add: case OpCode::Sub: case OpCode::Mul: case OpCode::Div: case OpCode::Min: case OpCode::Max:
+            case OpCode::Lt: case OpCode::Le: case OpCode::Gt: case OpCode::Ge: case OpCode::Eq: case OpCode::Ne:
+            case OpCode::And: case OpCode::Or:
                 --depth;
                 break;
             default: break;
@@ -91,6 +94,37 @@ int ExpressionCompiler::binary(char op, int left, int right, const SourceLocatio
     return add(n);
 }
 
+int ExpressionCompiler::parseOr() {
+    int left = parseAnd();
+    while (tokens_.peek().is("||")) {
+        const Token op = tokens_.take();
+        left = binary('|', left, parseAnd(), op.where);
+    }
+    return left;
+}
+
+int ExpressionCompiler::parseAnd() {
+    int left = parseComparison();
+    while (tokens_.peek().is("&&")) {
+        const Token op = tokens_.take();
+        left = binary('&', left, parseComparison(), op.where);
+    }
+    return left;
+}
+
+int ExpressionCompiler::parseComparison() {
+    int left = parseSum();
+    const Token& t = tokens_.peek();
+    char op = t.is('<') ? '<' : t.is('>') ? '>' : t.is("<=") ? 'l' : t.is(">=") ? 'g' : t.is("==") ? '=' : t.is("!=") ? '!' : 0;
+    if (op == 0) return left;
+    const Token opToken = tokens_.take();
+    left = binary(op, left, parseSum(), opToken.where);
+    const Token& next = tokens_.peek();
+    if (next.is('<') || next.is('>') || next.is("<=") || next.is(">=") || next.is("==") || next.is("!="))
+        tokens_.fail(next.where, "comparisons do not chain (write a < b && b < c)");
+    return left;
+}
+
 int ExpressionCompiler::parseSum() {
     int left = parseProduct();
     while (tokens_.peek().is('+') || tokens_.peek().is('-')) {
@@ -110,6 +144,17 @@ int ExpressionCompiler::parseProduct() {
 }
 
 int ExpressionCompiler::parseUnary() {
+    if (tokens_.peek().is('!')) {
+        Token op = tokens_.take();
+        enter(op.where);
+        int inner = parseUnary();
+        --depth_;
+        Node n{Node::Not};
+        n.child[0] = inner;
+        n.dims = nodes_[inner].dims;
+        n.where = op.where;
+        return add(n);
+    }
     if (tokens_.peek().is('-')) {
         Token op = tokens_.take();
         enter(op.where);
@@ -154,7 +199,7 @@ int ExpressionCompiler::parsePrimary() {
     if (t.is('(')) {
         const SourceLocation at = tokens_.take().where;
         enter(at);
-        int first = parseSum();
+        int first = parseOr();
         if (tokens_.peek().is(',')) {
             Node v{Node::Vector};
             v.dims = 3;
@@ -162,7 +207,7 @@ int ExpressionCompiler::parsePrimary() {
             v.child[0] = first;
             for (int c = 1; c < 3; ++c) {
                 tokens_.expect(',', "between the components of a vector (x, y, z)");
-                v.child[c] = parseSum();
+                v.child[c] = parseOr();
             }
             for (int c = 0; c < 3; ++c)
                 if (nodes_[v.child[c]].dims != 1)
@@ -191,14 +236,49 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
         n.where = t.where;
         for (int a = 0; a < f->arity; ++a) {
             if (a > 0) tokens_.expect(',', "between the arguments of " + t.text);
-            n.child[a] = parseSum();
+            n.child[a] = parseOr();
             n.dims = std::max(n.dims, nodes_[n.child[a]].dims);
         }
         tokens_.expect(')', "after the " + std::to_string(f->arity) + " argument(s) of " + t.text);
         --depth_;
         return add(n);
     }
+    if (ctx_->bindings) {
+        for (auto b = ctx_->bindings->rbegin(); b != ctx_->bindings->rend(); ++b) {
+            if (b->name != t.text) continue;
+            if (b->constant) {
+                if (b->dims == 1) {
+                    Node n{Node::Number};
+                    n.value = b->value[0];
+                    n.where = t.where;
+                    return add(n);
+                }
+                Node v{Node::Vector};
+                v.dims = 3;
+                v.where = t.where;
+                for (int c = 0; c < 3; ++c) {
+                    Node n{Node::Number};
+                    n.value = b->value[c];
+                    n.where = t.where;
+                    v.child[c] = add(n);
+                }
+                return add(v);
+            }
+            if (!ctx_->allowScope)
+                tokens_.fail(t.where, std::string(ctx_->constantPlace ? ctx_->constantPlace : "this value") +
+                                          " must be known when the grammar is read, but '" + t.text +
+                                          "' is only known during a derivation");
+            Node n{Node::ParamRef};
+            n.first = b->index;
+            n.dims = b->dims;
+            n.where = t.where;
+            return add(n);
+        }
+    }
     if (t.text == "scope" || t.text == "parent") {
+        if (!ctx_->allowScope)
+            tokens_.fail(t.where, std::string(ctx_->constantPlace ? ctx_->constantPlace : "this value") +
+                                      " must be known when the grammar is read, so it cannot use " + t.text + ".size");
         tokens_.expect('.', "after '" + t.text + "' (only " + t.text + ".size is available)");
         const SourceLocation at = tokens_.peek().where;
         const std::string field = tokens_.expectIdentifier("'size' after '" + t.text + ".'");
@@ -214,8 +294,13 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
         n.where = t.where;
         return add(n);
     }
-    for (const Param& p : *ctx_->params) {
+    static const std::vector<Param> none;
+    for (const Param& p : ctx_->params ? *ctx_->params : none) {
         if (p.name == t.text) {
+            if (!ctx_->allowScope)
+                tokens_.fail(t.where, std::string(ctx_->constantPlace ? ctx_->constantPlace : "this value") +
+                                          " must be known when the grammar is read, so it cannot use parameter '" +
+                                          t.text + "'");
             Node n{Node::ParamRef};
             n.first = p.first;
             n.dims = p.dims;
@@ -223,14 +308,16 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
             return add(n);
         }
     }
-    if (auto it = ctx_->attrs->find(t.text); it != ctx_->attrs->end()) {
+    if (auto it = ctx_->attrs ? ctx_->attrs->find(t.text) : std::map<std::string, double>::const_iterator{};
+        ctx_->attrs && it != ctx_->attrs->end()) {
         Node n{Node::Number};
         n.value = float(it->second);
         n.where = t.where;
         return add(n);
     }
     tokens_.fail(t.where, "unknown name '" + t.text +
-                              "': expected a parameter declared above in this rule, an attr, scope.size, "
+                              "': expected a parameter declared above in this rule, an argument of the rule, "
+                              "a let value, an attr, scope.size, "
                               "parent.size, pi, or a function (min max abs sin cos sqrt floor)");
 }
 
@@ -248,10 +335,30 @@ void ExpressionCompiler::emit(int index, int c, std::vector<Instr>& code) const 
         emit(n.child[0], comp, code);
         code.push_back({OpCode::Neg});
         break;
-    case Node::Binary:
+    case Node::Binary: {
         emit(n.child[0], comp, code);
         emit(n.child[1], comp, code);
-        code.push_back({n.op == '+' ? OpCode::Add : n.op == '-' ? OpCode::Sub : n.op == '*' ? OpCode::Mul : OpCode::Div});
+        OpCode op = OpCode::Div;
+        switch (n.op) {
+        case '+': op = OpCode::Add; break;
+        case '-': op = OpCode::Sub; break;
+        case '*': op = OpCode::Mul; break;
+        case '<': op = OpCode::Lt; break;
+        case 'l': op = OpCode::Le; break;
+        case '>': op = OpCode::Gt; break;
+        case 'g': op = OpCode::Ge; break;
+        case '=': op = OpCode::Eq; break;
+        case '!': op = OpCode::Ne; break;
+        case '&': op = OpCode::And; break;
+        case '|': op = OpCode::Or; break;
+        default: break;
+        }
+        code.push_back({op});
+        break;
+    }
+    case Node::Not:
+        emit(n.child[0], comp, code);
+        code.push_back({OpCode::Not});
         break;
     case Node::Call: {
         const Function* f = functionById(n.op);
@@ -309,6 +416,12 @@ void classifyExpression(const std::vector<Instr>& code, ExprRef& e) {
     e = f;
 }
 
+bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e) {
+    for (std::uint32_t i = e.begin; i < e.end; ++i)
+        if (code[i].op == OpCode::Param || code[i].op == OpCode::ScopeSize || code[i].op == OpCode::ParentSize) return false;
+    return true;
+}
+
 float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
                       const float* parentSize, float* stack) {
     int top = -1;
@@ -331,6 +444,15 @@ float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, c
         case OpCode::Cos: stack[top] = std::cos(stack[top]); break;
         case OpCode::Sqrt: stack[top] = std::sqrt(stack[top]); break;
         case OpCode::Floor: stack[top] = std::floor(stack[top]); break;
+        case OpCode::Lt: stack[top - 1] = stack[top - 1] < stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::Le: stack[top - 1] = stack[top - 1] <= stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::Gt: stack[top - 1] = stack[top - 1] > stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::Ge: stack[top - 1] = stack[top - 1] >= stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::Eq: stack[top - 1] = stack[top - 1] == stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::Ne: stack[top - 1] = stack[top - 1] != stack[top] ? 1.0f : 0.0f; --top; break;
+        case OpCode::And: stack[top - 1] = (stack[top - 1] != 0.0f && stack[top] != 0.0f) ? 1.0f : 0.0f; --top; break;
+        case OpCode::Or: stack[top - 1] = (stack[top - 1] != 0.0f || stack[top] != 0.0f) ? 1.0f : 0.0f; --top; break;
+        case OpCode::Not: stack[top] = stack[top] == 0.0f ? 1.0f : 0.0f; break;
         }
     }
     return stack[0];

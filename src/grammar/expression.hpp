@@ -11,10 +11,24 @@
 
 namespace shapevo {
 
+/// A name an expression can use besides parameters and attrs: a rule argument or a `let`
+/// value. Constant ones (arguments known when the grammar is read) are folded into the code;
+/// the others are read from the derivation's frame at parameter-block index `index`.
+struct Binding {
+    std::string name;
+    int dims = 1;
+    bool constant = true;
+    float value[3] = {0, 0, 0};
+    std::uint16_t index = 0;  ///< not constant: frame index of its first float
+};
+
 /// What an expression may refer to besides numbers and the scope.
 struct ExpressionContext {
     const std::vector<Param>* params = nullptr;            ///< the current rule's parameters
     const std::map<std::string, double>* attrs = nullptr;  ///< grammar-wide constants
+    const std::vector<Binding>* bindings = nullptr;        ///< arguments and lets (searched first)
+    bool allowScope = true;  ///< false where only constants may appear (attrs, priors)
+    const char* constantPlace = nullptr;  ///< for the error when !allowScope ("an attr value")
 };
 
 /// Largest evaluation stack an expression may need; deeper expressions are a located error.
@@ -36,20 +50,25 @@ public:
     /// Parse one expression and append its program(s) to `code`. `dims` is 1 or 3; a scalar
     /// expression is broadcast where 3 components are wanted, a vector where 1 is wanted is an error.
     void compile(const ExpressionContext& ctx, int dims, std::vector<Instr>& code, ExprRef out[3], int& maxStack);
+    /// Dimension (1 or 3) of the last compiled expression, before any broadcast.
+    int lastDims() const { return lastDims_; }
 
 private:
     struct Node {
-        enum Kind { Number, ParamRef, ScopeSize, ParentSize, Vector, Negate, Binary, Call, Swizzle } kind;
+        enum Kind { Number, ParamRef, ScopeSize, ParentSize, Vector, Negate, Binary, Call, Swizzle, Not } kind;
         explicit Node(Kind k) : kind(k) {}
         int dims = 1;
         float value = 0;
         int first = 0;  ///< ParamRef: first float; Swizzle: component
-        char op = 0;    ///< Binary: + - * / ; Call: function letter
+        char op = 0;    ///< Binary: + - * / < l(<=) > g(>=) = (==) ! (!=) & (&&) | (||); Call: function letter
         int child[3] = {-1, -1, -1};
         SourceLocation where;
     };
     /// A Binary node `left op right` (a vector if either side is).
     int binary(char op, int left, int right, const SourceLocation& where);
+    int parseOr();
+    int parseAnd();
+    int parseComparison();
     int parseSum();
     int parseProduct();
     int parseUnary();
@@ -66,7 +85,11 @@ private:
     std::vector<Node> nodes_;
     int depth_ = 0;
     SourceLocation start_;
+    int lastDims_ = 1;
 };
+
+/// True if the compiled scalar expression reads nothing but constants (so it can be folded).
+bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e);
 
 /// Fill in `e`'s small shape (ExprRef::Shape) from its instructions in `code`, or leave it a
 /// Program when it has none of the small shapes.
@@ -85,7 +108,7 @@ inline float applyBinary(OpCode op, float a, float b) {
     case OpCode::Mul: return a * b;
     case OpCode::Div: return a / b;
     case OpCode::Min: return std::min(a, b);
-    default: return std::max(a, b);  // Max: classifyExpression admits no other operation
+    default: return std::max(a, b);  // Max: classifyExpression admits no other binary operation
     }
 }
 

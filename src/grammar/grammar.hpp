@@ -4,6 +4,7 @@
 // never re-reads text. See grammars/README.md for the language.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ enum class OpCode : std::uint8_t {
     Const, Param, ScopeSize, ParentSize,  // push: value / gene parameter float / scope or parent size component
     Add, Sub, Mul, Div, Neg,
     Min, Max, Abs, Sin, Cos, Sqrt, Floor,
+    Lt, Le, Gt, Ge, Eq, Ne, And, Or, Not,  // comparisons and logic: 1 for true, 0 for false
 };
 struct Instr {
     OpCode op;
@@ -71,19 +73,68 @@ enum class StatementKind : std::uint8_t {
     Scale, Size, Translate, Rotate, Mirror, Child,
     Primitive,                           // emit a primitive of kind `primitive` (its arguments: shape/kinds/)
     TerminalBegin, TerminalEnd,          // `terminal { ... }`: runs only on genes without expressed children
+    If,        // expr[0] is the condition: if it is 0 (or NaN), go on at `end`
+    Jump,      // go on at `end` (closes an if's branch that has an else)
+    Let,       // frame floats [slot, slot + axis) = expr[0..axis) (a `let` or an inline call's argument)
+    Pieces,    // split, repeat, comp, lots: Grammar::pieceLists[slot]; the pieces' bodies follow; `end` is after them
+    Extrude,   // a flat scope becomes a volume of height expr[0] (geometry/derive.hpp: flat scopes)
+    Color,     // the colour of what follows: expr[0..2]
+    Material,  // the named material of what follows: slot (index into Grammar::materialNames)
 };
 struct Statement {
     StatementKind kind;
-    std::uint8_t axis = 0;       ///< Rotate, Mirror
+    std::uint8_t axis = 0;       ///< Rotate, Mirror; Let: number of floats (1 or 3)
     PrimitiveKind primitive = PrimitiveKind::Box;  ///< Primitive: its kind
-    std::uint16_t slot = 0;      ///< Child: slot index; Primitive of kind Mesh: index into Grammar::meshes
-    std::uint32_t end = 0;       ///< TerminalBegin: index of its TerminalEnd
+    std::uint16_t slot = 0;      ///< Child: slot index; Primitive: the kind's tag (a Mesh's index into Grammar::meshes)
+    std::uint32_t end = 0;       ///< TerminalBegin: index of its TerminalEnd; If, Jump, Pieces: where to go on
     ExprRef expr[3];             ///< vector statements use 3, Rotate and a cone Primitive use expr[0]
+};
+
+/// How one piece of a split takes its share of the scope along the split axis.
+enum class PieceSize : std::uint8_t {
+    Absolute,  ///< `EXPR`: that many units
+    Relative,  ///< `'EXPR`: that fraction of the scope's size along the axis
+    Floating,  ///< `~EXPR`: about that many units, stretched with the other floating pieces to fill
+};
+/// One piece of a Pieces statement: its size (splits) and the statements its successor runs
+/// ([begin, end) of the rule's statements; empty for `nil`).
+struct Piece {
+    PieceSize size = PieceSize::Absolute;
+    bool repeated = false;      ///< split: inside the `{ ... }*` repeat group
+    std::uint8_t face = 0;      ///< comp: the face (FaceName)
+    ExprRef value;              ///< split: the size expression
+    std::uint32_t begin = 0, end = 0;
+};
+/// The faces `comp` takes a volume apart into (see geometry/derive.hpp for their frames).
+enum class FaceName : std::uint8_t { Top, Bottom, Front, Back, Left, Right };
+inline constexpr int kFaces = 6;
+/// What a Pieces statement makes of the current scope.
+enum class PiecesKind : std::uint8_t {
+    Split,        ///< split AXIS { SIZE: A | ... }: pieces along one axis
+    RepeatCount,  ///< repeat AXIS count N A | B ...: N equal pieces, successors in turn
+    RepeatSize,   ///< repeat AXIS [~]SIZE A | B ...: as many pieces of SIZE as fit (floating: stretched to fill)
+    Comp,         ///< comp { FACE: A | ... }: a volume's faces as flat scopes
+    LotRect,      ///< lot rect (x1, y1, x2, y2) A: a flat lot in the scope's ground plane
+    LotCircle,    ///< lot circle (cx, cy, r) A: the flat square lot around a circle
+    Center,       ///< center (w, d) A: a lot of w x d units in the middle of a flat scope
+    Corners,      ///< corners (rx, ry) [on (a, b, c, d)] A | ...: square lots on a flat scope's corners
+    Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges
+};
+struct PieceList {
+    PiecesKind kind = PiecesKind::Split;
+    std::uint8_t axis = 0;       ///< Split, Repeat*
+    bool floating = false;       ///< RepeatSize with `~`
+    ExprRef arg[6];              ///< the kind's numbers (see PiecesKind), in source order
+    std::uint32_t first = 0, count = 0;  ///< its pieces in Grammar::pieces
 };
 
 struct SourceLocation {
     int line = 0, column = 0;
 };
+
+/// Parameter-block index where a rule's frame values (`let`, inline calls' arguments) start: they
+/// follow the (at most 256) stored parameter floats in derive's work space, never in genes.
+inline constexpr std::uint16_t kFrameBase = 256;
 
 struct Rule {
     std::string name;
@@ -93,6 +144,7 @@ struct Rule {
     std::vector<Statement> statements;
     std::uint16_t paramFloats = 0;   ///< floats in the parameter block
     std::uint16_t childOffsets = 0;  ///< sum of slot maxCount
+    std::uint16_t frameFloats = 0;   ///< floats of `let` values and inline calls' arguments (after kFrameBase)
     /// Gene size in 32-bit words: header (rule id, parent offset) + child offsets + parameters.
     std::uint32_t geneWords() const { return 2u + childOffsets + paramFloats; }
 };
@@ -105,6 +157,11 @@ struct Grammar {
     std::vector<Instr> code;
     std::vector<float> choiceValues;
     std::vector<MeshShape> meshes;   ///< shapes of `mesh "file"` statements, read when the grammar is loaded
+    std::vector<PieceList> pieceLists;   ///< one per Pieces statement
+    std::vector<Piece> pieces;
+    std::vector<std::string> materialNames{""};  ///< index 0: no named material
+    bool hasAppearance = false;      ///< a `color` or `material` statement exists (derive fills Geometry::appearance)
+    std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;
     int maxStack = 0;        ///< deepest expression evaluation stack
     /// Largest number of genes a freshly grown gene of each rule brings with it (mandatory children).

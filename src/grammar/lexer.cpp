@@ -1,4 +1,5 @@
-// Lexer implementation: identifiers, numbers, strings, one-character punctuation, # comments.
+// Lexer implementation: identifiers, numbers, strings, punctuation (one character, or one of
+// <= >= == != && ||), # comments.
 #include "grammar/lexer.hpp"
 
 #include <cctype>
@@ -49,16 +50,16 @@ void TokenStream::fail(const SourceLocation& at, const std::string& message) con
 }
 
 void TokenStream::expected(const std::string& what) const {
-    fail(current_.where, "expected " + what + ", found " + current_.describe());
+    fail(peek().where, "expected " + what + ", found " + peek().describe());
 }
 
 void TokenStream::expect(char punct, const std::string& context) {
-    if (!current_.is(punct)) expected(std::string("'") + punct + "' " + context);
+    if (!peek().is(punct)) expected(std::string("'") + punct + "' " + context);
     take();
 }
 
 std::string TokenStream::expectIdentifier(const std::string& what) {
-    if (current_.kind != TokenKind::Identifier) expected(what);
+    if (peek().kind != TokenKind::Identifier) expected(what);
     return take().text;
 }
 
@@ -116,7 +117,17 @@ Token Lexer::next() {
         advance();
         return t;
     }
-    static constexpr std::string_view kPunct = "{}()[],=|.+-*/";
+    static constexpr std::string_view kPairs[] = {"<=", ">=", "==", "!=", "&&", "||"};
+    for (std::string_view pair : kPairs) {
+        if (c == pair[0] && peek(1) == pair[1]) {
+            t.kind = TokenKind::Punct;
+            t.text = std::string(pair);
+            advance();
+            advance();
+            return t;
+        }
+    }
+    static constexpr std::string_view kPunct = "{}()[],=|.+-*/<>!'~:";
     if (kPunct.find(c) != std::string_view::npos) {
         t.kind = TokenKind::Punct;
         t.text = std::string(1, c);

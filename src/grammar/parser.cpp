@@ -1,26 +1,18 @@
-// Parser: grammar text -> Grammar. Syntax (see grammars/README.md):
-//   start NAME
-//   attr NAME = NUMBER
-//   rule NAME { param NAME = PRIOR ...  STATEMENT ... }
-// with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, a primitive
-// (its keyword and arguments are its kind's, shape/kinds/: box, cylinder, cone [top EXPR], sphere,
-// mesh "FILE"), terminal { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after
-// parsing live in grammar_checks.cpp.
+// Parser: grammar text -> Grammar (see grammar/parser_state.hpp for how a file is read, and
+// grammars/README.md for the language). This file: the top level (start, attr, rule headers),
+// rule instances, priors and child slots; rule bodies are statements.cpp. Checks after parsing
+// live in grammar_checks.cpp.
 #include "grammar/parser.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <optional>
 #include <sstream>
 
-#include "grammar/expression.hpp"
-#include "mesh/mesh_shape_file.hpp"
-#include "grammar/grammar_checks.hpp"
 #include "base/input_error.hpp"
-#include "shape/kinds.hpp"
+#include "grammar/grammar_checks.hpp"
+#include "grammar/parser_state.hpp"
 
 namespace shapevo {
 
@@ -30,7 +22,7 @@ int Grammar::findRule(const std::string& name) const {
     return -1;
 }
 
-namespace {
+namespace grammar_detail {
 
 int axisIndex(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1; }
 
@@ -41,410 +33,399 @@ std::string show(double v) {
     return buf;
 }
 
-/// Rule ids are 16-bit in genes; the largest |bound| of int(a, b) keeps every whole number in
-/// range exactly representable as a float.
-constexpr std::size_t kMaxRules = 65535;
-constexpr double kMaxIntBound = 16777216.0;  // 2^24
-constexpr int kMaxChildPositions = 64;
+Parser::Parser(const std::string& text, const std::string& path, const AttrOverrides& overrides)
+    : tokens_(text, path), exprs_(tokens_), overrides_(overrides) {
+    g_.path = path;
+    g_.source = text;
+}
 
-class Parser {
-public:
-    Parser(const std::string& text, const std::string& path) : tokens_(text, path), exprs_(tokens_) {
-        g_.path = path;
-        g_.source = text;
-    }
-
-    Grammar run() {
-        SourceLocation startAt{};
-        while (tokens_.peek().kind != TokenKind::End) {
-            const Token& t = tokens_.peek();
-            if (t.isWord("start")) {
-                if (!startName_.empty()) tokens_.fail(t.where, "'start' is given twice");
-                tokens_.take();
-                startAt = tokens_.peek().where;
-                startName_ = tokens_.expectIdentifier("the name of the start rule after 'start'");
-            } else if (t.isWord("attr")) {
-                parseAttr();
-            } else if (t.isWord("rule")) {
-                parseRule();
-            } else {
-                tokens_.expected("'start', 'attr' or 'rule' at the top level");
-            }
-        }
-        if (g_.rules.empty()) tokens_.fail(tokens_.peek().where, "the grammar has no rules (expected 'rule NAME { ... }')");
-        if (startName_.empty()) tokens_.fail({1, 1}, "the grammar has no 'start NAME' line");
-        const auto start = ruleIndex_.find(startName_);
-        if (start == ruleIndex_.end()) tokens_.fail(startAt, "start rule '" + startName_ + "' is not defined");
-        g_.start = std::uint16_t(start->second);
-        for (const auto& ref : pendingRefs_) {
-            const auto r = ruleIndex_.find(ref.name);
-            if (r == ruleIndex_.end()) tokens_.fail(ref.where, "rule '" + ref.name + "' is not defined");
-            g_.rules[ref.rule].slots[ref.slot].rules[ref.alternative] = std::uint16_t(r->second);
-        }
-        checkGrammar(g_, [this](const SourceLocation& at, const std::string& m) { tokens_.fail(at, m); });
-        return std::move(g_);
-    }
-
-private:
-    struct RuleRef {
-        std::string name;
-        SourceLocation where;
-        std::size_t rule, slot, alternative;
-    };
-
-    double parseConstant(const std::string& what) {
+Grammar Parser::run() {
+    // Pass 1: the top level; rule bodies are skipped (brace by brace) and compiled below.
+    std::string startName;
+    SourceLocation startAt{};
+    std::map<std::string, SourceLocation> attrAt;
+    while (tokens_.peek().kind != TokenKind::End) {
         const Token& t = tokens_.peek();
-        double sign = 1;
-        if (t.is('-')) {
+        if (t.isWord("start")) {
+            if (!startName.empty()) tokens_.fail(t.where, "'start' is given twice");
             tokens_.take();
-            sign = -1;
-        }
-        const Token& v = tokens_.peek();
-        if (v.kind == TokenKind::Number) return sign * tokens_.take().number;
-        if (v.kind == TokenKind::Identifier) {
-            if (auto it = attrs_.find(v.text); it != attrs_.end()) {
-                tokens_.take();
-                return sign * it->second;
-            }
-            if (v.text == "pi") {
-                tokens_.take();
-                return sign * M_PI;
-            }
-        }
-        tokens_.expected(what);
-    }
-
-    /// A constant or a vector constant (a, b, c); returns the number of components.
-    int parseConstantVector(double out[3], const std::string& what) {
-        if (tokens_.peek().is('(')) {
+            startAt = tokens_.peek().where;
+            startName = tokens_.expectIdentifier("the name of the start rule after 'start'");
+        } else if (t.isWord("attr")) {
             tokens_.take();
-            for (int c = 0; c < 3; ++c) {
-                if (c > 0) tokens_.expect(',', "between vector components");
-                out[c] = parseConstant("a number for component " + std::to_string(c + 1) + " of " + what);
-            }
-            tokens_.expect(')', "to close the vector");
-            return 3;
-        }
-        out[0] = out[1] = out[2] = parseConstant(what);
-        return 1;
-    }
-
-    void parseAttr() {
-        tokens_.take();
-        const SourceLocation at = tokens_.peek().where;
-        const std::string name = tokens_.expectIdentifier("an attribute name after 'attr'");
-        if (attrs_.count(name)) tokens_.fail(at, "attr '" + name + "' is defined twice");
-        if (isReservedName(name))
-            tokens_.fail(at, "'" + name + "' is a reserved name (scope, parent, pi and the functions) and cannot name an attr");
-        tokens_.expect('=', "after the attribute name");
-        attrs_[name] = parseConstant("a number as the value of attr " + name);
-    }
-
-    void parseRule() {
-        tokens_.take();
-        Rule r;
-        r.where = tokens_.peek().where;
-        r.name = tokens_.expectIdentifier("a rule name after 'rule'");
-        if (const auto it = ruleIndex_.find(r.name); it != ruleIndex_.end())
-            tokens_.fail(r.where, "rule '" + r.name + "' is defined twice (first at line " +
-                                      std::to_string(g_.rules[it->second].where.line) + ")");
-        if (g_.rules.size() >= kMaxRules)
-            tokens_.fail(r.where, "too many rules (at most " + std::to_string(kMaxRules) + ")");
-        ruleIndex_.emplace(r.name, int(g_.rules.size()));
-        tokens_.expect('{', "to open the body of rule " + r.name);
-        g_.rules.push_back(std::move(r));
-        Rule& rule = g_.rules.back();
-        while (!tokens_.peek().is('}')) {
-            if (tokens_.peek().kind == TokenKind::End)
-                tokens_.expected("'}' to close rule " + rule.name + " (opened at line " + std::to_string(rule.where.line) + ")");
-            parseStatement(rule);
-        }
-        tokens_.take();
-    }
-
-    void parseParam(Rule& rule) {
-        const SourceLocation at = tokens_.peek().where;
-        Param p;
-        p.name = tokens_.expectIdentifier("a parameter name after 'param'");
-        for (const Param& q : rule.params)
-            if (q.name == p.name) tokens_.fail(at, "parameter '" + p.name + "' is declared twice in rule " + rule.name);
-        if (isReservedName(p.name))
-            tokens_.fail(at, "parameter name '" + p.name + "' is reserved (scope, parent, pi and the functions)");
-        if (attrs_.count(p.name)) tokens_.fail(at, "parameter name '" + p.name + "' is already an attr");
-        tokens_.expect('=', "after the parameter name");
-        const SourceLocation priorAt = tokens_.peek().where;
-        const std::string kind =
-            tokens_.expectIdentifier("a prior: uniform(a, b), normal(mu, sigma) in [a, b], int(a, b) or choice(x, y, ...)");
-        if (kind != "uniform" && kind != "normal" && kind != "int" && kind != "choice")
-            tokens_.fail(priorAt, "unknown prior '" + kind + "': expected uniform, normal, int or choice");
-        tokens_.expect('(', "after " + kind);
-        double a[3], b[3];
-        if (kind == "uniform" || kind == "normal" || kind == "int") {
-            int da = parseConstantVector(a, "the first argument of " + kind);
-            tokens_.expect(',', "between the two arguments of " + kind);
-            int db = parseConstantVector(b, "the second argument of " + kind);
-            tokens_.expect(')', "after the two arguments of " + kind);
-            p.dims = std::uint8_t(std::max(da, db));
-            if (kind == "int" && p.dims != 1) tokens_.fail(priorAt, "int(a, b) takes two numbers, not vectors");
-            for (int c = 0; c < 3; ++c) {
-                Prior& pr = p.prior[c];
-                pr.kind = kind == "uniform" ? PriorKind::Uniform : kind == "normal" ? PriorKind::Normal : PriorKind::Int;
-                if (kind == "normal") {
-                    pr.mu = float(a[c]);
-                    pr.sigma = float(b[c]);
-                    if (!(b[c] > 0)) tokens_.fail(priorAt, "normal(mu, sigma) needs sigma > 0, got " + show(b[c]));
-                } else {
-                    pr.lo = float(a[c]);
-                    pr.hi = float(b[c]);
-                    if (!(a[c] <= b[c]))
-                        tokens_.fail(priorAt, kind + "(a, b) needs a <= b, got " + show(a[c]) + " > " + show(b[c]));
-                }
-            }
-            if (kind == "int") {
-                if (std::fabs(a[0]) > kMaxIntBound || std::fabs(b[0]) > kMaxIntBound)
-                    tokens_.fail(priorAt, "int(a, b) bounds must lie within [-16777216, 16777216]");
-                if (std::ceil(a[0]) > std::floor(b[0]))
-                    tokens_.fail(priorAt, "int(" + show(a[0]) + ", " + show(b[0]) + ") contains no whole number");
-            }
-            if (kind == "normal") {
-                if (!tokens_.peek().isWord("in")) tokens_.expected("'in [lo, hi]' after normal(mu, sigma): its support must be bounded");
+            const SourceLocation at = tokens_.peek().where;
+            const std::string name = tokens_.expectIdentifier("an attribute name after 'attr'");
+            if (attrs_.count(name)) tokens_.fail(at, "attr '" + name + "' is defined twice");
+            if (isReservedName(name))
+                tokens_.fail(at, "'" + name + "' is a reserved name (scope, parent, pi and the functions) and cannot name an attr");
+            tokens_.expect('=', "after the attribute name");
+            double v[3];
+            const int dims = parseConstantValue(v, "the value of attr " + name, nullptr, false);
+            (void)dims;
+            const auto o = overrides_.find(name);
+            attrs_[name] = o != overrides_.end() ? o->second : v[0];
+            attrAt[name] = at;
+        } else if (t.isWord("rule")) {
+            tokens_.take();
+            RuleHeader h;
+            h.where = tokens_.peek().where;
+            h.name = tokens_.expectIdentifier("a rule name after 'rule'");
+            if (const auto it = headerIndex_.find(h.name); it != headerIndex_.end())
+                tokens_.fail(h.where, "rule '" + h.name + "' is defined twice (first at line " +
+                                          std::to_string(headers_[it->second].where.line) + ")");
+            if (tokens_.peek().is('(')) {
                 tokens_.take();
-                tokens_.expect('[', "after 'in'");
-                double lo[3], hi[3];
-                int dl = parseConstantVector(lo, "the lower bound");
-                tokens_.expect(',', "between the bounds");
-                int dh = parseConstantVector(hi, "the upper bound");
-                tokens_.expect(']', "to close the bounds");
-                p.dims = std::uint8_t(std::max<int>({p.dims, dl, dh}));
-                for (int c = 0; c < 3; ++c) {
-                    p.prior[c].lo = float(lo[c]);
-                    p.prior[c].hi = float(hi[c]);
-                    if (!(lo[c] <= hi[c]))
-                        tokens_.fail(priorAt, "normal(...) in [lo, hi] needs lo <= hi, got " + show(lo[c]) + " > " + show(hi[c]));
+                while (true) {
+                    const SourceLocation at = tokens_.peek().where;
+                    const std::string a = tokens_.expectIdentifier("an argument name in rule " + h.name + "(...)");
+                    if (isReservedName(a)) tokens_.fail(at, "'" + a + "' is a reserved name and cannot name an argument");
+                    for (const auto& b : h.args)
+                        if (b == a) tokens_.fail(at, "argument '" + a + "' is named twice in rule " + h.name);
+                    h.args.push_back(a);
+                    h.argWhere.push_back(at);
+                    if (tokens_.peek().is(')')) break;
+                    tokens_.expect(',', "between the argument names of rule " + h.name);
                 }
-            }
-        } else {  // choice
-            Prior& pr = p.prior[0];
-            pr.kind = PriorKind::Choice;
-            pr.choiceBegin = std::uint32_t(g_.choiceValues.size());
-            do {
-                if (pr.choiceCount > 0) tokens_.take();
-                g_.choiceValues.push_back(float(parseConstant("a number in choice(...)")));
-                ++pr.choiceCount;
-            } while (tokens_.peek().is(','));
-            tokens_.expect(')', "to close choice(...)");
-            pr.lo = pr.hi = g_.choiceValues[pr.choiceBegin];
-            for (std::uint32_t i = 0; i < pr.choiceCount; ++i) {
-                pr.lo = std::min(pr.lo, g_.choiceValues[pr.choiceBegin + i]);
-                pr.hi = std::max(pr.hi, g_.choiceValues[pr.choiceBegin + i]);
-            }
-        }
-        p.first = rule.paramFloats;
-        rule.paramFloats = std::uint16_t(rule.paramFloats + p.dims);
-        if (rule.paramFloats > 256) tokens_.fail(at, "rule " + rule.name + " has more than 256 parameter values");
-        rule.params.push_back(p);
-    }
-
-    void parseChild(Rule& rule, Statement& s, const SourceLocation& childAt) {
-        Slot slot;
-        do {
-            if (!slot.rules.empty()) tokens_.take();
-            float weight = 1.0f;
-            if (tokens_.peek().is('[')) {
                 tokens_.take();
-                const SourceLocation at = tokens_.peek().where;
-                weight = float(parseConstant("a weight in [ ]"));
-                if (!(weight > 0)) tokens_.fail(at, "an alternative's weight must be > 0, got " + show(weight));
-                tokens_.expect(']', "after the weight");
             }
-            const SourceLocation at = tokens_.peek().where;
-            const std::string name = tokens_.expectIdentifier("a rule name after 'child'");
-            if ((name == "prob" || name == "max") && tokens_.peek().kind == TokenKind::Number)
-                tokens_.fail(at, "expected a rule name after 'child', found '" + name + "' (" + name +
-                                     " comes after the rule names: child A " + name + " N)");
-            pendingRefs_.push_back({name, at, std::size_t(&rule - g_.rules.data()), rule.slots.size(), slot.rules.size()});
-            slot.rules.push_back(0);
-            slot.weights.push_back(weight);
-        } while (tokens_.peek().is('|'));
-        float totalWeight = 0;
-        for (float w : slot.weights) totalWeight += w;
-        if (!std::isfinite(totalWeight))
-            tokens_.fail(childAt, "the weights of this child slot add up to more than a 32-bit float can hold");
-        bool seenProb = false, seenMax = false;
-        while (tokens_.peek().isWord("prob") || tokens_.peek().isWord("max")) {
-            const Token key = tokens_.take();
-            bool& seen = key.text == "prob" ? seenProb : seenMax;
-            if (seen) tokens_.fail(key.where, "'" + key.text + "' is given twice for this child slot");
-            seen = true;
-            const SourceLocation at = tokens_.peek().where;
-            const double v = parseConstant("a number after '" + key.text + "'");
-            if (key.text == "prob") {
-                if (!(v >= 0 && v <= 1)) tokens_.fail(at, "prob must be in [0, 1], got " + show(v));
-                slot.probability = float(v);
-            } else {
-                if (!(v >= 1 && v <= kMaxChildPositions && v == std::floor(v)))
-                    tokens_.fail(at, "max must be a whole number from 1 to 64, got " + show(v));
-                slot.maxCount = std::uint16_t(v);
+            tokens_.expect('{', "to open the body of rule " + h.name);
+            h.body = tokens_.mark();
+            h.attrs = attrs_;
+            int depth = 1;
+            while (depth > 0) {
+                const Token& b = tokens_.peek();
+                if (b.kind == TokenKind::End)
+                    tokens_.expected("'}' to close rule " + h.name + " (opened at line " + std::to_string(h.where.line) + ")");
+                if (b.is('{')) ++depth;
+                if (b.is('}')) --depth;
+                tokens_.take();
             }
-        }
-        if (rule.childOffsets + slot.maxCount > kMaxChildPositions)
-            tokens_.fail(childAt, "rule " + rule.name + " has more than 64 child positions (the sum of its slots' max)");
-        slot.firstChild = rule.childOffsets;
-        slot.edge = g_.edgeCount++;
-        rule.childOffsets = std::uint16_t(rule.childOffsets + slot.maxCount);
-        s.slot = std::uint16_t(rule.slots.size());
-        rule.slots.push_back(std::move(slot));
-    }
-
-    void parseStatement(Rule& rule) {
-        const Token word = tokens_.take();
-        if (word.kind != TokenKind::Identifier)
-            tokens_.fail(word.where, "expected a statement (" + statementList() + "), found " + word.describe());
-        if (word.text == "param") return parseParam(rule);
-        Statement s{};
-        const ExpressionContext ctx{&rule.params, &attrs_};
-        if (word.text == "scale" || word.text == "size" || word.text == "translate") {
-            s.kind = word.text == "scale" ? StatementKind::Scale : word.text == "size" ? StatementKind::Size : StatementKind::Translate;
-            exprs_.compile(ctx, 3, g_.code, s.expr, g_.maxStack);
-        } else if (word.text == "rotate" || word.text == "mirror") {
-            if (terminalAt_ && word.text == "mirror")
-                tokens_.fail(word.where, "'mirror' cannot be used inside 'terminal { }' (opened at line " +
-                                             std::to_string(terminalAt_->line) + ")");
-            const SourceLocation at = tokens_.peek().where;
-            const std::string axis = tokens_.expectIdentifier("an axis x, y or z after '" + word.text + "'");
-            if (axisIndex(axis) < 0) tokens_.fail(at, "expected an axis x, y or z after '" + word.text + "', found '" + axis + "'");
-            s.axis = std::uint8_t(axisIndex(axis));
-            s.kind = word.text == "rotate" ? StatementKind::Rotate : StatementKind::Mirror;
-            if (s.kind == StatementKind::Rotate) exprs_.compile(ctx, 1, g_.code, s.expr, g_.maxStack);
-        } else if (visitKeyword(word.text, [&](auto kind) {
-                       using K = typename decltype(kind)::type;
-                       s.kind = StatementKind::Primitive;
-                       s.primitive = K::kind;
-                       PrimitiveArguments args{*this, s, ctx};
-                       K::parseArguments(args);
-                   })) {
-        } else if (word.text == "terminal") {
-            return parseTerminal(rule, word.where);
-        } else if (word.text == "child") {
-            if (terminalAt_)
-                tokens_.fail(word.where, "'child' cannot be used inside 'terminal { }' (opened at line " +
-                                             std::to_string(terminalAt_->line) + "): it runs only on genes without children");
-            s.kind = StatementKind::Child;
-            parseChild(rule, s, word.where);
+            if (h.args.empty()) {
+                if (g_.rules.size() >= kMaxRules) tokens_.fail(h.where, "too many rules (at most " + std::to_string(kMaxRules) + ")");
+                h.plainId = int(g_.rules.size());
+                Rule r;
+                r.name = h.name;
+                r.where = h.where;
+                g_.rules.push_back(std::move(r));
+            }
+            headerIndex_.emplace(h.name, int(headers_.size()));
+            headers_.push_back(std::move(h));
         } else {
-            tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + statementList());
+            tokens_.expected("'start', 'attr' or 'rule' at the top level");
         }
-        rule.statements.push_back(s);
     }
-
-    static std::string statementList() {
-        return "param, scale, size, translate, rotate, mirror, " + kindKeywords() + ", terminal or child";
+    const SourceLocation endAt = tokens_.peek().where;
+    for (const auto& [name, value] : overrides_) {
+        (void)value;
+        if (!attrs_.count(name))
+            throw InputError(g_.path, "", "grammar.attr." + name + " is set, but the grammar defines no attr '" + name + "'");
     }
+    g_.attrs = attrs_;
+    // Pass 2: bodies, plain rules in file order, then instances in order of first use.
+    for (std::size_t h = 0; h < headers_.size(); ++h) {
+        if (headers_[h].plainId < 0) continue;
+        BodyScope scope;
+        scope.attrs = &headers_[h].attrs;
+        tokens_.seek(headers_[h].body);
+        inlineStack_ = {int(h)};
+        parseBlock(g_.rules[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
+    }
+    for (std::size_t q = 0; q < queue_.size(); ++q) {
+        const PendingInstance p = queue_[q];
+        BodyScope scope;
+        scope.attrs = &headers_[std::size_t(p.header)].attrs;
+        scope.bindings = p.args;
+        tokens_.seek(headers_[std::size_t(p.header)].body);
+        inlineStack_ = {p.header};
+        parseBlock(g_.rules[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
+    }
+    if (headers_.empty()) tokens_.fail(endAt, "the grammar has no rules (expected 'rule NAME { ... }')");
+    if (startName.empty()) tokens_.fail({1, 1}, "the grammar has no 'start NAME' line");
+    const auto start = headerIndex_.find(startName);
+    if (start == headerIndex_.end()) tokens_.fail(startAt, "start rule '" + startName + "' is not defined");
+    if (headers_[std::size_t(start->second)].plainId < 0)
+        tokens_.fail(startAt, "start rule '" + startName + "' takes arguments; the start rule cannot (write a rule "
+                              "without arguments that derives it: child " + startName + "(...))");
+    g_.start = std::uint16_t(headers_[std::size_t(start->second)].plainId);
+    if (!undefined_.empty()) tokens_.fail(undefined_.front().where, "rule '" + undefined_.front().name + "' is not defined");
+    checkGrammar(g_, [this](const SourceLocation& at, const std::string& m) { tokens_.fail(at, m); });
+    return std::move(g_);
+}
 
-    /// What a kind's parseArguments reads its arguments with (shape/kinds.hpp). Expressions go
-    /// into the statement's expr[index] (three of them), a small tag into its slot field.
-    struct PrimitiveArguments {
-        Parser& parser;
-        Statement& s;
-        const ExpressionContext& ctx;
-        /// `WORD EXPR` if the next token is WORD, into expr[index]; otherwise the constant `otherwise`.
-        void optionalExpression(std::string_view word, float otherwise, int index = 0) {
-            if (parser.tokens_.peek().isWord(word)) {
-                parser.tokens_.take();
-                expression(index);
+int Parser::parseConstantValue(double out[3], const std::string& what, const BodyScope* scope, bool vectorAllowed) {
+    const Token& first = tokens_.peek();
+    if (first.kind == TokenKind::End || first.is(')') || first.is(']') || first.is(',') || first.is('}'))
+        tokens_.expected(what);
+    const ExpressionContext ctx{nullptr, scope ? scope->attrs : &attrs_, scope ? &scope->bindings : nullptr, false,
+                                "a constant here"};
+    std::vector<Instr> code;
+    ExprRef e[3];
+    int stack = 0;
+    const SourceLocation at = first.where;
+    exprs_.compile(ctx, 3, code, e, stack);
+    const int dims = exprs_.lastDims();
+    if (dims == 3 && !vectorAllowed) tokens_.fail(at, "expected a number for " + what + ", found a vector");
+    Grammar scratch;
+    scratch.code = code;
+    float evalStack[kMaxExpressionStack];
+    for (int c = 0; c < 3; ++c) {
+        out[c] = double(evaluateProgram(scratch, e[c], nullptr, nullptr, nullptr, evalStack));
+        if (!std::isfinite(out[c])) tokens_.fail(at, what + " is not a finite number (" + show(out[c]) + ")");
+    }
+    return dims;
+}
+
+double Parser::parseConstant(const std::string& what, const BodyScope* scope) {
+    double v[3];
+    parseConstantValue(v, what, scope, false);
+    return v[0];
+}
+
+void Parser::parseParam(Rule& rule, BodyScope& scope) {
+    const SourceLocation at = tokens_.peek().where;
+    Param p;
+    p.name = tokens_.expectIdentifier("a parameter name after 'param'");
+    for (const Param& q : scope.params)
+        if (q.name == p.name) tokens_.fail(at, "parameter '" + p.name + "' is declared twice in rule " + rule.name);
+    for (const Binding& b : scope.bindings)
+        if (b.name == p.name) tokens_.fail(at, "parameter name '" + p.name + "' is already an argument or a let value");
+    if (isReservedName(p.name))
+        tokens_.fail(at, "parameter name '" + p.name + "' is reserved (scope, parent, pi and the functions)");
+    if (scope.attrs->count(p.name)) tokens_.fail(at, "parameter name '" + p.name + "' is already an attr");
+    tokens_.expect('=', "after the parameter name");
+    const SourceLocation priorAt = tokens_.peek().where;
+    const std::string kind =
+        tokens_.expectIdentifier("a prior: uniform(a, b), normal(mu, sigma) in [a, b], int(a, b) or choice(x, y, ...)");
+    if (kind != "uniform" && kind != "normal" && kind != "int" && kind != "choice")
+        tokens_.fail(priorAt, "unknown prior '" + kind + "': expected uniform, normal, int or choice");
+    tokens_.expect('(', "after " + kind);
+    double a[3], b[3];
+    if (kind == "uniform" || kind == "normal" || kind == "int") {
+        int da = parseConstantValue(a, "the first argument of " + kind, &scope, true);
+        tokens_.expect(',', "between the two arguments of " + kind);
+        int db = parseConstantValue(b, "the second argument of " + kind, &scope, true);
+        tokens_.expect(')', "after the two arguments of " + kind);
+        p.dims = std::uint8_t(std::max(da, db));
+        if (kind == "int" && p.dims != 1) tokens_.fail(priorAt, "int(a, b) takes two numbers, not vectors");
+        for (int c = 0; c < 3; ++c) {
+            Prior& pr = p.prior[c];
+            pr.kind = kind == "uniform" ? PriorKind::Uniform : kind == "normal" ? PriorKind::Normal : PriorKind::Int;
+            if (kind == "normal") {
+                pr.mu = float(a[c]);
+                pr.sigma = float(b[c]);
+                if (!(b[c] > 0)) tokens_.fail(priorAt, "normal(mu, sigma) needs sigma > 0, got " + show(b[c]));
             } else {
-                constant(index, otherwise);
+                pr.lo = float(a[c]);
+                pr.hi = float(b[c]);
+                if (!(a[c] <= b[c]))
+                    tokens_.fail(priorAt, kind + "(a, b) needs a <= b, got " + show(a[c]) + " > " + show(b[c]));
             }
         }
-        /// A scalar expression (required) into expr[index].
-        void expression(int index) {
-            ExprRef e[3];
-            parser.exprs_.compile(ctx, 1, parser.g_.code, e, parser.g_.maxStack);
-            s.expr[index] = e[0];
+        if (kind == "int") {
+            if (std::fabs(a[0]) > kMaxIntBound || std::fabs(b[0]) > kMaxIntBound)
+                tokens_.fail(priorAt, "int(a, b) bounds must lie within [-16777216, 16777216]");
+            if (std::ceil(a[0]) > std::floor(b[0]))
+                tokens_.fail(priorAt, "int(" + show(a[0]) + ", " + show(b[0]) + ") contains no whole number");
         }
-        /// The constant `v` into expr[index].
-        void constant(int index, float v) { s.expr[index] = parser.constantExpression(v); }
-        /// True (and the word taken) if the next token is the word `w`.
-        bool word(std::string_view w) {
-            if (!parser.tokens_.peek().isWord(w)) return false;
-            parser.tokens_.take();
-            return true;
+        if (kind == "normal") {
+            if (!tokens_.peek().isWord("in")) tokens_.expected("'in [lo, hi]' after normal(mu, sigma): its support must be bounded");
+            tokens_.take();
+            tokens_.expect('[', "after 'in'");
+            double lo[3], hi[3];
+            int dl = parseConstantValue(lo, "the lower bound", &scope, true);
+            tokens_.expect(',', "between the bounds");
+            int dh = parseConstantValue(hi, "the upper bound", &scope, true);
+            tokens_.expect(']', "to close the bounds");
+            p.dims = std::uint8_t(std::max<int>({p.dims, dl, dh}));
+            for (int c = 0; c < 3; ++c) {
+                p.prior[c].lo = float(lo[c]);
+                p.prior[c].hi = float(hi[c]);
+                if (!(lo[c] <= hi[c]))
+                    tokens_.fail(priorAt, "normal(...) in [lo, hi] needs lo <= hi, got " + show(lo[c]) + " > " + show(hi[c]));
+            }
         }
-        /// The next token must be `c` (else a located error "expected 'c' WHAT").
-        void expect(char c, const std::string& what) { parser.tokens_.expect(c, what); }
-        /// A located error at the next token: "expected WHAT, found ...".
-        [[noreturn]] void expected(const std::string& what) { parser.tokens_.expected(what); }
-        /// A small number the kind's emit reads back as args.slot().
-        void tag(std::uint16_t v) { s.slot = v; }
-        /// A mesh file name in quotes; its index in Grammar::meshes into slot.
-        void meshFile() { s.slot = parser.parseMesh(); }
-    };
-
-    ExprRef constantExpression(float v) {
-        const ExprRef e{std::uint32_t(g_.code.size()), std::uint32_t(g_.code.size() + 1)};
-        g_.code.push_back({OpCode::Const, 0, 0, v});
-        g_.maxStack = std::max(g_.maxStack, 1);
-        return e;
+    } else {  // choice
+        Prior& pr = p.prior[0];
+        pr.kind = PriorKind::Choice;
+        pr.choiceBegin = std::uint32_t(g_.choiceValues.size());
+        do {
+            if (pr.choiceCount > 0) tokens_.take();
+            g_.choiceValues.push_back(float(parseConstant("a number in choice(...)", &scope)));
+            ++pr.choiceCount;
+        } while (tokens_.peek().is(','));
+        tokens_.expect(')', "to close choice(...)");
+        pr.lo = pr.hi = g_.choiceValues[pr.choiceBegin];
+        for (std::uint32_t i = 0; i < pr.choiceCount; ++i) {
+            pr.lo = std::min(pr.lo, g_.choiceValues[pr.choiceBegin + i]);
+            pr.hi = std::max(pr.hi, g_.choiceValues[pr.choiceBegin + i]);
+        }
     }
+    p.first = rule.paramFloats;
+    rule.paramFloats = std::uint16_t(rule.paramFloats + p.dims);
+    if (rule.paramFloats > 256) tokens_.fail(at, "rule " + rule.name + " has more than 256 parameter values");
+    scope.params.push_back(p);
+    p.name = scope.prefix + p.name;
+    rule.params.push_back(p);
+}
 
-    /// terminal { STATEMENTS }: statements that run only when the gene has no expressed
-    /// children (a branch that ends gets its foliage); the scope is restored after the block.
-    void parseTerminal(Rule& rule, const SourceLocation& at) {
-        if (terminalAt_)
-            tokens_.fail(at, "'terminal' blocks cannot be nested (the outer one opened at line " +
-                                 std::to_string(terminalAt_->line) + ")");
-        tokens_.expect('{', "after 'terminal'");
-        terminalAt_ = at;
-        const std::size_t begin = rule.statements.size();
-        Statement open{};
-        open.kind = StatementKind::TerminalBegin;
-        rule.statements.push_back(open);
-        while (!tokens_.peek().is('}')) {
-            if (tokens_.peek().kind == TokenKind::End)
-                tokens_.expected("'}' to close the terminal block opened at line " + std::to_string(at.line));
-            parseStatement(rule);
-        }
-        tokens_.take();
-        terminalAt_.reset();
-        rule.statements[begin].end = std::uint32_t(rule.statements.size());
-        Statement close{};
-        close.kind = StatementKind::TerminalEnd;
-        rule.statements.push_back(close);
+std::vector<Binding> Parser::parseArguments(int header, const SourceLocation& at, BodyScope& caller, Rule* rule,
+                                            bool requireConstant) {
+    const RuleHeader& h = headers_[std::size_t(header)];
+    std::vector<Binding> args;
+    if (!tokens_.peek().is('(')) {
+        if (!h.args.empty())
+            tokens_.fail(at, "rule " + h.name + " takes " + std::to_string(h.args.size()) + " argument(s) (" +
+                                 [&] {
+                                     std::string s;
+                                     for (const auto& a : h.args) s += (s.empty() ? "" : ", ") + a;
+                                     return s;
+                                 }() + "): write " + h.name + "(...)");
+        return args;
     }
-
-    /// mesh "file": a closed OBJ/PLY/STL mesh, found relative to the grammar file's folder and
-    /// read once (the same file twice shares one shape).
-    std::uint16_t parseMesh() {
-        const Token name = tokens_.take();
-        if (name.kind != TokenKind::String) tokens_.fail(name.where, "expected a file name in quotes after 'mesh', found " + name.describe());
-        for (std::size_t i = 0; i < g_.meshes.size(); ++i)
-            if (g_.meshes[i].path == name.text) return std::uint16_t(i);
-        if (g_.meshes.size() >= 65535) tokens_.fail(name.where, "too many different meshes (at most 65535)");
-        const std::filesystem::path file = std::filesystem::path(g_.path).parent_path() / name.text;
-        try {
-            g_.meshes.push_back(loadMeshShape(file.string()));
-        } catch (const InputError& e) {
-            tokens_.fail(name.where, "mesh \"" + name.text + "\": " + e.what());
+    if (h.args.empty()) tokens_.fail(tokens_.peek().where, "rule " + h.name + " takes no arguments (define it as rule " + h.name + "(NAME, ...) to give it some)");
+    tokens_.take();
+    for (std::size_t k = 0; k < h.args.size(); ++k) {
+        if (k > 0) {
+            if (tokens_.peek().is(')'))
+                tokens_.fail(tokens_.peek().where, "rule " + h.name + " takes " + std::to_string(h.args.size()) +
+                                                        " arguments, this call gives " + std::to_string(k));
+            tokens_.expect(',', "between the arguments of " + h.name);
         }
-        g_.meshes.back().path = name.text;
-        return std::uint16_t(g_.meshes.size() - 1);
+        Binding b;
+        b.name = h.args[k];
+        const SourceLocation argAt = tokens_.peek().where;
+        const ExpressionContext ctx{&caller.params, caller.attrs, &caller.bindings, true, nullptr};
+        ExprRef e[3];
+        exprs_.compile(ctx, 3, g_.code, e, g_.maxStack);
+        b.dims = exprs_.lastDims();
+        b.constant = true;
+        for (int c = 0; c < b.dims; ++c) b.constant = b.constant && isConstantExpression(g_.code, e[c]);
+        if (b.constant) {
+            float evalStack[kMaxExpressionStack];
+            for (int c = 0; c < 3; ++c) b.value[c] = evaluateProgram(g_, e[c], nullptr, nullptr, nullptr, evalStack);
+        } else if (requireConstant || rule == nullptr) {
+            tokens_.fail(argAt, "the arguments of a child must be known when the grammar is read (numbers, attrs, "
+                                "the rule's own constant arguments); '" + h.args[k] +
+                                    "' here depends on a parameter or the scope: let the child compute it, or "
+                                    "use an inline call (a successor of split, comp or a lot)");
+        } else {
+            Statement let{};
+            let.kind = StatementKind::Let;
+            let.axis = std::uint8_t(b.dims);
+            let.slot = allocateFrame(*rule, b.dims, argAt);
+            for (int c = 0; c < b.dims; ++c) let.expr[c] = e[c];
+            b.index = let.slot;
+            rule->statements.push_back(let);
+        }
+        args.push_back(b);
     }
+    if (!tokens_.peek().is(')'))
+        tokens_.fail(tokens_.peek().where, "rule " + h.name + " takes " + std::to_string(h.args.size()) +
+                                               " argument(s), this call gives more");
+    tokens_.take();
+    return args;
+}
 
-    TokenStream tokens_;
-    ExpressionCompiler exprs_;
-    Grammar g_;
-    std::map<std::string, double> attrs_;
-    std::string startName_;
-    std::vector<RuleRef> pendingRefs_;
-    std::map<std::string, int> ruleIndex_;
-    std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
-};
+std::uint16_t Parser::instance(int header, const std::vector<Binding>& args) {
+    const RuleHeader& h = headers_[std::size_t(header)];
+    if (args.empty()) return std::uint16_t(h.plainId);
+    std::string name = h.name + "(";
+    for (std::size_t k = 0; k < args.size(); ++k) {
+        if (k > 0) name += ", ";
+        if (args[k].dims == 3)
+            name += "(" + show(args[k].value[0]) + ", " + show(args[k].value[1]) + ", " + show(args[k].value[2]) + ")";
+        else
+            name += show(args[k].value[0]);
+    }
+    name += ")";
+    if (const auto it = instances_.find(name); it != instances_.end()) return it->second;
+    if (g_.rules.size() >= kMaxRules) tokens_.fail(h.where, "too many rules and rule instances (at most " + std::to_string(kMaxRules) + ")");
+    const auto id = std::uint16_t(g_.rules.size());
+    Rule r;
+    r.name = name;
+    r.where = h.where;
+    g_.rules.push_back(std::move(r));
+    instances_.emplace(name, id);
+    queue_.push_back({header, id, args});
+    return id;
+}
 
-}  // namespace
+void Parser::parseChild(Rule& rule, Statement& s, const SourceLocation& childAt, BodyScope& scope) {
+    Slot slot;
+    do {
+        if (!slot.rules.empty()) tokens_.take();
+        float weight = 1.0f;
+        if (tokens_.peek().is('[')) {
+            tokens_.take();
+            const SourceLocation at = tokens_.peek().where;
+            weight = float(parseConstant("a weight in [ ]", &scope));
+            if (!(weight > 0)) tokens_.fail(at, "an alternative's weight must be > 0, got " + show(weight));
+            tokens_.expect(']', "after the weight");
+        }
+        const SourceLocation at = tokens_.peek().where;
+        const std::string name = tokens_.expectIdentifier("a rule name after 'child'");
+        if ((name == "prob" || name == "max") && tokens_.peek().kind == TokenKind::Number)
+            tokens_.fail(at, "expected a rule name after 'child', found '" + name + "' (" + name +
+                                 " comes after the rule names: child A " + name + " N)");
+        const auto h = headerIndex_.find(name);
+        std::uint16_t id = 0;
+        if (h == headerIndex_.end()) {
+            undefined_.push_back({name, at});
+            if (tokens_.peek().is('(')) {  // skip the arguments of an undefined rule
+                int depth = 0;
+                do {
+                    if (tokens_.peek().is('(')) ++depth;
+                    if (tokens_.peek().is(')')) --depth;
+                    if (tokens_.peek().kind == TokenKind::End) tokens_.expected("')' to close the arguments");
+                    tokens_.take();
+                } while (depth > 0);
+            }
+        } else {
+            id = instance(h->second, parseArguments(h->second, at, scope, nullptr, true));
+        }
+        slot.rules.push_back(id);
+        slot.weights.push_back(weight);
+        if (tokens_.peek().is(',') && tokens_.peekSecond().is('['))
+            tokens_.fail(tokens_.peek().where, "alternatives of a child slot are separated by '|', not ',' "
+                                               "(child [0.25] B | [0.75] C)");
+    } while (tokens_.peek().is('|'));
+    float totalWeight = 0;
+    for (float w : slot.weights) totalWeight += w;
+    if (!std::isfinite(totalWeight))
+        tokens_.fail(childAt, "the weights of this child slot add up to more than a 32-bit float can hold");
+    bool seenProb = false, seenMax = false;
+    while (tokens_.peek().isWord("prob") || tokens_.peek().isWord("max")) {
+        const Token key = tokens_.take();
+        bool& seen = key.text == "prob" ? seenProb : seenMax;
+        if (seen) tokens_.fail(key.where, "'" + key.text + "' is given twice for this child slot");
+        seen = true;
+        const SourceLocation at = tokens_.peek().where;
+        const double v = parseConstant("a number after '" + key.text + "'", &scope);
+        if (key.text == "prob") {
+            if (!(v >= 0 && v <= 1)) tokens_.fail(at, "prob must be in [0, 1], got " + show(v));
+            slot.probability = float(v);
+        } else {
+            if (!(v >= 1 && v <= kMaxChildPositions && v == std::floor(v)))
+                tokens_.fail(at, "max must be a whole number from 1 to 64, got " + show(v));
+            slot.maxCount = std::uint16_t(v);
+        }
+    }
+    if (rule.childOffsets + slot.maxCount > kMaxChildPositions)
+        tokens_.fail(childAt, "rule " + rule.name + " has more than 64 child positions (the sum of its slots' max)");
+    slot.firstChild = rule.childOffsets;
+    slot.edge = g_.edgeCount++;
+    rule.childOffsets = std::uint16_t(rule.childOffsets + slot.maxCount);
+    s.slot = std::uint16_t(rule.slots.size());
+    rule.slots.push_back(std::move(slot));
+}
 
-Grammar parseGrammar(const std::string& text, const std::string& path) { return Parser(text, path).run(); }
+}  // namespace grammar_detail
 
-Grammar loadGrammar(const std::string& path) {
+Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
+    return grammar_detail::Parser(text, path, overrides).run();
+}
+
+Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a grammar file");
     std::ifstream in(path, std::ios::binary);
@@ -452,7 +433,7 @@ Grammar loadGrammar(const std::string& path) {
     std::ostringstream ss;
     ss << in.rdbuf();
     if (in.bad()) throw InputError(path, "", "cannot read grammar file");
-    return parseGrammar(ss.str(), path);
+    return parseGrammar(ss.str(), path, overrides);
 }
 
 }  // namespace shapevo

@@ -1,0 +1,120 @@
+// The parser's state, shared by its two files (internal to grammar/): parser.cpp reads the top
+// level, rule headers, priors and child slots and instantiates rules; statements.cpp reads rule
+// bodies (statements, blocks, conditionals, splits, components, lots) and inline calls.
+//
+// How a file is read: a first pass records every rule's header (name, arguments, where its body
+// starts) and the attrs; then each rule without arguments is compiled in file order (its rule id
+// is its place among them), and each rule with arguments once per distinct tuple of constant
+// arguments it is called with (`child Branch(0, 120)`: an instance named "Branch(0, 120)", with
+// rule ids after the plain rules, in order of first use). A rule named as a successor of a
+// split, comp or lot is compiled inline into the calling rule (its parameters and slots become
+// the caller gene's), once per call site.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grammar/expression.hpp"
+#include "grammar/grammar.hpp"
+#include "grammar/lexer.hpp"
+#include "grammar/parser.hpp"
+
+namespace shapevo::grammar_detail {
+
+/// Rule ids are 16-bit in genes; the largest |bound| of int(a, b) keeps every whole number in
+/// range exactly representable as a float.
+inline constexpr std::size_t kMaxRules = 65535;
+inline constexpr double kMaxIntBound = 16777216.0;  // 2^24
+inline constexpr int kMaxChildPositions = 64;
+inline constexpr int kMaxInlineDepth = 32;
+inline constexpr std::size_t kMaxStatements = 1u << 20;
+
+std::string show(double v);
+int axisIndex(const std::string& s);
+
+struct RuleHeader {
+    std::string name;
+    SourceLocation where;
+    std::vector<std::string> args;
+    std::vector<SourceLocation> argWhere;
+    std::size_t body = 0;                  ///< token position just after its '{'
+    std::map<std::string, double> attrs;   ///< attrs defined above it
+    int plainId = -1;                      ///< rule id when it takes no arguments
+};
+
+/// What the current scope is known to be while a body is compiled (for located errors such as
+/// `comp` on a flat scope); Unknown where it depends on the caller.
+enum class ScopeForm { Unknown, Flat, Volume };
+
+/// The names visible in one body being compiled: its parameters (as declared there) and its
+/// arguments and lets.
+struct BodyScope {
+    std::vector<Param> params;
+    std::vector<Binding> bindings;
+    const std::map<std::string, double>* attrs = nullptr;
+    std::string prefix;                    ///< inline bodies: "Callee." before parameter names in Rule::params
+    ScopeForm form = ScopeForm::Unknown;
+};
+
+class Parser {
+public:
+    Parser(const std::string& text, const std::string& path, const AttrOverrides& overrides);
+    Grammar run();
+
+    // --- parser.cpp ---
+    /// A constant (attr values, prior arguments, weights, prob, max): an expression over numbers,
+    /// attrs and constant arguments. Returns its dimension; vectors fill out[0..2].
+    int parseConstantValue(double out[3], const std::string& what, const BodyScope* scope, bool vectorAllowed);
+    double parseConstant(const std::string& what, const BodyScope* scope);
+    void parseParam(Rule& rule, BodyScope& scope);
+    void parseChild(Rule& rule, Statement& s, const SourceLocation& childAt, BodyScope& scope);
+    /// The rule id for `header` called with these constant arguments (creating the instance).
+    std::uint16_t instance(int header, const std::vector<Binding>& args);
+    /// Arguments `( E, ... )` of a call of `header` at `at`, as bindings (constant where they fold).
+    std::vector<Binding> parseArguments(int header, const SourceLocation& at, BodyScope& caller, Rule* rule,
+                                        bool requireConstant);
+
+    // --- statements.cpp ---
+    /// Statements up to the closing '}' (taken), appended to rule.statements.
+    void parseBlock(Rule& rule, BodyScope& scope, const std::string& closes);
+    void parseStatement(Rule& rule, BodyScope& scope);
+    void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
+    void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
+    void parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::vector<Piece>& pieces);
+    void parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form);
+    /// One successor (a rule name with arguments: inline; `{ ... }`; `nil`): fills piece.begin/end.
+    void parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form);
+    void inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeForm form);
+    void parseTerminal(Rule& rule, BodyScope& scope, const SourceLocation& at);
+    std::uint16_t parseMesh();
+    ExprRef constantExpression(float v);
+    void compileScalar(const BodyScope& scope, ExprRef& out);
+    void compileVector(const BodyScope& scope, ExprRef out[3]);
+    std::uint16_t allocateFrame(Rule& rule, int floats, const SourceLocation& at);
+    std::string statementList() const;
+
+    TokenStream tokens_;
+    ExpressionCompiler exprs_;
+    Grammar g_;
+    AttrOverrides overrides_;
+    std::map<std::string, double> attrs_;
+    std::vector<RuleHeader> headers_;
+    std::map<std::string, int> headerIndex_;
+    std::map<std::string, std::uint16_t> instances_;  ///< instance name -> rule id
+    struct PendingInstance {
+        int header;
+        std::uint16_t id;
+        std::vector<Binding> args;
+    };
+    std::vector<PendingInstance> queue_;
+    struct UndefinedRef {
+        std::string name;
+        SourceLocation where;
+    };
+    std::vector<UndefinedRef> undefined_;
+    std::vector<int> inlineStack_;             ///< headers being compiled inline (cycle check)
+    std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
+};
+
+}  // namespace shapevo::grammar_detail

@@ -1,0 +1,267 @@
+// Statements that make several scopes out of one, each running a successor: split and repeat
+// along an axis, comp (a volume's faces), lots (rect, circle, center, corners, edges). The
+// Pieces statement comes first; each successor's statements follow it in the rule, in order
+// (a successor named twice, or comp's `side`, is compiled once and shared), then the statement
+// after the whole construct. Successors: a rule name with arguments (compiled inline: its
+// parameters and child slots become this gene's), `{ statements }`, or `nil`.
+#include <cmath>
+
+#include "grammar/parser_state.hpp"
+
+namespace shapevo::grammar_detail {
+
+namespace {
+constexpr const char* kFaceNames[kFaces] = {"top", "bottom", "front", "back", "left", "right"};
+}
+
+void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form) {
+    piece.begin = std::uint32_t(rule.statements.size());
+    const Token& t = tokens_.peek();
+    if (t.isWord("nil")) {
+        tokens_.take();
+    } else if (t.is('{')) {
+        const SourceLocation at = tokens_.take().where;
+        BodyScope inner = scope;
+        inner.form = form;
+        parseBlock(rule, inner, "the successor block opened at line " + std::to_string(at.line));
+    } else if (t.kind == TokenKind::Identifier) {
+        const Token name = tokens_.take();
+        if (!headerIndex_.count(name.text))
+            tokens_.fail(name.where, "rule '" + name.text + "' is not defined (a successor is a rule name, "
+                                     "'{ statements }' or nil)");
+        inlineCall(rule, scope, name, form);
+    } else {
+        tokens_.expected("a successor: a rule name, '{ statements }' or nil");
+    }
+    piece.end = std::uint32_t(rule.statements.size());
+}
+
+void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeForm form) {
+    const int header = headerIndex_.at(name.text);
+    for (std::size_t k = 0; k < inlineStack_.size(); ++k) {
+        if (inlineStack_[k] != header) continue;
+        std::string path;
+        for (std::size_t j = k; j < inlineStack_.size(); ++j) path += headers_[std::size_t(inlineStack_[j])].name + " -> ";
+        tokens_.fail(name.where, "inline calls never end: " + path + name.text +
+                                     "; a rule cannot run inside itself (recursion goes through 'child')");
+    }
+    if (int(inlineStack_.size()) >= kMaxInlineDepth)
+        tokens_.fail(name.where, "inline calls are nested more than " + std::to_string(kMaxInlineDepth) + " deep");
+    BodyScope callee;
+    callee.attrs = &headers_[std::size_t(header)].attrs;
+    callee.prefix = caller.prefix + name.text + ".";
+    callee.form = form;
+    callee.bindings = parseArguments(header, name.where, caller, &rule, false);
+    inlineStack_.push_back(header);
+    const std::size_t resume = tokens_.mark();
+    tokens_.seek(headers_[std::size_t(header)].body);
+    parseBlock(rule, callee, "rule " + name.text);
+    tokens_.seek(resume);
+    inlineStack_.pop_back();
+}
+
+void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form) {
+    do {
+        if (!pieces.empty()) tokens_.take();
+        Piece p;
+        parseSuccessor(rule, scope, p, form);
+        pieces.push_back(p);
+    } while (tokens_.peek().is('|'));
+}
+
+void Parser::parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::vector<Piece>& pieces) {
+    const SourceLocation open = tokens_.peek().where;
+    tokens_.expect('{', "after the split axis (split AXIS { SIZE: SUCCESSOR | ... })");
+    bool inGroup = false, hadGroup = false;
+    while (true) {
+        if (tokens_.peek().is('{')) {
+            if (inGroup || hadGroup)
+                tokens_.fail(tokens_.peek().where, "a split has at most one repeat group { ... }*, and groups do not nest");
+            tokens_.take();
+            inGroup = true;
+        }
+        Piece p;
+        p.repeated = inGroup;
+        const Token& t = tokens_.peek();
+        if (t.is('\'')) {
+            tokens_.take();
+            p.size = PieceSize::Relative;
+        } else if (t.is('~')) {
+            tokens_.take();
+            p.size = PieceSize::Floating;
+        }
+        if (tokens_.peek().is(':') || tokens_.peek().is('|') || tokens_.peek().is('}'))
+            tokens_.expected("the size of a piece (a number of units, 'FRACTION or ~SIZE) before ':'");
+        compileScalar(scope, p.value);
+        tokens_.expect(':', "after the size of a piece (SIZE: SUCCESSOR)");
+        parseSuccessor(rule, scope, p, scope.form);
+        pieces.push_back(p);
+        if (inGroup && tokens_.peek().is('}')) {
+            tokens_.take();
+            tokens_.expect('*', "after the '}' of a repeat group ({ SIZE: A | ... }* repeats as many times as fit)");
+            inGroup = false;
+            hadGroup = true;
+        }
+        if (tokens_.peek().is('|')) {
+            tokens_.take();
+            continue;
+        }
+        if (tokens_.peek().is('}') && !inGroup) {
+            tokens_.take();
+            break;
+        }
+        tokens_.expected(inGroup ? "'|' or '}*' in the repeat group opened inside the split at line " + std::to_string(open.line)
+                                 : "'|' between the pieces of a split, or '}' to close it");
+    }
+    if (tokens_.peek().is('*')) {
+        if (hadGroup) tokens_.fail(tokens_.peek().where, "a split with a repeat group cannot also repeat as a whole");
+        tokens_.take();
+        for (Piece& p : pieces) p.repeated = true;
+    }
+    (void)list;
+}
+
+void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
+    PieceList list;
+    std::vector<Piece> pieces;
+    const std::size_t at = rule.statements.size();
+    Statement st{};
+    st.kind = StatementKind::Pieces;
+    rule.statements.push_back(st);
+    auto tuple = [&](int first, int n, const std::string& what) {
+        tokens_.expect('(', "to open " + what);
+        for (int k = 0; k < n; ++k) {
+            if (k > 0) {
+                if (tokens_.peek().is(')'))
+                    tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives " + std::to_string(k));
+                tokens_.expect(',', "between the numbers of " + what);
+            }
+            compileScalar(scope, list.arg[first + k]);
+        }
+        if (!tokens_.peek().is(')'))
+            tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives more");
+        tokens_.take();
+    };
+    auto needFlat = [&](const char* what) {
+        if (scope.form == ScopeForm::Volume)
+            tokens_.fail(word.where, std::string("'") + what + "' needs a flat scope (a lot or a face); this scope is a "
+                                     "volume (extruded above): take a face with comp first");
+    };
+    auto axis = [&]() {
+        const SourceLocation a = tokens_.peek().where;
+        const std::string name = tokens_.expectIdentifier("an axis x, y or z after '" + word.text + "'");
+        if (axisIndex(name) < 0) tokens_.fail(a, "expected an axis x, y or z after '" + word.text + "', found '" + name + "'");
+        return std::uint8_t(axisIndex(name));
+    };
+    const std::string& w = word.text;
+    if (w == "split") {
+        list.kind = PiecesKind::Split;
+        list.axis = axis();
+        parseSplitList(rule, scope, list, pieces);
+    } else if (w == "repeat") {
+        list.axis = axis();
+        if (tokens_.peek().isWord("count")) {
+            tokens_.take();
+            list.kind = PiecesKind::RepeatCount;
+        } else {
+            list.kind = PiecesKind::RepeatSize;
+            if (tokens_.peek().is('~')) {
+                tokens_.take();
+                list.floating = true;
+            }
+        }
+        compileScalar(scope, list.arg[0]);
+        parseSuccessorList(rule, scope, pieces, scope.form);
+    } else if (w == "comp") {
+        if (scope.form == ScopeForm::Flat)
+            tokens_.fail(word.where, "'comp' takes a volume apart into its faces, but this scope is flat (a lot or a "
+                                     "face): extrude it first");
+        list.kind = PiecesKind::Comp;
+        tokens_.expect('{', "after 'comp' (comp { FACE: SUCCESSOR | ... })");
+        bool named[kFaces] = {};
+        std::optional<Piece> side;
+        SourceLocation sideAt{};
+        while (true) {
+            const SourceLocation fa = tokens_.peek().where;
+            const std::string face = tokens_.expectIdentifier("a face name (top, bottom, front, back, left, right or side)");
+            int f = -1;
+            for (int k = 0; k < kFaces; ++k)
+                if (face == kFaceNames[k]) f = k;
+            if (f < 0 && face != "side")
+                tokens_.fail(fa, "unknown face '" + face + "': expected top, bottom, front, back, left, right or side");
+            if ((f >= 0 && named[f]) || (face == "side" && side))
+                tokens_.fail(fa, "face '" + face + "' is given twice in this comp");
+            tokens_.expect(':', "after the face name (FACE: SUCCESSOR)");
+            Piece p;
+            parseSuccessor(rule, scope, p, ScopeForm::Flat);
+            if (f >= 0) {
+                named[f] = true;
+                p.face = std::uint8_t(f);
+                pieces.push_back(p);
+            } else {
+                side = p;
+                sideAt = fa;
+            }
+            if (tokens_.peek().is('|')) {
+                tokens_.take();
+                continue;
+            }
+            tokens_.expect('}', "to close the comp (or '|' before the next face)");
+            break;
+        }
+        if (side) {
+            for (FaceName f : {FaceName::Front, FaceName::Right, FaceName::Back, FaceName::Left}) {
+                if (named[int(f)]) continue;
+                Piece p = *side;
+                p.face = std::uint8_t(f);
+                pieces.push_back(p);
+            }
+        }
+    } else if (w == "lot") {
+        const SourceLocation ka = tokens_.peek().where;
+        const std::string kind = tokens_.expectIdentifier("'rect' or 'circle' after 'lot'");
+        if (kind == "rect") {
+            list.kind = PiecesKind::LotRect;
+            tuple(0, 4, "lot rect (x1, y1, x2, y2)");
+        } else if (kind == "circle") {
+            list.kind = PiecesKind::LotCircle;
+            tuple(0, 3, "lot circle (cx, cy, r)");
+        } else {
+            tokens_.fail(ka, "unknown lot '" + kind + "': expected rect (x1, y1, x2, y2) or circle (cx, cy, r)");
+        }
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+        if (pieces.size() > 1) tokens_.fail(ka, "a lot has one successor");
+    } else if (w == "center") {
+        needFlat("center");
+        list.kind = PiecesKind::Center;
+        tuple(0, 2, "center (width, depth)");
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    } else if (w == "corners") {
+        needFlat("corners");
+        list.kind = PiecesKind::Corners;
+        tuple(0, 2, "corners (rx, ry)");
+        if (tokens_.peek().isWord("on")) {
+            tokens_.take();
+            tuple(2, 4, "corners ... on (c1, c2, c3, c4)");
+        } else {
+            for (int k = 2; k < 6; ++k) list.arg[k] = constantExpression(1.0f);
+        }
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    } else {  // edges
+        needFlat("edges");
+        list.kind = PiecesKind::Edges;
+        tuple(0, 2, "edges (rx, ry)");
+        tuple(2, 4, "edges ... (n1, n2, n3, n4)");
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    }
+    if (pieces.empty()) tokens_.fail(word.where, "'" + w + "' needs at least one piece");
+    if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp and lot statements (at most 65535)");
+    list.first = std::uint32_t(g_.pieces.size());
+    list.count = std::uint32_t(pieces.size());
+    g_.pieces.insert(g_.pieces.end(), pieces.begin(), pieces.end());
+    rule.statements[at].slot = std::uint16_t(g_.pieceLists.size());
+    rule.statements[at].end = std::uint32_t(rule.statements.size());
+    g_.pieceLists.push_back(list);
+}
+
+}  // namespace shapevo::grammar_detail
