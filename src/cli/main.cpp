@@ -4,6 +4,7 @@
 // more than one rank. Results go to stdout; errors, warnings and notices ("shapevo: ...") to
 // stderr (cli/log_router.hpp). Output file names are checked (extension, existence), and a new
 // run's memory estimate, before anything is read or created.
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <filesystem>
@@ -15,7 +16,7 @@
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/checkpoint_path.hpp"
 #include "genome/genome_file.hpp"
-#include "genome/operators.hpp"
+#include "genome/sample.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
 #include "island/mpi_session.hpp"
@@ -54,6 +55,27 @@ std::uint64_t parseSeed(const std::string& text, const std::string& option, std:
     return v;
 }
 
+/// --count: a whole number in [1, max].
+std::uint32_t parseCount(const std::string& text, std::uint32_t max) {
+    std::uint32_t v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (text.empty() || ptr != end || ec != std::errc() || v < 1 || v > max)
+        throw InputError("--count", "", "expected a whole number of files from 1 to " + std::to_string(max) + ", got \"" +
+                                            shortened(text) + "\"");
+    return v;
+}
+
+/// The k-th (1-based) of `count` output names: `path` itself if count is 1, else `path` with
+/// "-NNN" before its extension (out.obj -> out-001.obj; at least 3 digits, as many as count has).
+std::string numberedPath(const std::string& path, std::uint32_t k, std::uint32_t count) {
+    if (count == 1) return path;
+    const std::filesystem::path p(path);
+    std::string n = std::to_string(k);
+    n.insert(0, std::max<std::size_t>(3, std::to_string(count).size()) - n.size(), '0');
+    return (p.parent_path() / (p.stem().string() + "-" + n + p.extension().string())).string();
+}
+
 /// MPI ranks on this machine, from the launcher's environment (Open MPI, MPICH, Slurm); 1 if unknown.
 int ranksOnThisMachine() {
     for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "SLURM_NTASKS_PER_NODE"})
@@ -63,6 +85,11 @@ int ranksOnThisMachine() {
         }
     return 1;
 }
+
+/// sample: derivations drawn per file before the size window counts as unreachable, and the
+/// most files one call writes.
+constexpr std::uint32_t kSampleAttempts = 10000;
+constexpr std::uint32_t kMaxSampleCount = 1000000;
 
 /// What inspect and export accept (checkpoint/checkpoint_path.hpp).
 constexpr const char* kCheckpointPaths =
@@ -94,16 +121,29 @@ int main(int argc, char** argv) {
     run->add_flag("-q,--quiet", quiet, "no per-generation progress lines");
 
     // sample
-    auto* sample = app.add_subcommand("sample", "Write one random derivation of a grammar (no evolution)");
+    auto* sample = app.add_subcommand("sample", "Write random derivations of a grammar (no evolution): every sibling position "
+                                                "of a slot is expressed with the slot's prob, independently, recursively");
     std::string grammarPath, sampleOut, genomeOut;
-    std::string sampleSeed = "1";
+    std::string sampleSeed = "1", sampleCount = "1";
     std::uint32_t minGenes = 1, maxGenes = 100;
+    const std::string redraws = std::to_string(kSampleAttempts);
     sample->add_option("grammar", grammarPath, "grammar file")->required();
-    sample->add_option("--seed", sampleSeed, "random seed, 0 to 2^64-1")->capture_default_str();
-    sample->add_option("--min-genes", minGenes, "grow to at least this many genes (if the grammar allows)")->capture_default_str();
-    sample->add_option("--max-genes", maxGenes, "never more genes than this")->capture_default_str();
+    sample->add_option("--seed", sampleSeed, "random seed, 0 to 2^64-1; with --count N, file k uses seed + k - 1 (mod 2^64)")
+        ->capture_default_str();
+    sample->add_option("--min-genes", minGenes, "a derivation with fewer genes is dropped and drawn again (at most " + redraws +
+                                                    " draws per file, then exit 2); nothing is grown beyond what the grammar's "
+                                                    "prob gives")
+        ->capture_default_str();
+    sample->add_option("--max-genes", maxGenes, "a derivation that would need more genes is abandoned and drawn again (same limit); "
+                                                "never truncated")
+        ->capture_default_str();
     sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb; must not exist)")->required();
     sample->add_option("--genome", genomeOut, "also save the chromosome (a .genome file) for shapevo evaluate");
+    sample->add_option("--count", sampleCount, "write N variations, 1 to " + std::to_string(kMaxSampleCount) +
+                                                   "; for N > 1 every output name gets a number before its extension "
+                                                   "(out.obj -> out-001.obj, out-002.obj, ...; likewise --genome); all are "
+                                                   "checked before any is written")
+        ->capture_default_str();
 
     // target
     auto* target = app.add_subcommand("target", "Make a volume target: closed mesh (OBJ/PLY/STL) -> OpenVDB level set");
@@ -208,6 +248,7 @@ int main(int argc, char** argv) {
             std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(exportPath)), exportFormat, exportOut) << "\n";
         } else if (*sample) {
             const std::uint64_t sampleSeedValue = parseSeed(sampleSeed, "--seed", UINT64_MAX);
+            const std::uint32_t count = parseCount(sampleCount, kMaxSampleCount);
             const std::string sampleFormat = requireOutputFormat(sampleOut, kModelFormats, "-o");
             if (!genomeOut.empty()) requireOutputFormat(genomeOut, kGenomeFormats, "--genome");
             const Grammar g = loadGrammar(grammarPath);
@@ -216,19 +257,44 @@ int main(int argc, char** argv) {
                 throw InputError("--max-genes", "", std::to_string(maxGenes) + " is smaller than the " +
                                                         std::to_string(g.mandatoryGenes[g.start]) + " genes every derivation of " +
                                                         grammarPath + " needs");
-            refuseExisting(sampleOut);
-            if (!genomeOut.empty()) refuseExisting(genomeOut);
-            Rng rng(sampleSeedValue);
-            const GenomeLimits limits{maxGenes};
-            Chromosome c;
-            while (c.genes < minGenes && grow(g, c, rng, limits)) {
+            for (std::uint32_t k = 1; k <= count; ++k) {
+                refuseExisting(numberedPath(sampleOut, k, count));
+                if (!genomeOut.empty()) refuseExisting(numberedPath(genomeOut, k, count));
             }
+            // File k is seed + k - 1, as --count 1 --seed (seed + k - 1) writes it. Every
+            // derivation is drawn once before anything is written, so a size window that cannot
+            // be met leaves no files behind; the second draw repeats the first exactly.
+            auto draw = [&](std::uint32_t k, Chromosome& c) {
+                const std::uint64_t seedK = sampleSeedValue + (k - 1);  // wraps mod 2^64
+                Rng rng(seedK);
+                const SampleOutcome o = sampleDerivation(g, c, rng, minGenes, maxGenes, kSampleAttempts);
+                if (!o.found)
+                    throw InputError("--min-genes/--max-genes", "",
+                                     "no derivation of " + grammarPath + " with " + std::to_string(minGenes) + " to " +
+                                         std::to_string(maxGenes) + " genes in " + std::to_string(o.attempts) + " draws (seed " +
+                                         std::to_string(seedK) + "); the grammar's prob values make that size rare or "
+                                         "impossible: widen the window");
+                return std::pair{seedK, o.attempts};
+            };
+            Chromosome c;
+            for (std::uint32_t k = 1; k <= count; ++k) draw(k, c);
             Geometry geo;
             DeriveScratch scratch;
-            derive(g, c, geo, scratch);
-            writeModelFile(geo, sampleFormat, sampleOut);
-            if (!genomeOut.empty()) writeGenome(g, c, genomeOut);
-            std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives -> " << sampleOut << "\n";
+            for (std::uint32_t k = 1; k <= count; ++k) {
+                const auto [seedK, attempts] = draw(k, c);
+                const std::string modelPath = numberedPath(sampleOut, k, count);
+                derive(g, c, geo, scratch);
+                writeModelFile(geo, sampleFormat, modelPath);
+                std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives (seed " << seedK;
+                if (attempts > 1) std::cout << ", draw " << attempts;
+                std::cout << ") -> " << modelPath;
+                if (!genomeOut.empty()) {
+                    const std::string genomePath = numberedPath(genomeOut, k, count);
+                    writeGenome(g, c, genomePath);
+                    std::cout << ", " << genomePath;
+                }
+                std::cout << "\n";
+            }
         } else if (*target) {
             requireOutputFormat(vdbOut, kTargetFormats, "-o");
             refuseExisting(vdbOut);
