@@ -280,13 +280,14 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
                 const std::uint32_t frame = snapshot();
                 const std::uint32_t top = std::uint32_t(frames.size());
-                const std::uint32_t base = std::uint32_t(scopes.size());
-                for (const PieceScope& p : scratch.pieces) scopes.push_back(p.scope);
                 const PieceList& list = g.pieceLists[st.slot];
+                // Last piece first, scope and task alike: the first piece runs first, and every
+                // task below the one popped refers to scopes below its own (see the resize above).
                 for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
                     const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
                     if (piece.begin == piece.end) continue;  // nil
-                    const std::uint32_t at = base + std::uint32_t(k);
+                    scopes.push_back(scratch.pieces[k].scope);
+                    const auto at = std::uint32_t(scopes.size() - 1);
                     stack.push_back({task.gene, piece.begin, piece.end, at, at, frame, top});
                 }
                 stored = UINT32_MAX;

@@ -101,12 +101,12 @@ Grammar Parser::run() {
                 tokens_.take();
             }
             if (h.args.empty()) {
-                if (g_.rules.size() >= kMaxRules) tokens_.fail(h.where, "too many rules (at most " + std::to_string(kMaxRules) + ")");
-                h.plainId = int(g_.rules.size());
+                if (rules_.size() >= kMaxRules) tokens_.fail(h.where, "too many rules (at most " + std::to_string(kMaxRules) + ")");
+                h.plainId = int(rules_.size());
                 Rule r;
                 r.name = h.name;
                 r.where = h.where;
-                g_.rules.push_back(std::move(r));
+                rules_.push_back(std::move(r));
             }
             headerIndex_.emplace(h.name, int(headers_.size()));
             headers_.push_back(std::move(h));
@@ -128,7 +128,7 @@ Grammar Parser::run() {
         scope.attrs = &headers_[h].attrs;
         tokens_.seek(headers_[h].body);
         inlineStack_ = {int(h)};
-        parseBlock(g_.rules[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
+        parseBlock(rules_[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
     }
     for (std::size_t q = 0; q < queue_.size(); ++q) {
         const PendingInstance p = queue_[q];
@@ -137,8 +137,9 @@ Grammar Parser::run() {
         scope.bindings = p.args;
         tokens_.seek(headers_[std::size_t(p.header)].body);
         inlineStack_ = {p.header};
-        parseBlock(g_.rules[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
+        parseBlock(rules_[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
     }
+    g_.rules.assign(std::make_move_iterator(rules_.begin()), std::make_move_iterator(rules_.end()));
     if (headers_.empty()) tokens_.fail(endAt, "the grammar has no rules (expected 'rule NAME { ... }')");
     if (startName.empty()) tokens_.fail({1, 1}, "the grammar has no 'start NAME' line");
     const auto start = headerIndex_.find(startName);
@@ -339,12 +340,12 @@ std::uint16_t Parser::instance(int header, const std::vector<Binding>& args) {
     }
     name += ")";
     if (const auto it = instances_.find(name); it != instances_.end()) return it->second;
-    if (g_.rules.size() >= kMaxRules) tokens_.fail(h.where, "too many rules and rule instances (at most " + std::to_string(kMaxRules) + ")");
-    const auto id = std::uint16_t(g_.rules.size());
+    if (rules_.size() >= kMaxRules) tokens_.fail(h.where, "too many rules and rule instances (at most " + std::to_string(kMaxRules) + ")");
+    const auto id = std::uint16_t(rules_.size());
     Rule r;
     r.name = name;
     r.where = h.where;
-    g_.rules.push_back(std::move(r));
+    rules_.push_back(std::move(r));
     instances_.emplace(name, id);
     queue_.push_back({header, id, args});
     return id;

@@ -10,6 +10,7 @@
 // split, comp or lot is compiled inline into the calling rule (its parameters and slots become
 // the caller gene's), once per call site.
 #pragma once
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -97,6 +98,7 @@ public:
     TokenStream tokens_;
     ExpressionCompiler exprs_;
     Grammar g_;
+    std::deque<Rule> rules_;  ///< the rules while they are compiled (a deque: instances are added mid-body)
     AttrOverrides overrides_;
     std::map<std::string, double> attrs_;
     std::vector<RuleHeader> headers_;
