@@ -6,6 +6,7 @@
 // run's memory estimate, before anything is read or created.
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -139,6 +140,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb; must not exist)")->required();
     sample->add_option("--genome", genomeOut, "also save the chromosome (a .genome file) for shapevo evaluate");
+    std::vector<std::string> sampleAttrs;
+    sample->add_option("--attr", sampleAttrs, "replace an attr of the grammar, NAME=VALUE (repeatable), as [grammar.attr] does in a config");
     sample->add_option("--count", sampleCount, "write N variations, 1 to " + std::to_string(kMaxSampleCount) +
                                                    "; for N > 1 every output name gets a number before its extension "
                                                    "(out.obj -> out-001.obj, out-002.obj, ...; likewise --genome); all are "
@@ -230,7 +233,7 @@ int main(int argc, char** argv) {
             if (const int used = Evaluator::usableThreads(s.threads); s.threads > used && mpi.rank() == 0)
                 std::cerr << "shapevo: warning: " << (threads >= 0 ? "--threads " : "run.threads = ") << s.threads
                           << " is more than the " << used << " hardware thread(s) this process may use; using " << used << "\n";
-            together(mpi, [&] { requireMemoryFits(s, loadGrammar(s.grammarPath), ranksOnThisMachine(), usableMemoryBytes()); });
+            together(mpi, [&] { requireMemoryFits(s, loadGrammar(s.grammarPath, s.grammarAttrs), ranksOnThisMachine(), usableMemoryBytes()); });
             JobOptions o;
             o.quiet = quiet;
             runJob(mpi, s, o, log);
@@ -251,7 +254,16 @@ int main(int argc, char** argv) {
             const std::uint32_t count = parseCount(sampleCount, kMaxSampleCount);
             const std::string sampleFormat = requireOutputFormat(sampleOut, kModelFormats, "-o");
             if (!genomeOut.empty()) requireOutputFormat(genomeOut, kGenomeFormats, "--genome");
-            const Grammar g = loadGrammar(grammarPath);
+            AttrOverrides attrs;
+            for (const std::string& a : sampleAttrs) {
+                const auto eq = a.find('=');
+                char* end = nullptr;
+                const double v = eq == std::string::npos ? 0.0 : std::strtod(a.c_str() + eq + 1, &end);
+                if (eq == std::string::npos || eq == 0 || end == a.c_str() + eq + 1 || *end != '\0' || !std::isfinite(v))
+                    throw InputError("--attr", a, "expected NAME=NUMBER, e.g. --attr taper=0.6");
+                attrs[a.substr(0, eq)] = v;
+            }
+            const Grammar g = loadGrammar(grammarPath, attrs);
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
             if (g.mandatoryGenes[g.start] > maxGenes)
                 throw InputError("--max-genes", "", std::to_string(maxGenes) + " is smaller than the " +
@@ -305,7 +317,7 @@ int main(int argc, char** argv) {
                       << ")\n";
         } else if (*evaluate) {
             const RunSettings s = loadConfig(evalConfig, evalSets);
-            const Grammar g = loadGrammar(s.grammarPath);
+            const Grammar g = loadGrammar(s.grammarPath, s.grammarAttrs);
             const Chromosome c = readGenome(g, s.limits, evalGenome);
             std::cout << Scene::load(s, g)->evaluate(c).text << "\n";
         }

@@ -232,7 +232,16 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     if (!root.contains(section)) root.insert(section, toml::table{});
     toml::table* t = root[section].as_table();
     if (!t) throw InputError("--set", assignment, "[" + shortened(section) + "] is not a table in the config");
-    t->insert_or_assign(name, std::move(*parsed.get("v")));
+    // section.table.key (grammar.attr.height=12): walk into (or make) the nested tables.
+    std::string leaf = name;
+    for (auto dot2 = leaf.find('.'); dot2 != std::string::npos; dot2 = leaf.find('.')) {
+        const std::string inner = leaf.substr(0, dot2);
+        if (!t->contains(inner)) t->insert(inner, toml::table{});
+        t = (*t)[inner].as_table();
+        if (!t) throw InputError("--set", assignment, shortened(section + "." + inner) + " is not a table in the config");
+        leaf = leaf.substr(dot2 + 1);
+    }
+    t->insert_or_assign(leaf, std::move(*parsed.get("v")));
 }
 
 /// A SectionReader over one [section] of the config, for stages that read their own keys.
@@ -340,6 +349,17 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.string(grammar, "grammar", "file", r.grammarPath);
     if (r.grammarPath.empty()) rd.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
     r.grammarPath = resolve(r.grammarPath);
+    if (const toml::node* attrs = rd.key(grammar, "grammar", "attr")) {
+        if (!attrs->is_table()) rd.fail(*attrs, "grammar.attr must be a table of numbers ([grammar.attr] NAME = 1.5)");
+        for (const auto& [name, value] : *attrs->as_table()) {
+            double v = 0;
+            if (auto i = value.value_exact<std::int64_t>()) v = double(*i);
+            else if (auto d = value.value_exact<double>()) v = *d;
+            else rd.fail(value, "grammar.attr." + std::string(name.str()) + " must be a number");
+            if (!std::isfinite(v)) rd.fail(value, "grammar.attr." + std::string(name.str()) + " must be a finite number");
+            r.grammarAttrs[std::string(name.str())] = v;
+        }
+    }
 
     const toml::table* target = rd.section("target");
     for (const auto& f : rd.strings(target, "target", "fill")) r.targets.push_back({resolve(f), false});

@@ -54,7 +54,9 @@ CheckpointBest bestOfCheckpoint(const std::string& folder) {
     if (const std::string problem = verifyCheckpoint(folder); !problem.empty())
         throw InputError(folder, "", "not a complete checkpoint: " + problem);
     const RunMetadata meta = readRunMetadata(folder + "/run.h5");
-    CheckpointBest b{parseConfig(meta.configText, meta.configPath), parseGrammar(meta.grammarText, meta.grammarPath), {}, {}};
+    RunSettings settings = parseConfig(meta.configText, meta.configPath);
+    Grammar grammar = parseGrammar(meta.grammarText, meta.grammarPath, settings.grammarAttrs);
+    CheckpointBest b{std::move(settings), std::move(grammar), {}, {}};
     double bestFitness = -INFINITY;
     for (int r = 0; r < meta.ranks; ++r) {
         const IslandState island = readIslandFile(folder + "/" + islandFileName(r), b.grammar, b.settings.limits);

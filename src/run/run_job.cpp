@@ -49,7 +49,7 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     std::unique_ptr<Scene> scene;
     RunMetadata meta;
     together(mpi, [&] {
-        grammar = loadGrammar(s.grammarPath);
+        grammar = loadGrammar(s.grammarPath, s.grammarAttrs);
         requireRootFits(s, grammar);
         scene = Scene::load(s, grammar);
         if (mpi.rank() == 0) meta.inputs = inputsOf(s, grammar);
@@ -160,7 +160,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
             s = parseConfig(meta.configText, meta.configPath);
             s.seed = meta.seed;
             if (options.generations) s.ga.generations = *options.generations;
-            grammar = parseGrammar(meta.grammarText, meta.grammarPath);
+            grammar = parseGrammar(meta.grammarText, meta.grammarPath, s.grammarAttrs);
             requireRootFits(s, grammar);
             scene = Scene::load(s, grammar);
             if (scene->hash() != meta.targetHash && !options.allowChangedInputs)

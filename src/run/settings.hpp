@@ -3,6 +3,7 @@
 // owns its part (search/, island/, checkpoint/, score/); this struct only gathers them.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct RunSettings {
     std::optional<double> targetFitness;  ///< stop when the best fitness of any island reaches it
 
     std::string grammarPath;
+    std::map<std::string, double> grammarAttrs;  ///< [grammar.attr]: values replacing the grammar's attrs
     std::vector<TargetVolumeSpec> targets;   ///< volume targets (empty for an image target)
     std::optional<GridOverride> grid;
     std::optional<ImageSceneSettings> image;  ///< image target instead of volumes
