@@ -157,7 +157,7 @@ int Parser::parseConstantValue(double out[3], const std::string& what, const Bod
     const Token& first = tokens_.peek();
     if (first.kind == TokenKind::End || first.is(')') || first.is(']') || first.is(',') || first.is('}'))
         tokens_.expected(what);
-    const ExpressionContext ctx{nullptr, scope ? scope->attrs : &attrs_, scope ? &scope->bindings : nullptr, false,
+    const ExpressionContext ctx{scope ? &scope->params : nullptr, scope ? scope->attrs : &attrs_, scope ? &scope->bindings : nullptr, false,
                                 "a constant here"};
     std::vector<Instr> code;
     ExprRef e[3];
