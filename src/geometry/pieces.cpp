@@ -165,7 +165,9 @@ void makePieces(const Grammar& g, const PieceList& list, const Scope& s, const f
         const Scope f = groundOf(s);
         const float side = std::min(eval(list.arg[0]) * f.size.x, eval(list.arg[1]) * f.size.y);
         if (!(side > 0.0f)) return;
-        const float hx = f.size.x * 0.5f, hy = f.size.y * 0.5f;
+        // Centred on the corners, or (inside) with one corner on the parent's.
+        const float inset = list.floating ? side * 0.5f : 0.0f;
+        const float hx = f.size.x * 0.5f - inset, hy = f.size.y * 0.5f - inset;
         const float cx[4] = {-hx, hx, hx, -hx}, cy[4] = {-hy, -hy, hy, hy};  // anticlockwise from (-, -)
         std::uint32_t made = 0;
         for (int c = 0; c < 4; ++c) {
@@ -176,22 +178,31 @@ void makePieces(const Grammar& g, const PieceList& list, const Scope& s, const f
         return;
     }
     case PiecesKind::Edges: {
+        // Edge e runs anticlockwise from corner e; its lots have x along it and y pointing inwards.
         const Scope f = groundOf(s);
-        const float w = eval(list.arg[0]) * f.size.x, d = eval(list.arg[1]) * f.size.y;
-        if (!(w > 0.0f && d > 0.0f)) return;
+        const float rx = eval(list.arg[0]), ry = eval(list.arg[1]);
         const float hx = f.size.x * 0.5f, hy = f.size.y * 0.5f;
+        const glm::vec3 X = f.axes[0], Y = f.axes[1], Z = f.axes[2];
+        const glm::mat3 frames[4] = {glm::mat3(X, Y, Z), glm::mat3(Y, -X, Z), glm::mat3(-X, -Y, Z), glm::mat3(-Y, X, Z)};
         for (int e = 0; e < 4; ++e) {
             const float v = eval(list.arg[2 + e]);
             const float n = std::isfinite(v) ? std::clamp(std::floor(v), 0.0f, float(kMaxPieces)) : 0.0f;
+            const float along = (e % 2 == 0 ? f.size.x : f.size.y), across = (e % 2 == 0 ? f.size.y : f.size.x);
+            const float w = rx * along / std::max(n, 1.0f), d = ry * across;
+            if (!(w > 0.0f && d > 0.0f)) continue;
             const std::uint32_t piece = std::uint32_t(e) % list.count;
             for (std::uint32_t k = 0; float(k) < n && out.size() < kMaxPieces; ++k) {
-                const float u = (float(k) + 0.5f) / n;  // along the edge, anticlockwise
+                const float t = (float(k) + 0.5f) / n * along - along * 0.5f;  // along the edge from its middle
+                float cx = 0, cy = 0;
                 switch (e) {
-                case 0: out.push_back(lotAt(f, -hx + u * f.size.x, -hy + d * 0.5f, w, d, piece)); break;
-                case 1: out.push_back(lotAt(f, hx - w * 0.5f, -hy + u * f.size.y, w, d, piece)); break;
-                case 2: out.push_back(lotAt(f, hx - u * f.size.x, hy - d * 0.5f, w, d, piece)); break;
-                default: out.push_back(lotAt(f, -hx + w * 0.5f, hy - u * f.size.y, w, d, piece)); break;
+                case 0: cx = t, cy = -hy + d * 0.5f; break;
+                case 1: cx = hx - d * 0.5f, cy = t; break;
+                case 2: cx = -t, cy = hy - d * 0.5f; break;
+                default: cx = -hx + d * 0.5f, cy = -t; break;
                 }
+                PieceScope p = lotAt(f, cx, cy, w, d, piece);
+                p.scope.axes = frames[e];
+                out.push_back(p);
             }
         }
         return;

@@ -117,13 +117,13 @@ enum class PiecesKind : std::uint8_t {
     LotRect,      ///< lot rect (x1, y1, x2, y2) A: a flat lot in the scope's ground plane
     LotCircle,    ///< lot circle (cx, cy, r) A: the flat square lot around a circle
     Center,       ///< center (w, d) A: a lot of w x d units in the middle of a flat scope
-    Corners,      ///< corners (rx, ry) [on (a, b, c, d)] A | ...: square lots on a flat scope's corners
-    Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges
+    Corners,      ///< corners (rx, ry) [on (a, b, c, d)] [inside] A | ...: square lots on a flat scope's corners
+    Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges, x along the edge
 };
 struct PieceList {
     PiecesKind kind = PiecesKind::Split;
     std::uint8_t axis = 0;       ///< Split, Repeat*
-    bool floating = false;       ///< RepeatSize with `~`
+    bool floating = false;       ///< RepeatSize with `~`; Corners with `inside`
     ExprRef arg[6];              ///< the kind's numbers (see PiecesKind), in source order
     std::uint32_t first = 0, count = 0;  ///< its pieces in Grammar::pieces
 };

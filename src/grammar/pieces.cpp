@@ -246,6 +246,10 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
         } else {
             for (int k = 2; k < 6; ++k) list.arg[k] = constantExpression(1.0f);
         }
+        if (tokens_.peek().isWord("inside")) {
+            tokens_.take();
+            list.floating = true;  // the lots lie inside, one corner on the parent's
+        }
         parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
     } else {  // edges
         needFlat("edges");
