@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/checkpoint_path.hpp"
@@ -226,7 +227,7 @@ int main(int argc, char** argv) {
             Geometry geo;
             DeriveScratch scratch;
             derive(g, c, geo, scratch);
-            writeModelFile(geo, sampleFormat, sampleOut);
+            writeModelFile(geo, sampleFormat, sampleOut, Replace::Never);
             if (!genomeOut.empty()) writeGenome(g, c, genomeOut);
             std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives -> " << sampleOut << "\n";
         } else if (*target) {
