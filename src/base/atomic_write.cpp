@@ -90,14 +90,16 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     syncToDisk(dir.empty() ? "." : dir.string());
 }
 
-void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write) {
-    writeAtomically(path, [&](const std::string& temp) {
+void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write,
+                           Replace replace) {
+    const auto writeStream = [&](const std::string& temp) {
         std::ofstream out(temp, std::ios::binary);
         if (!out) throw InputError(path, "", "cannot write: cannot create a file in its folder");
         write(out);
         out.close();
         if (!out) throw InputError(path, "", "cannot write: output error (disk full?)");
-    });
+    };
+    writeAtomically(path, writeStream, replace);
 }
 
 }  // namespace shapevo

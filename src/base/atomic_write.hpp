@@ -24,6 +24,7 @@ void writeAtomically(const std::string& path, const std::function<void(const std
                      Replace replace = Replace::Always);
 
 /// The same for stream writers: `write` fills a binary std::ofstream opened on the temporary file.
-void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write);
+void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write,
+                           Replace replace = Replace::Always);
 
 }  // namespace shapevo

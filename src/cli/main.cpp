@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/checkpoint_path.hpp"
@@ -296,7 +297,7 @@ int main(int argc, char** argv) {
                 const auto [seedK, attempts] = draw(k, c);
                 const std::string modelPath = numberedPath(sampleOut, k, count);
                 derive(g, c, geo, scratch);
-                writeModelFile(geo, sampleFormat, modelPath);
+                writeModelFile(geo, sampleFormat, modelPath, Replace::Never);
                 std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives (seed " << seedK;
                 if (attempts > 1) std::cout << ", draw " << attempts;
                 std::cout << ") -> " << modelPath;

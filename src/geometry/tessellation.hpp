@@ -10,7 +10,12 @@
 //   Sphere    a UV sphere of kRoundSides slices and kSphereStacks stacks (poles on the y axis)
 //   Mesh      the grammar's mesh Geometry::meshes[mesh], vertex for vertex
 // Every piece is closed: each edge is shared by exactly two triangles, in opposite directions.
+// Looks: when the grammar set colours or materials (Geometry::appearance not empty), the mesh
+// carries one MeshMaterial per distinct appearance (same colour after clamping to [0, 1], same
+// material), in the order primitives first use them, and each triangle the material of its
+// primitive. Without appearance the mesh has no materials and the writers write plain geometry.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -24,7 +29,18 @@ namespace shapevo {
 /// @throw std::out_of_range if a Mesh primitive names a mesh that `meshes` does not hold.
 void appendSurface(const Primitive& p, const std::vector<MeshShape>* meshes, Mesh& out);
 
-/// The surfaces of all primitives of a model, one after another.
+/// The surfaces of all primitives of a model, one after another, with their looks (above).
+/// Material names are appearanceName(), made unique by a suffix "_2", "_3", ... in order of use.
+/// @throw std::invalid_argument if geometry.appearance is neither empty nor one entry per
+///        primitive; std::out_of_range if an appearance names a material that
+///        geometry.materialNames does not hold (or a Mesh primitive a missing mesh).
 Mesh tessellate(const Geometry& geometry);
+
+/// The name an appearance's material has in exported files (before tessellate() makes names
+/// unique): its named material's name with every character other than A-Z a-z 0-9 _ - .
+/// replaced by '_', or for the unnamed material 0 (and an empty name) "color_" followed by the
+/// colour's 8-bit sRGB hex digits (mesh/mesh_material.hpp), e.g. "color_ff8800".
+/// @throw std::out_of_range if `a.material` is not 0 and not an index into `materialNames`.
+std::string appearanceName(const Appearance& a, const std::vector<std::string>* materialNames);
 
 }  // namespace shapevo

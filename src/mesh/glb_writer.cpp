@@ -1,4 +1,6 @@
 // GLB writer: glTF JSON chunk (space-padded) and BIN chunk (zero-padded), both 4-byte aligned.
+// Without materials the index accessor covers all triangles and no primitive names a material,
+// so a plain mesh gives the same bytes as before materials existed.
 #include "mesh/glb_writer.hpp"
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 
 #include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
+#include "mesh/mesh_material.hpp"
 
 namespace shapevo {
 
@@ -43,18 +46,22 @@ void appendVec3(std::string& out, const float v[3]) {
     out += ']';
 }
 
-/// The binary buffer: positions, then indices (both multiples of 4 bytes).
-std::vector<std::uint8_t> binaryBuffer(const Mesh& mesh) {
+using Groups = std::vector<std::vector<std::uint32_t>>;  ///< trianglesByMaterial()
+
+/// The binary buffer: positions, then the indices of each material's triangles, material after
+/// material (all multiples of 4 bytes).
+std::vector<std::uint8_t> binaryBuffer(const Mesh& mesh, const Groups& groups) {
     std::vector<std::uint8_t> bin;
     bin.reserve(mesh.vertices.size() * 12 + mesh.triangles.size() * 12);
     for (const auto& v : mesh.vertices)
         for (int a = 0; a < 3; ++a) appendF32(bin, v[a]);
-    for (const auto& t : mesh.triangles)
-        for (std::uint32_t i : t) appendU32(bin, i);
+    for (const auto& group : groups)
+        for (const std::uint32_t t : group)
+            for (std::uint32_t i : mesh.triangles[t]) appendU32(bin, i);
     return bin;
 }
 
-std::string gltfJson(const Mesh& mesh, std::size_t binBytes) {
+std::string gltfJson(const Mesh& mesh, const Groups& groups, std::size_t binBytes) {
     std::string json = R"({"asset":{"version":"2.0","generator":"shapevo"},"scene":0,"scenes":[{"nodes":[0]}],)";
     if (mesh.triangles.empty()) {
         json += R"("nodes":[{"name":"shapevo model"}]})";
@@ -70,15 +77,47 @@ std::string gltfJson(const Mesh& mesh, std::size_t binBytes) {
         for (const std::string& p : {std::string(parts)...}) json += p;
     };
     const auto n = [](std::size_t v) { return std::to_string(v); };
-    add(R"("nodes":[{"mesh":0,"name":"shapevo model"}],)",
-        R"("meshes":[{"name":"shapevo model","primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":4}]}],)");
+    const bool materials = !mesh.materials.empty();
+    // one primitive per material that has triangles; its index accessor is 1 + its rank here
+    add(R"("nodes":[{"mesh":0,"name":"shapevo model"}],)", R"("meshes":[{"name":"shapevo model","primitives":[)");
+    std::size_t accessor = 1;
+    for (std::size_t m = 0; m < groups.size(); ++m) {
+        if (groups[m].empty()) continue;
+        if (accessor > 1) json += ',';
+        add(R"({"attributes":{"POSITION":0},"indices":)", n(accessor));
+        ++accessor;
+        if (materials) add(R"(,"material":)", n(m));
+        add(R"(,"mode":4})");
+    }
+    add("]}],");
+    if (materials) {  // metallicFactor 0: a plain coloured surface (glTF's default would be metal)
+        add(R"("materials":[)");
+        for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+            const glm::vec3& c = mesh.materials[m].color;
+            add(m ? "," : "", R"({"name":")", mesh.materials[m].name, R"(","pbrMetallicRoughness":{"baseColorFactor":[)");
+            for (int a = 0; a < 3; ++a) {
+                appendNumber(json, c[a]);
+                json += ',';
+            }
+            add(R"(1],"metallicFactor":0}})");
+        }
+        add("],");
+    }
     add(R"("accessors":[{"bufferView":0,"componentType":)", n(kFloat), R"(,"count":)", n(mesh.vertices.size()),
         R"(,"type":"VEC3","min":)");
     appendVec3(json, lo);
     add(R"(,"max":)");
     appendVec3(json, hi);
-    add(R"(},{"bufferView":1,"componentType":)", n(kUnsignedInt), R"(,"count":)", n(mesh.triangles.size() * 3),
-        R"(,"type":"SCALAR"}],)");
+    add("}");
+    std::size_t offset = 0;  // bytes into the index buffer view
+    for (const auto& group : groups) {
+        if (group.empty()) continue;
+        add(R"(,{"bufferView":1,)");
+        if (offset > 0) add(R"("byteOffset":)", n(offset), ",");
+        add(R"("componentType":)", n(kUnsignedInt), R"(,"count":)", n(group.size() * 3), R"(,"type":"SCALAR"})");
+        offset += group.size() * 12;
+    }
+    add("],");
     add(R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)", n(positionBytes), R"(,"target":)",
         n(kArrayBuffer), "},");
     add(R"({"buffer":0,"byteOffset":)", n(positionBytes), R"(,"byteLength":)", n(indexBytes), R"(,"target":)",
@@ -96,14 +135,16 @@ void check(const Mesh& mesh, const std::string& path) {
         for (std::uint32_t i : mesh.triangles[t])
             if (i >= mesh.vertices.size())
                 throw InputError(path, "triangle " + std::to_string(t), "vertex index " + std::to_string(i) + " out of range");
+    checkMaterials(mesh, path);
 }
 
 }  // namespace
 
-void writeGlb(const Mesh& mesh, const std::string& path) {
+void writeGlb(const Mesh& mesh, const std::string& path, Replace replace) {
     check(mesh, path);
-    const std::vector<std::uint8_t> bin = mesh.triangles.empty() ? std::vector<std::uint8_t>{} : binaryBuffer(mesh);
-    std::string json = gltfJson(mesh, bin.size());
+    const Groups groups = trianglesByMaterial(mesh);
+    const std::vector<std::uint8_t> bin = mesh.triangles.empty() ? std::vector<std::uint8_t>{} : binaryBuffer(mesh, groups);
+    std::string json = gltfJson(mesh, groups, bin.size());
     json.append((4 - json.size() % 4) % 4, ' ');  // chunks are 4-byte aligned; JSON pads with spaces
 
     std::vector<std::uint8_t> file;
@@ -121,9 +162,9 @@ void writeGlb(const Mesh& mesh, const std::string& path) {
         appendU32(file, kBinChunk);
         file.insert(file.end(), bin.begin(), bin.end());
     }
-    writeStreamAtomically(path, [&](std::ostream& out) {
-        out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
-    });
+    writeStreamAtomically(
+        path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size())); },
+        replace);
 }
 
 }  // namespace shapevo

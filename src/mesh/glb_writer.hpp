@@ -3,17 +3,25 @@
 // positions (float VEC3, with the min/max glTF requires) and then the triangle indices (uint32);
 // there are no normals, so viewers shade the triangles flat, as glTF prescribes. Coordinates are
 // written as they are (glTF's +y is up, as in shapevo's grammars).
+// A mesh with materials (mesh/mesh.hpp) gets one glTF material per MeshMaterial, in order, with
+// its `name` and pbrMetallicRoughness baseColorFactor [r, g, b, 1] in linear RGB (as glTF
+// defines it; metallicFactor 0, roughness glTF's default 1), and one mesh primitive per material
+// that has triangles: all share the POSITION accessor, each has its own index accessor into the
+// one index buffer view, where each material's triangles follow one another in mesh order.
+// Without materials there is one primitive with no material, exactly as before materials existed.
 #pragma once
 #include <string>
 
+#include "base/atomic_write.hpp"
 #include "mesh/mesh.hpp"
 
 namespace shapevo {
 
-/// Writes `mesh` to `path` atomically (temporary file, then rename). An empty mesh gives a
-/// valid file with one empty node and no buffer.
+/// Writes `mesh` to `path` atomically (temporary file, then rename; with Replace::Never an
+/// existing file is not replaced). An empty mesh gives a valid file with one empty node and
+/// no buffer.
 /// @throw InputError naming `path` if it cannot be written or the mesh holds a non-finite
-///        coordinate or a vertex index out of range.
-void writeGlb(const Mesh& mesh, const std::string& path);
+///        coordinate, a vertex index out of range or inconsistent materials (checkMaterials()).
+void writeGlb(const Mesh& mesh, const std::string& path, Replace replace = Replace::Always);
 
 }  // namespace shapevo

@@ -1,16 +1,33 @@
-// Mesh: an indexed triangle mesh as read from OBJ/PLY/STL; input to target making.
+// Mesh: an indexed triangle mesh as read from OBJ/PLY/STL (input to target making) and as the
+// writers (report/model_writer.hpp, mesh/glb_writer.hpp) export it. An exported model may also
+// carry how its triangles look: a list of materials (a name and a colour) and one material per
+// triangle. Both lists are empty for meshes read from files and for models whose grammar sets no
+// colour; the writers then write plain geometry, exactly as before colours existed.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 namespace shapevo {
 
+/// One look of an exported mesh. mesh/mesh_material.hpp checks what it promises.
+struct MeshMaterial {
+    std::string name;             ///< non-empty, unique within its mesh; only A-Z a-z 0-9 _ - .
+    glm::vec3 color{0.8f};        ///< linear RGB, each channel in [0, 1]
+    bool operator==(const MeshMaterial&) const = default;
+};
+
 struct Mesh {
     std::vector<glm::vec3> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;  ///< faces are triangulated on read
+    /// Empty (no colours), or the mesh's distinct looks, each used by at least one triangle
+    /// when made by tessellate() (geometry/tessellation.hpp).
+    std::vector<MeshMaterial> materials;
+    /// Empty when `materials` is; otherwise one index into `materials` per triangle.
+    std::vector<std::uint32_t> triangleMaterials;
 };
 
 }  // namespace shapevo

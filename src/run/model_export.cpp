@@ -43,10 +43,10 @@ std::string requireOutputFormat(const std::string& path, std::span<const std::st
     return format;
 }
 
-void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path) {
-    if (format == "obj") writeObj(meshOf(geometry), path);
-    else if (format == "ply") writePly(meshOf(geometry), path);
-    else if (format == "glb") writeGlb(meshOf(geometry), path);
+void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path, Replace replace) {
+    if (format == "obj") writeObj(meshOf(geometry), path, replace);
+    else if (format == "ply") writePly(meshOf(geometry), path, replace);
+    else if (format == "glb") writeGlb(meshOf(geometry), path, replace);
     else throw InputError(path, "", "unknown model format '" + format + "' (expected obj, ply or glb)");
 }
 
@@ -76,7 +76,7 @@ std::string exportCheckpointBest(const CheckpointBest& b, std::string format, co
     DeriveScratch scratch;
     derive(b.grammar, b.best, geo, scratch);
     if (format == "vdb" || format == "png") Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
-    else if (format == "obj" || format == "ply" || format == "glb") writeModelFile(geo, format, path);
+    else if (format == "obj" || format == "ply" || format == "glb") writeModelFile(geo, format, path, Replace::Never);
     else throw InputError(path, "", "unknown format '" + format + "' (expected obj, ply, glb, vdb or png)");
     return "wrote " + path + " (" + std::to_string(geo.primitives.size()) + " primitives; " + b.from + ")";
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "base/atomic_write.hpp"
 #include "genome/chromosome.hpp"
 #include "shape/primitive.hpp"
 #include "grammar/grammar.hpp"
@@ -33,8 +34,12 @@ inline constexpr std::array<std::string_view, 1> kGenomeFormats{"genome"};
 std::string requireOutputFormat(const std::string& path, std::span<const std::string_view> accepted,
                                 const std::string& option, const std::string& requested = "");
 
-/// Write `geometry` as a mesh in `format` (obj, ply or glb). @throw InputError(path) for another format.
-void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path);
+/// Write `geometry` as a mesh in `format` (obj, ply or glb) with its colours and materials, if
+/// any (report/model_writer.hpp, mesh/glb_writer.hpp; an OBJ with materials also writes the MTL
+/// mtlPathFor(path)). With Replace::Never, what `sample` and `export` use, no existing file
+/// (the OBJ's MTL included) is replaced. @throw InputError(path) for another format.
+void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path,
+                    Replace replace = Replace::Always);
 
 /// The best individual of a checkpoint over all islands, with the grammar and settings it needs
 /// (the grammar owns the meshes its geometry points to).
@@ -49,8 +54,8 @@ struct CheckpointBest {
 /// names into one). @throw InputError if it is incomplete or a file is invalid.
 CheckpointBest bestOfCheckpoint(const std::string& folder);
 
-/// Write `b.best` to `path` in `format` (empty: the path's extension): obj, ply, glb, or vdb / png
-/// through the run's scene. Returns what was written, e.g. "wrote m.obj (12 primitives; island 0,
+/// Write `b.best` to `path` in `format` (empty: the path's extension): obj, ply, glb (never
+/// replacing an existing file, the OBJ's MTL included), or vdb / png through the run's scene. Returns what was written, e.g. "wrote m.obj (12 primitives; island 0,
 /// fitness 0.91)". @throw InputError for an unknown format or one that does not fit the target.
 std::string exportCheckpointBest(const CheckpointBest& b, std::string format, const std::string& path);
 

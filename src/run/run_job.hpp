@@ -1,7 +1,8 @@
 // The `run` and `resume` jobs: one island per MPI rank (or one island without MPI), global
 // progress on rank 0, ring migration, checkpoints every checkpoint.interval generations and on
 // SIGTERM/SIGUSR1, stopping rules agreed by all ranks, and the run folder's outputs:
-//   config.toml, grammar copy, curve.csv, summary.json, best.obj, best.ply, best.genome,
+//   config.toml, grammar copy, curve.csv, summary.json, best.obj (and best.mtl when the grammar
+//   sets colours), best.ply, best.glb, best.genome,
 //   checkpoint-NNNNNN/ (HDF5, see checkpoint/checkpoint_file.hpp)
 #pragma once
 #include <iosfwd>
