@@ -87,29 +87,56 @@ void checkAccepted(const Grammar& g) {
         }
         CHECK(floats == rule.paramFloats);
         // Every compiled expression stays inside the code and evaluates within the stack limit
-        // (AddressSanitizer catches a push past the end of `stack`).
-        float params[256], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
-        for (int i = 0; i < 256; ++i) params[i] = 0.5f + float(i);
-        for (const Statement& st : rule.statements) {
-            const int n = (st.kind == StatementKind::Rotate || (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Cone)) ? 1
-                          : (st.kind == StatementKind::Scale || st.kind == StatementKind::Size ||
-                             st.kind == StatementKind::Translate)
-                              ? 3
-                              : 0;
+        // (AddressSanitizer catches a push past the end of `stack`); parameter reads stay in the
+        // stored block or in the rule's frame values.
+        float params[2 * kFrameBase], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
+        for (std::size_t i = 0; i < 2 * kFrameBase; ++i) params[i] = 0.5f + float(i);
+        CHECK(rule.frameFloats <= kFrameBase);
+        auto checkExpression = [&](const ExprRef& e) {
+            CHECK(e.begin < e.end && e.end <= g.code.size());
+            for (std::uint32_t i = e.begin; i < e.end; ++i) {
+                if (g.code[i].op == OpCode::Param)
+                    CHECK(g.code[i].index < rule.paramFloats ||
+                          (g.code[i].index >= kFrameBase && g.code[i].index < kFrameBase + rule.frameFloats));
+                if (g.code[i].op == OpCode::ScopeSize || g.code[i].op == OpCode::ParentSize) CHECK(g.code[i].component < 3);
+            }
+            float stack[kMaxExpressionStack];
+            (void)evaluate(g, e, params, scope, parent, stack);
+        };
+        const std::size_t count = rule.statements.size();
+        for (std::size_t index = 0; index < count; ++index) {
+            const Statement& st = rule.statements[index];
+            int n = 0;
+            switch (st.kind) {
+            case StatementKind::Rotate: case StatementKind::If: case StatementKind::Extrude: n = 1; break;
+            case StatementKind::Primitive: n = st.primitive == PrimitiveKind::Box || st.primitive == PrimitiveKind::Mesh ? 0 : 1; break;
+            case StatementKind::Scale: case StatementKind::Size: case StatementKind::Translate: case StatementKind::Color: n = 3; break;
+            case StatementKind::Let: n = st.axis; break;
+            default: break;
+            }
             if (st.kind == StatementKind::Child) CHECK(st.slot < rule.slots.size());
             if (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Mesh) CHECK(st.slot < g.meshes.size());
-            if (st.kind == StatementKind::TerminalBegin) CHECK(st.end < rule.statements.size() && rule.statements[st.end].kind == StatementKind::TerminalEnd);
+            if (st.kind == StatementKind::TerminalBegin) CHECK(st.end < count && rule.statements[st.end].kind == StatementKind::TerminalEnd);
             if (st.kind == StatementKind::Rotate || st.kind == StatementKind::Mirror) CHECK(st.axis < 3);
-            for (int c = 0; c < n; ++c) {
-                const ExprRef e = st.expr[c];
-                CHECK(e.begin < e.end && e.end <= g.code.size());
-                for (std::uint32_t i = e.begin; i < e.end; ++i) {
-                    if (g.code[i].op == OpCode::Param) CHECK(g.code[i].index < rule.paramFloats);
-                    if (g.code[i].op == OpCode::ScopeSize || g.code[i].op == OpCode::ParentSize) CHECK(g.code[i].component < 3);
+            if (st.kind == StatementKind::If || st.kind == StatementKind::Jump || st.kind == StatementKind::Pieces)
+                CHECK(st.end > index && st.end <= count);  // forward jumps only: derive always ends
+            if (st.kind == StatementKind::Let)
+                CHECK((st.axis == 1 || st.axis == 3) && st.slot >= kFrameBase && st.slot + st.axis <= kFrameBase + rule.frameFloats);
+            if (st.kind == StatementKind::Material) CHECK(st.slot < g.materialNames.size());
+            if (st.kind == StatementKind::Pieces) {
+                CHECK(st.slot < g.pieceLists.size());
+                const PieceList& list = g.pieceLists[st.slot];
+                CHECK(list.count >= 1 && list.first + list.count <= g.pieces.size() && list.axis < 3);
+                for (const ExprRef& e : list.arg)
+                    if (e.end > e.begin) checkExpression(e);
+                for (std::uint32_t k = 0; k < list.count; ++k) {
+                    const Piece& piece = g.pieces[list.first + k];
+                    CHECK(piece.begin > index && piece.begin <= piece.end && piece.end <= st.end);
+                    CHECK(piece.face < kFaces);
+                    if (list.kind == PiecesKind::Split) checkExpression(piece.value);
                 }
-                float stack[kMaxExpressionStack];
-                (void)evaluate(g, e, params, scope, parent, stack);
             }
+            for (int c = 0; c < n; ++c) checkExpression(st.expr[c]);
         }
     }
 }

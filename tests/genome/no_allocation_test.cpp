@@ -126,6 +126,30 @@ TEST(NoAllocation, ImageScoringOfTreesAllocatesNothingOnceWarm) {
     }
 }
 
+TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
+    // Splits, repeats, comp, lots, inline calls, lets and colours reuse derive's work space.
+    for (const char* name : {"castle", "building"}) {
+        const Grammar g = loadGrammar(test::sourcePath(std::string("grammars/") + name + ".grammar"));
+        Rng rng(31);
+        const GenomeLimits limits{40};
+        std::vector<Chromosome> pop(12);
+        for (auto& c : pop)
+            while (c.genes < 40 && grow(g, c, rng, limits)) {
+            }
+        Geometry out;
+        DeriveScratch scratch;
+        std::size_t sink = 0;
+        for (int warm = 0; warm < 2; ++warm)
+            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+        const long before = gAllocations.load();
+        for (int r = 0; r < 10; ++r)
+            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+        EXPECT_EQ(gAllocations.load() - before, 0) << name;
+        EXPECT_GT(sink, 0u);
+        EXPECT_EQ(out.appearance.size(), out.primitives.size()) << name;
+    }
+}
+
 }  // namespace
 }  // namespace shapevo
 #endif

@@ -55,7 +55,8 @@ TEST_P(OperatorProperties, TenThousandRandomOperatorSequencesKeepEveryInvariant)
 
 INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
                          ::testing::Values("grammars/spaceship.grammar", "grammars/coral.grammar", "grammars/tree.grammar",
-                                           "grammars/city.grammar", "grammars/city-filling.grammar"));
+                                           "grammars/city.grammar", "grammars/city-filling.grammar",
+                                           "grammars/castle.grammar", "grammars/building.grammar"));
 
 TEST(Cut, NeverRemovesMandatoryChildren) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/coral.grammar"));
