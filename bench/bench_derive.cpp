@@ -1,14 +1,17 @@
 // bench_derive: throughput of derive() (chromosome -> primitives), the first half of every
 // fitness evaluation. Spaceship chromosomes of ~20, ~50 and 100 genes and coral chromosomes of
 // 100 and 1000 genes, each grown with a fixed seed, and a 50,000-gene tree.grammar chromosome (a
-// full ternary tree built breadth first); one DeriveScratch and one Geometry reused.
+// full ternary tree built breadth first); castle.grammar and building.grammar (a street)
+// chromosomes for the building statements; one DeriveScratch and one Geometry reused.
 // items_per_second = derivations/s; "primitives/s" = primitives emitted per second.
 //
 //   cd build && ninja bench_derive && taskset -c 1 ./bench/bench_derive --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
@@ -45,11 +48,25 @@ const Grammar& tree() {
 }
 
 /// A full ternary tree.grammar chromosome of `genes` genes, built breadth first (child k of every
-/// branch is rule Bk), parameters drawn from the priors with a fixed seed.
+/// branch is the k-th instance of Branch), parameters drawn from the priors with a fixed seed.
 Chromosome fullTree(std::uint32_t genes) {
     const Grammar& g = tree();
-    return bench::breadthFirstTree(g, genes, {std::uint16_t(g.findRule("B0")), std::uint16_t(g.findRule("B1")),
-                                              std::uint16_t(g.findRule("B2"))});
+    std::vector<std::uint16_t> branches;
+    for (const char* name : {"Branch(0, 120)", "Branch(120, 240)", "Branch(240, 360)"}) {
+        const int r = g.findRule(name);
+        if (r < 0) throw std::runtime_error(std::string("tree.grammar has no rule ") + name);
+        branches.push_back(std::uint16_t(r));
+    }
+    return bench::breadthFirstTree(g, genes, {branches[0], branches[1], branches[2]});
+}
+
+const Grammar& castle() {
+    static const Grammar g = loadGrammar(SHAPEVO_SOURCE_DIR "/grammars/castle.grammar");
+    return g;
+}
+const Grammar& street() {
+    static const Grammar g = loadGrammar(SHAPEVO_SOURCE_DIR "/grammars/building.grammar");
+    return g;
 }
 
 void runDerive(benchmark::State& state, const Grammar& g, const Chromosome& c) {
@@ -76,6 +93,13 @@ void BM_DeriveSpaceship(benchmark::State& state) {
 void BM_DeriveCoral(benchmark::State& state) { runDerive(state, coral(), grown(coral(), std::uint32_t(state.range(0)), 42)); }
 void BM_DeriveTree(benchmark::State& state) { runDerive(state, tree(), fullTree(std::uint32_t(state.range(0)))); }
 
+/// The building statements: castles (lots, edges, corners, comp, repeat, inline calls, colours)
+/// and streets with windows (facades split into floors and tiles: many primitives per gene).
+void BM_DeriveCastle(benchmark::State& state) { runDerive(state, castle(), grown(castle(), std::uint32_t(state.range(0)), 42)); }
+void BM_DeriveStreet(benchmark::State& state) { runDerive(state, street(), grown(street(), std::uint32_t(state.range(0)), 42)); }
+
+BENCHMARK(BM_DeriveCastle)->ArgName("genes")->Arg(4);
+BENCHMARK(BM_DeriveStreet)->ArgName("genes")->Arg(12);
 BENCHMARK(BM_DeriveSpaceship)->ArgName("genes")->Arg(20)->Arg(50)->Arg(100);
 BENCHMARK(BM_DeriveCoral)->ArgName("genes")->Arg(100)->Arg(1000);
 BENCHMARK(BM_DeriveTree)->ArgName("genes")->Arg(50000);

@@ -109,7 +109,10 @@ void checkAccepted(const Grammar& g) {
             int n = 0;
             switch (st.kind) {
             case StatementKind::Rotate: case StatementKind::If: case StatementKind::Extrude: n = 1; break;
-            case StatementKind::Primitive: n = st.primitive == PrimitiveKind::Box || st.primitive == PrimitiveKind::Mesh ? 0 : 1; break;
+            case StatementKind::Primitive:  // a kind's arguments (cone top, roof top (x, z)): those it set
+                for (const ExprRef& e : st.expr)
+                    if (e.end > e.begin) checkExpression(e);
+                break;
             case StatementKind::Scale: case StatementKind::Size: case StatementKind::Translate: case StatementKind::Color: n = 3; break;
             case StatementKind::Let: n = st.axis; break;
             default: break;
