@@ -4,8 +4,9 @@
 //   rule NAME { param NAME = PRIOR ...  STATEMENT ... }
 // with STATEMENT one of scale/size/translate VEC, rotate AXIS EXPR, mirror AXIS, a primitive
 // (its keyword and arguments are its kind's, shape/kinds/: box, cylinder, cone [top EXPR], sphere,
-// mesh "FILE"), terminal { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after
-// parsing live in grammar_checks.cpp.
+// mesh "FILE", roof [top (EXPR, EXPR) | gable | hip | pyramid], paraboloid), terminal
+// { STATEMENTS }, child [w] A | [w] B ... [prob P] [max K]. Checks after parsing live in
+// grammar_checks.cpp.
 #include "grammar/parser.hpp"
 
 #include <cmath>
@@ -374,6 +375,17 @@ private:
         void expect(char c, const std::string& what) { parser.tokens_.expect(c, what); }
         /// A located error at the next token: "expected WHAT, found ...".
         [[noreturn]] void expected(const std::string& what) { parser.tokens_.expected(what); }
+        /// True if the next token ends the statement: '}', the end of the file or a word that
+        /// starts the next statement (a kind whose arguments are optional words tells a
+        /// misspelled one from the next statement with it). Takes nothing.
+        bool atStatementEnd() const {
+            const Token& t = parser.tokens_.peek();
+            if (t.is('}') || t.kind == TokenKind::End) return true;
+            if (t.kind != TokenKind::Identifier) return false;
+            for (const char* w : {"param", "scale", "size", "translate", "rotate", "mirror", "terminal", "child"})
+                if (t.text == w) return true;
+            return visitKeyword(t.text, [](auto) {});
+        }
         /// A small number the kind's emit reads back as args.slot().
         void tag(std::uint16_t v) { s.slot = v; }
         /// A mesh file name in quotes; its index in Grammar::meshes into slot.
