@@ -2,8 +2,9 @@
 // (voxel 0.1, random fill target), to compare the kinds' row costs.
 //  - BM_VoxelizeKind/kind:<k>/mesh:<m>/rotated:<r>: kind 0 box, 1 cylinder, 2 cone (tapers
 //    uniform in [0, 1]), 3 sphere, 4 mesh (m: 0 octahedron, 8 triangles; 1 L-shaped prism,
-//    20 triangles; 2 geodesic sphere, 2048 triangles). Rotated: random unit quaternion
-//    (Shoemake), else axis-aligned (the box fast path; round kinds have none). Half extents
+//    20 triangles; 2 geodesic sphere, 2048 triangles), 5 roof (both top fractions uniform in
+//    [0, 1]), 6 paraboloid. Rotated: random unit quaternion (Shoemake), else axis-aligned (the
+//    box fast path; round kinds, roofs and paraboloids have none). Half extents
 //    0.2 .. 1.0 (2 .. 10 voxels), centres inside the grid, fixed seed.
 // Counters: voxel_rows/s = rows a primitive was rasterized into (VoxelCounts::rows) per second;
 // primitives/s; rows/eval. The grid is counted against the target in every iteration, as in a
@@ -123,6 +124,8 @@ const char* kindName(PrimitiveKind k) {
     case PrimitiveKind::Cone: return "cone";
     case PrimitiveKind::Sphere: return "sphere";
     case PrimitiveKind::Mesh: return "mesh";
+    case PrimitiveKind::Roof: return "roof";
+    case PrimitiveKind::Paraboloid: return "paraboloid";
     }
     return "?";
 }
@@ -145,6 +148,7 @@ void BM_VoxelizeKind(benchmark::State& state) {
             p.half[k] = float(0.2 + 0.8 * rng.uniform());
             p.centre[k] = float(grid.origin[k] + rng.uniform() * grid.nx * grid.voxelSize);
         }
+        if (kind == PrimitiveKind::Roof) p.taperZ = float(rng.uniform());  // drawn last: the other kinds keep their primitives
         geometry.primitives.push_back(p);
     }
     Voxelizer voxelizer(grid);
@@ -175,7 +179,11 @@ BENCHMARK(BM_VoxelizeKind)
     ->Args({3, 0, 0})
     ->Args({4, 0, 1})
     ->Args({4, 1, 1})
-    ->Args({4, 2, 1});
+    ->Args({4, 2, 1})
+    ->Args({5, 0, 1})
+    ->Args({5, 0, 0})
+    ->Args({6, 0, 1})
+    ->Args({6, 0, 0});
 
 }  // namespace
 

@@ -14,7 +14,7 @@ namespace shapevo {
 
 enum class GrowthOrder : std::uint8_t { Chromosome, Random };
 
-/// Per rule id: 1 if the rule has a primitive statement (box, cylinder, cone, sphere, mesh),
+/// Per rule id: 1 if the rule has a primitive statement (of any kind: box, cylinder, ...),
 /// including one inside a `terminal` block.
 std::vector<char> geometricRules(const Grammar& g);
 

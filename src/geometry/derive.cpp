@@ -197,10 +197,11 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 p.kind = st.primitive;
                 p.mesh = 0;
                 p.taper = 1.0f;
+                p.taperZ = 1.0f;
                 p.centre = s.origin;
                 p.axes = s.axes;
                 p.half = halfAbs(s.size);
-                // The kind's own part (a cone's taper, a mesh's index): K::emit reads its arguments.
+                // The kind's own part (a cone's taper, a roof's fractions, a mesh's index): K::emit reads its arguments.
                 struct Arguments {
                     const Grammar& g;
                     const Statement& st;

@@ -8,6 +8,11 @@
 //   Cone      a kRoundSides-gon frustum like the cylinder; with taper 0 a pyramid with one apex
 //             vertex: kRoundSides + 1 vertices, 2 * kRoundSides - 2 triangles
 //   Sphere    a UV sphere of kRoundSides slices and kSphereStacks stacks (poles on the y axis)
+//   Roof      the convex hull of the bottom square and the top rectangle: 8 vertices, 12
+//             triangles; a ridge top (one fraction 0) 6 and 8, an apex (both 0) 5 and 6
+//   Paraboloid the inscribed polyhedron of kParaboloidRings kRoundSides-gon rings and the apex:
+//             kParaboloidRings * kRoundSides + 1 vertices, 2 * kParaboloidRings * kRoundSides - 2
+//             triangles
 //   Mesh      the grammar's mesh Geometry::meshes[mesh], vertex for vertex
 // Every piece is closed: each edge is shared by exactly two triangles, in opposite directions.
 // Looks: when the grammar set colours or materials (Geometry::appearance not empty), the mesh
@@ -19,7 +24,8 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
-#include "shape/kinds/sphere.hpp"  // kSphereStacks
+#include "shape/kinds/paraboloid.hpp"  // kParaboloidRings
+#include "shape/kinds/sphere.hpp"      // kSphereStacks
 #include "shape/primitive.hpp"
 
 namespace shapevo {

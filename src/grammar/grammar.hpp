@@ -85,9 +85,9 @@ struct Statement {
     StatementKind kind;
     std::uint8_t axis = 0;       ///< Rotate, Mirror; Let: number of floats (1 or 3)
     PrimitiveKind primitive = PrimitiveKind::Box;  ///< Primitive: its kind
-    std::uint16_t slot = 0;      ///< Child: slot index; Primitive: the kind's tag (a Mesh's index into Grammar::meshes)
+    std::uint16_t slot = 0;      ///< Child: slot index; Primitive: its kind's tag (Mesh: index into Grammar::meshes; Roof: its form)
     std::uint32_t end = 0;       ///< TerminalBegin: index of its TerminalEnd; If, Jump, Pieces: where to go on
-    ExprRef expr[3];             ///< vector statements use 3, Rotate and a cone Primitive use expr[0]
+    ExprRef expr[3];             ///< vector statements use 3, Rotate and a cone Primitive expr[0], `roof top` expr[0..1]
 };
 
 /// How one piece of a split takes its share of the scope along the split axis.

@@ -13,6 +13,17 @@
 namespace shapevo::grammar_detail {
 
 
+namespace {
+/// The words that begin a statement other than a primitive or an inline call.
+bool isStatementWord(const std::string& w) {
+    for (const char* s : {"param", "let", "scale", "size", "translate", "rotate", "mirror", "color", "colour", "material",
+                          "extrude", "split", "repeat", "comp", "lot", "center", "corners", "edges", "if", "case", "else",
+                          "terminal", "child"})
+        if (w == s) return true;
+    return false;
+}
+}  // namespace
+
 std::string Parser::statementList() const {
     return "param, let, scale, size, translate, rotate, mirror, " + kindKeywords() +
            ", color, material, extrude, split, repeat, comp, lot, center, corners, edges, if, case, terminal, "
@@ -88,6 +99,15 @@ struct PrimitiveArguments {
     void expect(char c, const std::string& what) { parser.tokens_.expect(c, what); }
     /// A located error at the next token: "expected WHAT, found ...".
     [[noreturn]] void expected(const std::string& what) { parser.tokens_.expected(what); }
+    /// True if the next token ends the statement: '}', the end of the file or a word that starts
+    /// the next statement (so a kind whose arguments are optional words tells a misspelled one
+    /// from the next statement). Takes nothing.
+    bool atStatementEnd() const {
+        const Token& t = parser.tokens_.peek();
+        if (t.is('}') || t.kind == TokenKind::End) return true;
+        if (t.kind != TokenKind::Identifier) return false;
+        return isStatementWord(t.text) || parser.headerIndex_.count(t.text) > 0 || visitKeyword(t.text, [](auto) {});
+    }
     /// A small number the kind's emit reads back as args.slot().
     void tag(std::uint16_t v) { s.slot = v; }
     /// A mesh file name in quotes; its index in Grammar::meshes into slot.

@@ -122,6 +122,10 @@ OutlineBuilder::OutlineBuilder(const Camera& camera)
     for (int j = 1; j < bands; ++j) latitudes.push_back({std::sin(M_PI * j / bands), -std::cos(M_PI * j / bands)});
     uvSphere_ = ringShape(round, latitudes, {{{0, -1, 0}, 0}, {{0, 1, 0}, bands - 2}});
     cone_ = prism_;
+    roof_ = box_;
+    std::vector<glm::dvec2> paraboloidRings;
+    for (int i = 0; i < kParaboloidRings; ++i) paraboloidRings.push_back({paraboloidRingRadius(i), paraboloidRingHeight(i)});
+    paraboloid_ = ringShape(round, paraboloidRings, {{{0, 1, 0}, kParaboloidRings - 1}});
     sphereRing_ = roundTable(kSphereSides);
     squareRing_.corners = square;
     squareRing_.normals = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};

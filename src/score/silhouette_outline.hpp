@@ -28,6 +28,12 @@
 //    16-gon, 4 within 0.293 (the sphere: 16 points within 0.0192, 8 within 0.0761 of the circle).
 //    The fewer corners are a subset of the full ones, so the drawn polygon lies inside the full
 //    one. Primitives that take the cut or guard-band path keep every corner.
+//  - Roof: one piece, its 8 corners (the top ones scaled by taper along x and taperZ along z,
+//    clamped to [0, 1]; corners coincide for a ridge or an apex). Equal fractions are a square
+//    frustum (or pyramid) and keep only the silhouette vertices, like a box.
+//  - Paraboloid: one piece, the kParaboloidRings * kRoundSides + 1 vertices of its inscribed
+//    polyhedron (rings at u.y = -1, -1/8, 1/2, 7/8 and the apex: shape/kinds/paraboloid.hpp),
+//    always all of them and at full detail.
 //  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
 // Each kind's part (which pieces, which fast path) is its K::outline in shape/kinds/<kind>.hpp.
 // Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
@@ -129,6 +135,10 @@ public:
     const UnitShape& pyramidShape() const { return pyramid_; }
     const UnitShape& uvSphereShape() const { return uvSphere_; }
     UnitShape& frustumScratch() { return cone_; }
+    /// A scratch copy of the box (a roof rescales its top ring: vertices 4 .. 7); the paraboloid's
+    /// polyhedron (kParaboloidRings rings, then the apex: shape/kinds/paraboloid.hpp).
+    UnitShape& roofScratch() { return roof_; }
+    const UnitShape& paraboloidShape() const { return paraboloid_; }
     const RingTable& squareRing() const { return squareRing_; }
     const std::vector<glm::dvec2>& sphereRing() const { return sphereRing_; }
     /// Reusable scratch: homogeneous points; per mesh vertex its snapped point and whether it is
@@ -149,6 +159,8 @@ private:
     RingTable squareRing_, roundRings_[kRoundLevels];
     int lastRoundPoints_ = 0;
     UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
+    UnitShape roof_;                  ///< scratch: the box with its top ring scaled by the fractions
+    UnitShape paraboloid_;            ///< the paraboloid's inscribed polyhedron (shape/kinds/paraboloid.hpp)
     std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
     std::vector<Homogeneous> h_, cut_;
     std::vector<glm::dvec2> xy_, hull_, clipped_;

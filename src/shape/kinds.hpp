@@ -3,7 +3,8 @@
 //   K::kind                                  its PrimitiveKind (the list's order is the enum's)
 //   K::keyword                               its grammar keyword
 //   K::parseArguments(args)                  reads what follows the keyword (grammar/parser.cpp:
-//                                            args.optionalExpression(word, otherwise), args.meshFile())
+//                                            args.optionalExpression(word, otherwise), args.meshFile(),
+//                                            args.word(w), args.atStatementEnd(), args.tag(v), ...)
 //   K::emit(primitive, args)                 sets what the statement adds to the derived frame
 //                                            (geometry/derive.cpp: args.expression(i), args.slot())
 //   K::voxelize(p, meshes, rows, counts)     its exact voxel rows (score/voxelizer.hpp is `rows`)
@@ -26,6 +27,8 @@
 #include "shape/kinds/cone.hpp"
 #include "shape/kinds/cylinder.hpp"
 #include "shape/kinds/mesh.hpp"
+#include "shape/kinds/paraboloid.hpp"
+#include "shape/kinds/roof.hpp"
 #include "shape/kinds/sphere.hpp"
 #include "shape/primitive.hpp"
 
@@ -37,7 +40,7 @@ struct KindList {
 };
 
 /// The kinds, in PrimitiveKind order.
-using Kinds = KindList<BoxKind, CylinderKind, ConeKind, SphereKind, MeshKind>;
+using Kinds = KindList<BoxKind, CylinderKind, ConeKind, SphereKind, MeshKind, RoofKind, ParaboloidKind>;
 
 template <class K>
 struct KindTag {

@@ -9,6 +9,12 @@
 //             radius 1 at the bottom (u.y = -1) and `taper` (in [0, 1]) at the top; taper 0 is a
 //             pointed cone, taper 1 a cylinder
 //   Sphere    |u| <= 1 (an ellipsoid filling the box)
+//   Roof      |u.x| <= rx(u.y), |u.z| <= rz(u.y), |u.y| <= 1, with rx(y) = (1 + taper)/2 +
+//             (taper - 1)/2 * y and rz(y) the same with taperZ (both in [0, 1]): the convex hull
+//             of the bottom face (the full square at u.y = -1) and the top face |u.x| <= taper,
+//             |u.z| <= taperZ at u.y = +1. Both 1: the box; taper 0: a gable ridge along z;
+//             taperZ 0: along x; both 0: a pyramid
+//   Paraboloid u.x^2 + u.z^2 <= (1 - u.y)/2, |u.y| <= 1: radius 1 at the bottom, apex at the top
 //   Mesh      the closed triangle mesh Geometry::meshes[mesh], whose vertices are already in u
 //             coordinates (the file's bounding box mapped onto [-1, 1]^3)
 #pragma once
@@ -24,8 +30,8 @@
 namespace shapevo {
 
 /// One enumerator per kind, in the order of the kinds list (shape/kinds.hpp checks it).
-enum class PrimitiveKind : unsigned char { Box, Cylinder, Cone, Sphere, Mesh };
-inline constexpr int kPrimitiveKinds = 5;
+enum class PrimitiveKind : unsigned char { Box, Cylinder, Cone, Sphere, Mesh, Roof, Paraboloid };
+inline constexpr int kPrimitiveKinds = 7;
 /// Polygon sides used wherever a round primitive must be drawn as a polyhedron (exported
 /// meshes; silhouettes in image targets): cylinders and cones become kRoundSides-gon prisms and
 /// frusta with vertices at angles 2*pi*k/kRoundSides from the local +x axis towards +z.
@@ -34,10 +40,11 @@ inline constexpr int kRoundSides = 16;
 struct Primitive {
     PrimitiveKind kind = PrimitiveKind::Box;
     std::uint16_t mesh = 0;  ///< Mesh: index into Geometry::meshes
-    float taper = 1.0f;      ///< Cone: top radius / bottom radius, in [0, 1]
+    float taper = 1.0f;      ///< Cone: top radius / bottom radius; Roof: top face / bottom face along x; in [0, 1]
     glm::vec3 centre{0.0f};
     glm::mat3 axes{1.0f};    ///< columns: the frame's local x, y, z directions (unit length)
     glm::vec3 half{0.5f};    ///< half extents along the axes
+    float taperZ = 1.0f;     ///< Roof: top face / bottom face along z, in [0, 1] (last: the fields above keep their places)
 };
 
 /// How a primitive looks in exported meshes: a colour (linear RGB in [0, 1]) and a named

@@ -1,5 +1,6 @@
-// Hot paths allocate nothing once warm: derive, voxelize + score and every genetic operator are
-// run many times on reused buffers while a replaced global operator new counts allocations.
+// Hot paths allocate nothing once warm: derive, voxelize + score, silhouettes of every kind and
+// every genetic operator are run many times on reused buffers while a replaced global operator
+// new counts allocations.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -7,6 +8,7 @@
 #include <new>
 
 #include "../score/random_primitives.hpp"
+#include "../score/silhouette_test_util.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
@@ -23,8 +25,13 @@ void* operator new(std::size_t n) {
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
+// The replaced operator new is malloc, so free is its match; GCC 12 still warns where it inlines
+// these into allocator code (-Wmismatched-new-delete), depending on what else the file inlines.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace shapevo {
 namespace {
@@ -147,6 +154,32 @@ TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
         EXPECT_EQ(gAllocations.load() - before, 0) << name;
         EXPECT_GT(sink, 0u);
         EXPECT_EQ(out.appearance.size(), out.primitives.size()) << name;
+    }
+}
+
+TEST(NoAllocation, SilhouettesOfEveryPrimitiveKindAllocateNothingOnceWarm) {
+    // every kind (roofs and paraboloids too), on the fast, cut and guard-band paths of each camera
+    const std::vector<MeshShape> meshes = test::starMesh();
+    for (const test::Scene& scene : test::scenes()) {
+        const Camera camera = Camera::compile(scene.spec, "test");
+        SilhouetteRaster raster(camera);
+        Rng rng(29);
+        const ImageTarget target = test::randomTarget(camera.width(), camera.height(), rng);
+        std::vector<Primitive> primitives(480);  // 60 models of 8
+        for (Primitive& p : primitives) p = test::randomPrimitive(PrimitiveKind(rng.below(kPrimitiveKinds)), scene, rng);
+        auto draw = [&] {
+            std::uint64_t covered = 0;
+            for (std::size_t i = 0; i < primitives.size(); ++i) {
+                raster.add(primitives[i], &meshes);
+                if (i % 8 == 7) covered += raster.score(target).covered;
+            }
+            return covered;
+        };
+        for (int warm = 0; warm < 2; ++warm) draw();
+        const long before = gAllocations.load();
+        const std::uint64_t covered = draw();
+        EXPECT_EQ(gAllocations.load() - before, 0) << scene.name;
+        EXPECT_GT(covered, 0u);
     }
 }
 

@@ -1,7 +1,8 @@
 // Fast derive vs. the plain one: a straightforward derivation (every task carries its two scopes,
 // every expression runs on the stack machine) is kept here, and derive must give the same
 // primitives bit for bit on thousands of random chromosomes of every shipped grammar and of
-// grammars with mirrors, terminal blocks, cones with `top`, meshes and unusual expressions.
+// grammars with mirrors, terminal blocks, cones with `top`, roofs of every form, paraboloids,
+// meshes and unusual expressions.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -103,6 +104,22 @@ DeriveStatus referenceDerive(const Grammar& g, const Chromosome& c, std::vector<
                     p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;
                 } else if (st.primitive == PrimitiveKind::Mesh) {
                     p.mesh = st.slot;
+                } else if (st.primitive == PrimitiveKind::Roof) {
+                    // slot: 0 gable, 1 hip, 2 pyramid, 3 top (x, z); the ridge runs along the
+                    // longer horizontal half extent, along x on a tie
+                    const float hx = p.half.x, hz = p.half.z;
+                    float tx = 0.0f, tz = 0.0f;
+                    if (st.slot == 3) {
+                        tx = eval(st.expr[0]);
+                        tz = eval(st.expr[1]);
+                    } else if (st.slot == 0) {
+                        (hx >= hz ? tx : tz) = 1.0f;
+                    } else if (st.slot == 1) {
+                        if (hx >= hz) tx = 1.0f - hz / hx;
+                        else tz = 1.0f - hx / hz;
+                    }
+                    p.taper = std::isnan(tx) ? 0.0f : std::clamp(tx, 0.0f, 1.0f);
+                    p.taperZ = std::isnan(tz) ? 0.0f : std::clamp(tz, 0.0f, 1.0f);
                 }
                 if (!referenceBounded(p)) return DeriveStatus::NonFinite;
                 out.push_back(p);
@@ -119,6 +136,7 @@ long firstDifference(const std::vector<Primitive>& a, const std::vector<Primitiv
         if (i >= a.size() || i >= b.size()) return long(i);
         const Primitive &p = a[i], &q = b[i];
         if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, sizeof p.taper) != 0 ||
+            std::memcmp(&p.taperZ, &q.taperZ, sizeof p.taperZ) != 0 ||
             std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 ||
             std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 || std::memcmp(&p.half, &q.half, sizeof p.half) != 0)
             return long(i);
@@ -217,6 +235,41 @@ rule C {
     ASSERT_EQ(g.meshes.size(), 1u);
     expectSameAsReference(g, 1500, 60, 11);
     expectSameAsReference(g, 300, 60, 12, 50);  // also where the primitive cap stops derivation
+}
+
+TEST(DeriveReference, RoofsOfEveryFormAndParaboloidsGiveTheReferenceGeometry) {
+    // every roof form on scopes whose longer horizontal axis is x, z or neither, fractions from
+    // parameters (out of range too), under mirrors and rotations
+    const std::string text = R"(
+start A
+rule A {
+  param w = uniform(0.2, 3)
+  param d = choice(0.5, 1, 2)
+  param t = uniform(-0.5, 1.5)
+  size (w, 1, d)
+  roof
+  mirror x
+  translate (w, 0, 0)
+  roof hip
+  rotate y t * 50
+  roof top (t, 1 - t)
+  child B prob 0.6 max 2
+}
+rule B {
+  param s = uniform(0.3, 1.2)
+  scale (s, 0.5, 1 / s)
+  translate (0, parent.size.y, 0)
+  roof gable
+  paraboloid
+  roof pyramid
+  terminal {
+    roof top (s * 0.5, s)
+  }
+  child A prob 0.3
+}
+)";
+    const Grammar g = parseGrammar(text, "roofs.grammar");
+    expectSameAsReference(g, 1000, 40, 13);
 }
 
 }  // namespace

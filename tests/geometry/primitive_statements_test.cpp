@@ -1,4 +1,5 @@
-// The primitive statements (cylinder, cone [top], sphere, mesh "file") and `terminal { }` blocks:
+// The primitive statements (cylinder, cone [top], sphere, mesh "file", roof [top (x, z) | gable |
+// hip | pyramid], paraboloid) and `terminal { }` blocks:
 // what they emit, where, and only on genes without expressed children.
 #include <gtest/gtest.h>
 
@@ -39,7 +40,90 @@ TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
     EXPECT_EQ(out.primitives[2].taper, 0.0f);   // `cone` alone is pointed
     EXPECT_EQ(out.primitives[3].taper, 0.25f);
     EXPECT_EQ(out.primitives[4].taper, 1.0f);   // clamped to [0, 1]
+    for (const Primitive& p : out.primitives) EXPECT_EQ(p.taperZ, 1.0f);  // only roofs set it
     EXPECT_EQ(out.meshes, &g.meshes);
+}
+
+TEST(PrimitiveStatements, EachRoofFormGivesItsTopFractionsFromTheScope) {
+    const Grammar g = parseGrammar(
+        "start A\n"
+        "rule A {\n"
+        "  size (4, 2, 2)\n"               // half (2, 1, 1): x is the longer horizontal axis
+        "  roof\n"
+        "  roof gable\n"
+        "  roof hip\n"
+        "  roof pyramid\n"
+        "  roof top (0.25, 0.75)\n"
+        "  roof top (scope.size.x / 8, -1)\n"
+        "  roof top (2, 0 / 0)\n"
+        "  size (2, 2, 6)\n"               // half (1, 1, 3): z is longer
+        "  roof gable\n"
+        "  roof hip\n"
+        "  size (3, 1, 3)\n"               // a tie
+        "  roof gable roof hip\n"
+        "  paraboloid\n"
+        "  box\n"
+        "  roof\n"                          // `roof` alone before the end of the rule
+        "}\n",
+        "roofs.grammar");
+    Geometry out;
+    DeriveScratch scratch;
+    ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
+    struct Want {
+        PrimitiveKind kind;
+        float tx, tz;
+    };
+    const PrimitiveKind R = PrimitiveKind::Roof;
+    const Want want[] = {{R, 1, 0},     {R, 1, 0},    {R, 0.5f, 0},         {R, 0, 0},
+                         {R, 0.25f, 0.75f}, {R, 0.5f, 0}, {R, 1, 0},        // clamped; NaN -> 0
+                         {R, 0, 1},     {R, 0, 1.0f - 1.0f / 3.0f},          // ridge along z, shortened by 1 at both ends
+                         {R, 1, 0},     {R, 0, 0},                           // a tie: ridge along x; a square hip is a pyramid
+                         {PrimitiveKind::Paraboloid, 1, 1}, {PrimitiveKind::Box, 1, 1}, {R, 1, 0}};
+    ASSERT_EQ(out.primitives.size(), std::size(want));
+    for (std::size_t i = 0; i < std::size(want); ++i) {
+        EXPECT_EQ(out.primitives[i].kind, want[i].kind) << i;
+        EXPECT_EQ(out.primitives[i].taper, want[i].tx) << i;
+        EXPECT_EQ(out.primitives[i].taperZ, want[i].tz) << i;
+    }
+    EXPECT_EQ(out.primitives[0].half, glm::vec3(2, 1, 1));
+    EXPECT_EQ(out.primitives[12].half, glm::vec3(1.5f, 0.5f, 1.5f));
+}
+
+TEST(PrimitiveStatements, RoofTopFractionsAreExpressionsOfTheGenesParameters) {
+    const Grammar g = parseGrammar(
+        "start A\nrule A {\n  param t = uniform(0.2, 0.8)\n  roof top (t, 1 - t)\n  child A prob 0.5\n}\n", "roof-param.grammar");
+    Geometry out;
+    DeriveScratch scratch;
+    const Chromosome c = rootOnly(g, 9);
+    ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
+    ASSERT_EQ(out.primitives.size(), 1u);
+    const float t = c.param(0, g.rules[0], 0);
+    EXPECT_EQ(out.primitives[0].taper, t);
+    EXPECT_EQ(out.primitives[0].taperZ, 1 - t);
+    EXPECT_GT(t, 0.2f);
+}
+
+TEST(PrimitiveStatements, AMansardRoofIsAFrustumWithAHipRoofOnItsTopFace) {
+    // the example of grammars/README.md
+    const Grammar g = parseGrammar(
+        "start A\nrule A {\n"
+        "  size (4, 0.6, 3)\n"
+        "  roof top (0.8, 0.7)                        # the steep lower part\n"
+        "  translate (0, scope.size.y * 0.75, 0)\n"
+        "  scale (0.8, 0.5, 0.7)                      # its top face, half as high\n"
+        "  roof hip\n"
+        "}\n",
+        "mansard.grammar");
+    Geometry out;
+    DeriveScratch scratch;
+    ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
+    ASSERT_EQ(out.primitives.size(), 2u);
+    const Primitive &lower = out.primitives[0], &upper = out.primitives[1];
+    EXPECT_NEAR(lower.centre.y + lower.half.y, upper.centre.y - upper.half.y, 1e-6f);  // stacked
+    EXPECT_NEAR(lower.half.x * lower.taper, upper.half.x, 1e-6f);                       // on the top face
+    EXPECT_NEAR(lower.half.z * lower.taperZ, upper.half.z, 1e-6f);
+    EXPECT_NEAR(upper.taper, 1.0f - 1.05f / 1.6f, 1e-6f);  // hip: along x, shortened by half.z at both ends
+    EXPECT_EQ(upper.taperZ, 0.0f);
 }
 
 TEST(PrimitiveStatements, TerminalBlockRunsOnlyWithoutExpressedChildrenAndRestoresTheScope) {

@@ -1,6 +1,6 @@
 // Tessellation: every primitive kind becomes a closed, outward-facing surface whose vertices lie
-// on the kind's solid as primitive.hpp defines it, in plain, rotated and mirrored frames; meshOf
-// uses it for whole models.
+// on the kind's solid as primitive.hpp defines it, in plain, rotated and mirrored frames (roofs
+// with ridge and apex tops too, without zero-area triangles); meshOf uses it for whole models.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +13,7 @@
 
 #include "geometry/tessellation.hpp"
 #include "report/model_writer.hpp"
+#include "shape/kinds/paraboloid.hpp"
 
 namespace shapevo {
 namespace {
@@ -172,6 +173,78 @@ TEST(Tessellation, SphereIsAClosedOutwardUvSphereOnTheEllipsoid) {
     }
 }
 
+/// Triangles with (nearly) no area: a degenerate top must not leave any behind.
+int slivers(const Mesh& m) {
+    int n = 0;
+    for (const auto& t : m.triangles) {
+        const glm::dvec3 a(m.vertices[t[0]]), b(m.vertices[t[1]]), c(m.vertices[t[2]]);
+        n += glm::length(glm::cross(b - a, c - a)) < 1e-6;
+    }
+    return n;
+}
+
+Primitive roofPrimitive(const glm::mat3& axes, float tx, float tz) {
+    Primitive p = primitive(PrimitiveKind::Roof, axes, tx);
+    p.taperZ = tz;
+    return p;
+}
+
+TEST(Tessellation, RoofIsAClosedOutwardBoxFrustumEvenWithARidgeOrAnApex) {
+    const float fractions[][2] = {{1, 1}, {0.5f, 0.25f}, {0, 1}, {1, 0}, {0, 0.5f}, {0.75f, 0}, {0, 0}, {-3, NAN}, {0.5f, 0.5f}};
+    for (const auto& t : fractions) {
+        for (const Frame& f : frames()) {
+            SCOPED_TRACE(std::string(f.name) + ", top " + std::to_string(t[0]) + " x " + std::to_string(t[1]));
+            const Primitive p = roofPrimitive(f.axes, t[0], t[1]);
+            const Mesh m = surface(p);
+            const float tx = t[0] >= 0 ? std::min(t[0], 1.0f) : 0.0f, tz = t[1] >= 0 ? std::min(t[1], 1.0f) : 0.0f;
+            const int zeros = (tx == 0) + (tz == 0);
+            const std::size_t vertices[] = {8, 6, 5}, triangles[] = {12, 8, 6};
+            EXPECT_EQ(m.vertices.size(), vertices[zeros]);
+            EXPECT_EQ(m.triangles.size(), triangles[zeros]);
+            EXPECT_EQ(badEdges(m), 0);
+            EXPECT_EQ(slivers(m), 0);
+            // integral over u.y of 4 rx rz: 8 (1 + (a + b) / 2 + a b / 3) per unit, a = tx - 1, b = tz - 1
+            const double a = tx - 1.0, b = tz - 1.0, volume = (1 + (a + b) / 2 + a * b / 3) * boxVolume(p);
+            EXPECT_NEAR(signedVolume(m), volume, 1e-4 * volume);
+            for (const glm::vec3& v : m.vertices) {  // corners: the full square at the bottom, the top face on top
+                const glm::vec3 u = unitCoordinates(p, v);
+                ASSERT_NEAR(std::fabs(u.y), 1.0f, 1e-5f);
+                EXPECT_NEAR(std::fabs(u.x), u.y < 0 ? 1.0f : tx, 1e-5f);
+                EXPECT_NEAR(std::fabs(u.z), u.y < 0 ? 1.0f : tz, 1e-5f);
+            }
+        }
+    }
+}
+
+TEST(Tessellation, ParaboloidIsAClosedOutwardPolyhedronInscribedInTheParaboloid) {
+    for (const Frame& f : frames()) {
+        SCOPED_TRACE(f.name);
+        const Primitive p = primitive(PrimitiveKind::Paraboloid, f.axes);
+        const Mesh m = surface(p);
+        EXPECT_EQ(m.vertices.size(), std::size_t(kParaboloidRings * kRoundSides + 1));
+        EXPECT_EQ(m.triangles.size(), std::size_t(2 * kParaboloidRings * kRoundSides - 2));
+        EXPECT_EQ(badEdges(m), 0);
+        EXPECT_EQ(slivers(m), 0);
+        // frusta of similar polygons between the rings, a pyramid on top
+        double polyhedron = 0;
+        for (int i = 0; i < kParaboloidRings; ++i) {
+            const double r = paraboloidRingRadius(i), h = (i + 1 < kParaboloidRings ? paraboloidRingHeight(i + 1) : 1.0) - paraboloidRingHeight(i);
+            const double next = i + 1 < kParaboloidRings ? paraboloidRingRadius(i + 1) : 0.0;
+            polyhedron += polygonArea() * h / 3 * (r * r + r * next + next * next);
+        }
+        polyhedron *= boxVolume(p) / 8;
+        EXPECT_NEAR(signedVolume(m), polyhedron, 1e-4 * polyhedron);
+        const double paraboloid = kPi / 8 * boxVolume(p);  // pi per unit of h.x h.y h.z
+        EXPECT_LT(signedVolume(m), paraboloid);
+        EXPECT_GT(signedVolume(m), 0.93 * paraboloid);
+        for (const glm::vec3& v : m.vertices) {
+            const glm::vec3 u = unitCoordinates(p, v);
+            EXPECT_NEAR(u.x * u.x + u.z * u.z, (1 - u.y) / 2, 1e-5f);
+            EXPECT_LE(std::fabs(u.y), 1 + 1e-5f);
+        }
+    }
+}
+
 /// The octahedron |x| + |y| + |z| <= 1 (volume 4/3), outward-facing.
 MeshShape octahedron() {
     MeshShape s;
@@ -221,7 +294,7 @@ TEST(Tessellation, MeshOfAModelAppendsEveryPrimitiveWithItsOwnIndices) {
     std::size_t vertices = 0, triangles = 0;
     for (const Frame& f : frames())
         for (PrimitiveKind k : {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere,
-                                PrimitiveKind::Mesh}) {
+                                PrimitiveKind::Mesh, PrimitiveKind::Roof, PrimitiveKind::Paraboloid}) {
             g.primitives.push_back(primitive(k, f.axes, 0.5f));
             const Mesh alone = surface(g.primitives.back(), &meshes);
             expected += signedVolume(alone);

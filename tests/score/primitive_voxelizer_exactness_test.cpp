@@ -1,8 +1,10 @@
 // Exactness of the voxelizer for every primitive kind: for 1,000 random primitives of each kind
-// (cylinders, cones, spheres, meshes; random rotations, mirrored frames, tapers 0 and 1, thin and
-// flat sizes, grid-aligned placements whose surfaces pass exactly through voxel centres, positions
-// leaving the grid) the bit rows and every count (occupied, inside, avoided, overlap, outside)
-// equal a brute-force loop that applies the kind's inside test to every voxel centre.
+// (cylinders, cones, spheres, meshes, roofs, paraboloids; random rotations, mirrored frames, tapers
+// and roof fractions 0 and 1 (ridges, apexes), thin and flat sizes, grid-aligned placements whose
+// surfaces pass exactly through voxel centres, positions leaving the grid) the bit rows and every count (occupied, inside, avoided, overlap, outside)
+// equal a brute-force loop that applies the kind's inside test to every voxel centre; and that
+// inside test agrees with the textbook formula (test::textbookDistance, long double) at every
+// voxel centre farther than 1e-6 (local units) from the surface, so a wrong chord fails too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +22,14 @@ namespace {
 struct BruteForce {
     VoxelCounts counts;
     std::vector<std::uint64_t> bits;  ///< occupied bit rows, as Voxelizer::occupancy()
+    long textbookChecked = 0;         ///< voxel centres also checked against the textbook formula
+    long textbookMismatches = 0;      ///< ... where the kind's inside test disagreed with it
 };
+
+/// Farther than this from the surface (in the textbook formula's local units) the kind's inside
+/// test must agree with test::textbookDistance: its chord is then not just self-consistent but
+/// the solid of shape/primitive.hpp.
+constexpr long double kTextbookMargin = 1e-6L;
 
 /// Every voxel centre of the grid and its one-extent halo that could be inside `p`, tested one
 /// by one with the kind's inside test. Boxes and round kinds: the ball through the box's corners
@@ -28,8 +37,10 @@ struct BruteForce {
 /// Meshes: rows within the vertices' bounding box; along a row, every centre between the
 /// vertices (+-3 voxels) is tested, and beyond that one test stands for all (no crossing lies
 /// there, so the ray test cannot change).
+/// Every other kind's verdicts are also checked against the textbook formula away from the
+/// surface (primitives with positive, finite half extents and a finite centre).
 void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, const GridSpec& g,
-                   std::vector<std::uint8_t>& hits, VoxelCounts& c) {
+                   std::vector<std::uint8_t>& hits, VoxelCounts& c, BruteForce& b) {
     const long n[3] = {g.nx, g.ny, g.nz};
     MeshSolid mesh;
     std::function<bool(double, double, double)> inside;
@@ -58,13 +69,24 @@ void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, con
         if (h < 2) ++h;
     };
     const bool isMesh = p.kind == PrimitiveKind::Mesh;
+    bool textbook = !isMesh;
+    for (int j = 0; j < 3; ++j)
+        textbook = textbook && std::isfinite(p.centre[j]) && p.half[j] != 0.0f && std::isfinite(p.half[j]);
     for (long z = first[2]; z <= last[2]; ++z)
         for (long y = first[1]; y <= last[1]; ++y) {
             const double cy = g.centre(1, y), cz = g.centre(2, z);
             if (isMesh && first[0] > -n[0] && inside(g.centre(0, first[0] - 1), cy, cz))
                 for (long x = -n[0]; x < first[0]; ++x) cover(x, y, z);
-            for (long x = first[0]; x <= last[0]; ++x)
-                if (inside(g.centre(0, x), cy, cz)) cover(x, y, z);
+            for (long x = first[0]; x <= last[0]; ++x) {
+                const bool in = inside(g.centre(0, x), cy, cz);
+                if (in) cover(x, y, z);
+                if (!textbook) continue;
+                const double w[3] = {g.centre(0, x), cy, cz};
+                const long double d = test::textbookDistance(p, test::localCoordinates(p, w));
+                if (!(std::fabs(d) > kTextbookMargin)) continue;
+                ++b.textbookChecked;
+                b.textbookMismatches += in != (d < 0);
+            }
             if (isMesh && last[0] < 2 * n[0] - 1 && inside(g.centre(0, last[0] + 1), cy, cz))
                 for (long x = last[0] + 1; x <= 2 * n[0] - 1; ++x) cover(x, y, z);
         }
@@ -75,13 +97,14 @@ BruteForce bruteForce(const Geometry& geometry, const VolumeTarget& t) {
     BruteForce b;
     b.bits.assign(g.words(), 0);
     std::vector<std::uint8_t> hits(std::size_t(g.nx) * g.ny * g.nz, 0);
-    for (const Primitive& p : geometry.primitives) bruteForceAdd(p, *geometry.meshes, g, hits, b.counts);
+    for (const Primitive& p : geometry.primitives) bruteForceAdd(p, *geometry.meshes, g, hits, b.counts, b);
     test::countHits(hits, t, b.counts, &b.bits);
     return b;
 }
 
 struct Totals {
     std::uint64_t occupied = 0, outside = 0, overlap = 0, empty = 0;
+    long textbookChecked = 0;
 };
 
 /// `primitives` random primitives of `kinds` (cycled), in models of one to four, compared with
@@ -105,6 +128,7 @@ Totals compareWithBruteForce(const std::vector<PrimitiveKind>& kinds, const Grid
             geometry.primitives.push_back(p);
         }
         const BruteForce slow = bruteForce(geometry, target);
+        EXPECT_EQ(slow.textbookMismatches, 0) << "model " << model << ": the inside test is not the textbook solid";
         VoxelCounts added;
         for (const Primitive& p : geometry.primitives) vox.add(p, geometry.meshes, added);
         const auto& bits = vox.occupancy();
@@ -119,7 +143,9 @@ Totals compareWithBruteForce(const std::vector<PrimitiveKind>& kinds, const Grid
         EXPECT_EQ(fast, slow.counts) << "model " << model << " occupied " << fast.occupied << " vs " << slow.counts.occupied
                                      << ", overlap " << fast.overlap << " vs " << slow.counts.overlap << ", outside "
                                      << fast.outside << " vs " << slow.counts.outside;
-        if (!sameBits || added.outside != slow.counts.outside || !(fast == slow.counts)) return totals;  // one report is enough
+        if (!sameBits || added.outside != slow.counts.outside || !(fast == slow.counts) || slow.textbookMismatches != 0)
+            return totals;  // one report is enough
+        totals.textbookChecked += slow.textbookChecked;
         totals.occupied += slow.counts.occupied;
         totals.outside += slow.counts.outside;
         totals.overlap += slow.counts.overlap;
@@ -139,7 +165,11 @@ GridSpec testGrid() {
 }
 
 /// The random models really exercise every term (and are not mostly empty).
-void expectEveryTerm(const Totals& t) {
+/// (`textbook`: the voxel centres checked against the textbook formula were many too; not for meshes.)
+void expectEveryTerm(const Totals& t, bool textbook = true) {
+    if (textbook) {
+        EXPECT_GT(t.textbookChecked, 100000);
+    }
     EXPECT_GT(t.occupied, 20000u);
     EXPECT_GT(t.outside, 20000u);
     EXPECT_GT(t.overlap, 1000u);
@@ -159,21 +189,35 @@ TEST(PrimitiveVoxelizerExactness, ThousandRandomSpheresMatchBruteForceVoxelByVox
 }
 
 TEST(PrimitiveVoxelizerExactness, ThousandRandomOctahedraAndLPrismsMatchBruteForceVoxelByVoxel) {
-    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Mesh}, testGrid(), 1000, 14));
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Mesh}, testGrid(), 1000, 14), false);
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomRoofsWithRidgesApexesAndFrustaMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Roof}, testGrid(), 1000, 31));
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandRandomParaboloidsMatchBruteForceVoxelByVoxel) {
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Paraboloid}, testGrid(), 1000, 32));
 }
 
 TEST(PrimitiveVoxelizerExactness, ModelsMixingAllKindsMatchBruteForceIncludingOverlapsBetweenKinds) {
     const std::vector<PrimitiveKind> all = {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone,
                                             PrimitiveKind::Sphere, PrimitiveKind::Mesh};
     expectEveryTerm(compareWithBruteForce(all, testGrid(), 1000, 15));
+    const std::vector<PrimitiveKind> withNew = {PrimitiveKind::Box,  PrimitiveKind::Cylinder, PrimitiveKind::Cone,
+                                                PrimitiveKind::Sphere, PrimitiveKind::Mesh,   PrimitiveKind::Roof,
+                                                PrimitiveKind::Paraboloid};
+    expectEveryTerm(compareWithBruteForce(withNew, testGrid(), 1400, 33));
 }
 
 TEST(PrimitiveVoxelizerExactness, GridAlignedPrimitivesWithSurfacesThroughVoxelCentresMatchBruteForce) {
     // Axis-aligned, centred on voxel centres or corners, half extents in half voxels: many row
     // ends fall exactly on a voxel centre, where only the exact test can decide.
-    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh}) {
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh,
+                               PrimitiveKind::Roof, PrimitiveKind::Paraboloid}) {
         SCOPED_TRACE(int(kind));
-        expectEveryTerm(compareWithBruteForce({kind}, testGrid(), 1000, 16 + std::uint64_t(kind), true));
+        const int primitives = kind == PrimitiveKind::Paraboloid ? 1500 : 1000;  // half its cylinder's volume
+        expectEveryTerm(compareWithBruteForce({kind}, testGrid(), primitives, 16 + std::uint64_t(kind), true), kind != PrimitiveKind::Mesh);
     }
 }
 
@@ -192,7 +236,8 @@ TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendic
     const glm::mat3 tilted(c, 0, s, 0, 1, 0, -s, 0, c), rotated(0.8f, 0.6f, 0, -0.6f, 0.8f, 0, 0, 0, 1);
     std::vector<Primitive> cases;
     std::vector<std::size_t> coverEverything;  // cases that cover the grid and the whole halo
-    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh}) {
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Mesh,
+                               PrimitiveKind::Roof, PrimitiveKind::Paraboloid}) {
         for (std::uint16_t mesh = 0; mesh < (kind == PrimitiveKind::Mesh ? 2 : 1); ++mesh) {
             Primitive p;
             p.kind = kind;
@@ -217,6 +262,7 @@ TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendic
             for (int i = 0; i < 20; ++i) {  // a tiny tilt: rows almost along an axis or a face
                 p.axes = tilted;
                 p.taper = float(rng.uniform());
+                if (kind == PrimitiveKind::Roof) p.taperZ = float(rng.uniform());
                 p.centre = {float(rng.uniform() - 0.5), float(rng.uniform() - 0.5), float(rng.uniform() - 0.5)};
                 p.half = {float(0.1 + rng.uniform()), float(0.1 + rng.uniform()), float(0.1 + rng.uniform())};
                 cases.push_back(p);
@@ -230,6 +276,7 @@ TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendic
         const BruteForce slow = bruteForce(geometry, target);
         fast.rows = 0;
         EXPECT_EQ(fast, slow.counts) << "case " << m << " kind " << int(cases[m].kind);
+        EXPECT_EQ(slow.textbookMismatches, 0) << "case " << m << " kind " << int(cases[m].kind);
         covered += slow.counts.occupied;
         if (std::find(coverEverything.begin(), coverEverything.end(), m) != coverEverything.end()) {
             EXPECT_EQ(fast.occupied, 8000u) << "case " << m;

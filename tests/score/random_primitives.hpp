@@ -1,8 +1,10 @@
 // Test helpers for the voxelizer tests of every primitive kind: random frames (rotations,
 // mirrors, axis-aligned and grid-aligned placements), random primitives of a kind, two closed
 // meshes (an octahedron and a non-convex L-shaped prism), a random fill/avoid target and the
-// voxel-centre test of a box or round primitive as one callable.
+// voxel-centre test of a box, round, roof or paraboloid primitive as one callable.
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -44,8 +46,8 @@ inline glm::mat3 randomAxisAligned(Rng& rng) {
 /// A random primitive of `kind` around `grid`: styles 0-1 rotated, 2 axis-aligned, 3 axis-aligned
 /// and grid-aligned (centre on a voxel centre or corner, half extents in half voxels, so surfaces
 /// pass exactly through voxel centres); centres may leave the grid; one frame axis in four is
-/// mirrored; sizes are sometimes thin (a thousandth of a voxel) or flat (zero). Cone tapers are
-/// 0, 1 or uniform in between. `gridAligned` forces style 3.
+/// mirrored; sizes are sometimes thin (a thousandth of a voxel) or flat (zero). Cone tapers and
+/// both roof fractions are 0, 1 or uniform in between. `gridAligned` forces style 3.
 inline Primitive randomPrimitive(PrimitiveKind kind, const GridSpec& grid, Rng& rng, std::uint16_t meshes = 0,
                                  bool gridAligned = false) {
     Primitive p;
@@ -71,6 +73,10 @@ inline Primitive randomPrimitive(PrimitiveKind kind, const GridSpec& grid, Rng& 
     const std::uint32_t t = rng.below(4);
     p.taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
     if (kind == PrimitiveKind::Mesh) p.mesh = std::uint16_t(rng.below(meshes));
+    if (kind == PrimitiveKind::Roof) {  // drawn last: the other kinds' draws stay as they were
+        const std::uint32_t tz = rng.below(4);
+        p.taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : float(rng.uniform());
+    }
     return p;
 }
 
@@ -146,13 +152,55 @@ inline void countHits(const std::vector<std::uint8_t>& hits, const VolumeTarget&
             }
 }
 
-/// The inside test of a box, cylinder, cone or sphere (the very functions the voxelizer uses).
+using Local = std::array<long double, 3>;
+
+/// Local coordinates u of world point w in long double, projected onto the frame's axes as
+/// BoxFrame does (u_k = axis_k . (w - centre) / |half_k|).
+inline Local localCoordinates(const Primitive& p, const double w[3]) {
+    Local u;
+    for (int k = 0; k < 3; ++k) {
+        long double s = 0;
+        for (int j = 0; j < 3; ++j) s += (long double)p.axes[k][j] * ((long double)w[j] - (long double)p.centre[j]);
+        u[k] = s / std::fabs((long double)p.half[k]);
+    }
+    return u;
+}
+
+/// Signed "distance" of local point u from the surface of p (negative inside) in the textbook
+/// form of shape/primitive.hpp, written independently of the kinds' code: every kind but Mesh.
+inline long double textbookDistance(const Primitive& p, const Local& u) {
+    const long double radial = std::sqrt(u[0] * u[0] + u[2] * u[2]);
+    const long double slab = std::fabs(u[1]) - 1;
+    auto clamped = [](float t) { return t >= 0 ? (long double)std::min(t, 1.0f) : 0.0L; };  // NaN -> 0
+    switch (p.kind) {
+    case PrimitiveKind::Box: return std::max({std::fabs(u[0]) - 1, slab, std::fabs(u[2]) - 1});
+    case PrimitiveKind::Sphere: return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) - 1;
+    case PrimitiveKind::Cylinder: return std::max(radial - 1, slab);
+    case PrimitiveKind::Cone: {
+        const long double t = p.taper;
+        return std::max(radial - ((1 + t) / 2 + (t - 1) / 2 * u[1]), slab);
+    }
+    case PrimitiveKind::Roof: {
+        const long double tx = clamped(p.taper), tz = clamped(p.taperZ);
+        return std::max({std::fabs(u[0]) - ((1 + tx) / 2 + (tx - 1) / 2 * u[1]),
+                         std::fabs(u[2]) - ((1 + tz) / 2 + (tz - 1) / 2 * u[1]), slab});
+    }
+    case PrimitiveKind::Paraboloid: return std::max(u[0] * u[0] + u[2] * u[2] - (1 - u[1]) / 2, slab);
+    case PrimitiveKind::Mesh: break;
+    }
+    return NAN;
+}
+
+/// The inside test of a box, cylinder, cone, sphere, roof or paraboloid (the very functions the
+/// voxelizer uses).
 inline std::function<bool(double, double, double)> insideTest(const Primitive& p) {
     switch (p.kind) {
     case PrimitiveKind::Box: return [s = BoxFrame::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
     case PrimitiveKind::Cylinder: return [s = CylinderSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
     case PrimitiveKind::Cone: return [s = ConeSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
     case PrimitiveKind::Sphere: return [s = SphereSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Roof: return [s = RoofSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
+    case PrimitiveKind::Paraboloid: return [s = ParaboloidSolid::from(p)](double x, double y, double z) { return s.contains(x, y, z); };
     case PrimitiveKind::Mesh: break;
     }
     return {};

@@ -1,6 +1,6 @@
 // Exact pixel counts: the silhouette rasterizer agrees bit for bit with a brute-force
-// point-in-polygon test on 1,000 random primitives per kind (box, cylinder, cone, sphere, mesh)
-// and camera (perspective, orthographic, shadow), including primitives partly off-screen,
+// point-in-polygon test on 1,000 random primitives per kind (box, cylinder, cone, sphere, mesh,
+// roof with ridges, apexes and square frusta, paraboloid) and camera (perspective, orthographic, shadow), including primitives partly off-screen,
 // crossing the near plane / the ground, flat or huge, mirrored, and boundary-aligned boxes whose
 // corners land exactly on pixel centres. Also the counts against a random target, and unions.
 //
@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "silhouette_test_util.hpp"
@@ -69,7 +70,8 @@ bool agrees(SilhouetteRaster& raster, OutlineBuilder& builder, const std::vector
 }
 
 const char* kindName(PrimitiveKind k) {
-    const char* names[] = {"box", "cylinder", "cone", "sphere", "mesh"};
+    const char* names[] = {"box", "cylinder", "cone", "sphere", "mesh", "roof", "paraboloid"};
+    static_assert(std::size(names) == kPrimitiveKinds);
     return names[int(k)];
 }
 
@@ -92,7 +94,8 @@ TEST(SilhouetteExactness, EveryKindAndCameraMatchesBruteForceBitForBit) {
                 const long before = covered;
                 if (!agrees(raster, builder, {p}, meshes, target, stats, covered)) {
                     ADD_FAILURE() << "primitive " << i << " centre (" << p.centre.x << ", " << p.centre.y << ", " << p.centre.z
-                                  << ") half (" << p.half.x << ", " << p.half.y << ", " << p.half.z << ") taper " << p.taper;
+                                  << ") half (" << p.half.x << ", " << p.half.y << ", " << p.half.z << ") taper " << p.taper
+                                  << " taperZ " << p.taperZ;
                     return;
                 }
                 empty += covered == before;

@@ -1,6 +1,7 @@
 // Silhouettes are the right shapes (the exactness test only shows the raster matches its own
-// outline points): the silhouette vertices of boxes, cylinders and cones span the hull of all
-// their vertices, projected independently here; spheres lie inside their exact outline and fill
+// outline points): the silhouette vertices of boxes, cylinders, cones and roofs span the hull of
+// all their vertices, and paraboloids draw the hull of their polyhedron's vertices (all projected
+// independently here); spheres lie inside their exact outline and fill
 // nearly all of it; a mesh cube draws like a box; the near plane and the ground cut primitives;
 // shadows land where the light sends them.
 #include <gtest/gtest.h>
@@ -18,12 +19,32 @@ namespace {
 
 using namespace test;
 
-/// All vertices of a box / prism / frustum / pyramid in local coordinates, from the definitions
-/// in shape/primitive.hpp (not from the outline code).
+/// All vertices of a box / prism / frustum / pyramid / roof / paraboloid polyhedron in local
+/// coordinates, from the definitions in shape/primitive.hpp and silhouette_outline.hpp (not from
+/// the outline code).
 std::vector<glm::dvec3> allVertices(const Primitive& p) {
     std::vector<glm::dvec3> v;
     if (p.kind == PrimitiveKind::Box) {
         for (int i = 0; i < 8; ++i) v.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+        return v;
+    }
+    if (p.kind == PrimitiveKind::Roof) {  // the bottom square and the top rectangle
+        const double tx = std::clamp(double(p.taper), 0.0, 1.0), tz = std::clamp(double(p.taperZ), 0.0, 1.0);
+        for (int i = 0; i < 8; ++i) {
+            const double s = i & 2 ? 1.0 : -1.0;
+            v.push_back({(i & 1 ? 1.0 : -1.0) * (s > 0 ? tx : 1.0), s, (i & 4 ? 1.0 : -1.0) * (s > 0 ? tz : 1.0)});
+        }
+        return v;
+    }
+    if (p.kind == PrimitiveKind::Paraboloid) {  // rings at radii 1, 3/4, 1/2, 1/4 on u.y = 1 - 2 r^2, the apex
+        for (int i = 0; i < 4; ++i) {
+            const double r = 1.0 - i / 4.0;
+            for (int k = 0; k < kRoundSides; ++k) {
+                const double a = 2.0 * M_PI * k / kRoundSides;
+                v.push_back({r * std::cos(a), 1.0 - 2.0 * r * r, r * std::sin(a)});
+            }
+        }
+        v.push_back({0.0, 1.0, 0.0});
         return v;
     }
     const double top = p.kind == PrimitiveKind::Cone ? std::max(0.0, double(p.taper)) : 1.0;
@@ -53,7 +74,9 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
         Outline outline;
         const int w = camera.width(), h = camera.height();
         Rng rng(21);
-        for (PrimitiveKind kind : {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone}) {
+        for (PrimitiveKind kind : {PrimitiveKind::Box, PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Roof,
+                                   PrimitiveKind::Paraboloid}) {
+            const bool detailLevels = kind == PrimitiveKind::Cylinder || kind == PrimitiveKind::Cone;
             SCOPED_TRACE(std::string(scene.name) + " kind " + std::to_string(int(kind)));
             long compared = 0, exact = 0, reduced = 0;
             for (int i = 0; i < 1000; ++i) {
@@ -70,7 +93,7 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
                 outline.clear();
                 builder.add(p, nullptr, outline);
                 const bool full = builder.lastRoundPoints() == 0 || builder.lastRoundPoints() == kRoundSides;
-                if (kind == PrimitiveKind::Box) {
+                if (!detailLevels) {
                     ASSERT_EQ(builder.lastRoundPoints(), 0);
                 }
                 Mask expected(std::size_t(w) * h, 0), got;
@@ -91,9 +114,9 @@ TEST(SilhouetteGeometry, SilhouetteVerticesSpanTheHullOfAllVertices) {
                         ASSERT_LT(distanceToBoundary(lines, c), allowed) << "primitive " << i << " pixel " << k % w << "," << k / w;
                     }
             }
-            EXPECT_GT(compared, kind == PrimitiveKind::Box ? 500 : 150);
+            EXPECT_GT(compared, detailLevels ? 150 : 500);
             EXPECT_GE(exact, compared - 5);  // rounding-level differences are rare
-            if (kind != PrimitiveKind::Box) {
+            if (detailLevels) {
                 EXPECT_GT(reduced, 50);
             }
             std::printf("%s kind %d: %ld full detail, %ld fewer corners\n", scene.name, int(kind), compared, reduced);

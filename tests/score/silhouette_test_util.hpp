@@ -158,6 +158,10 @@ inline Primitive randomPrimitive(PrimitiveKind kind, const Scene& scene, Rng& rn
     const std::uint32_t t = rng.below(10);
     p.taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
     p.mesh = 0;
+    if (kind == PrimitiveKind::Roof) {  // drawn last: the other kinds' draws stay as they were
+        const std::uint32_t tz = rng.below(10);
+        p.taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : tz == 2 ? p.taper : float(rng.uniform());  // 2: a square frustum
+    }
     return p;
 }
 

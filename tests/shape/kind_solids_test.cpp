@@ -17,21 +17,12 @@
 namespace shapevo {
 namespace {
 
-using Local = std::array<long double, 3>;
+using test::Local;
 
 /// Signed "distance" of local point u from the surface of primitive p (negative inside), in the
-/// textbook form of primitive.hpp.
+/// textbook form of primitive.hpp (test::textbookDistance; the two meshes here).
 long double textbook(const Primitive& p, const Local& u) {
-    const long double radial = std::sqrt(u[0] * u[0] + u[2] * u[2]);
-    switch (p.kind) {
-    case PrimitiveKind::Sphere: return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) - 1;
-    case PrimitiveKind::Cylinder: return std::max(radial - 1, std::fabs(u[1]) - 1);
-    case PrimitiveKind::Cone: {
-        const long double t = p.taper;
-        return std::max(radial - ((1 + t) / 2 + (t - 1) / 2 * u[1]), std::fabs(u[1]) - 1);
-    }
-    default: break;
-    }
+    if (p.kind != PrimitiveKind::Mesh) return test::textbookDistance(p, u);
     // meshes: 0 = octahedron |u|_1 <= 1, 1 = L-prism
     if (p.mesh == 0) return std::fabs(u[0]) + std::fabs(u[1]) + std::fabs(u[2]) - 1;
     const long double lower = std::max(std::fabs(u[0]) - 1, std::fabs(u[1] + 0.5L) - 0.5L);  // [-1,1] x [-1,0]
@@ -97,7 +88,8 @@ void checkAgainstTextbook(const Primitive& p, const std::function<bool(double, d
         ++checked;
         (g < 0 ? in : out) += 1;
         const Local ul = toLocal(p, w);
-        ASSERT_EQ(inside(w[0], w[1], w[2]), g < 0) << "kind " << int(p.kind) << " taper " << p.taper << " mesh " << p.mesh
+        ASSERT_EQ(inside(w[0], w[1], w[2]), g < 0) << "kind " << int(p.kind) << " taper " << p.taper << " taperZ " << p.taperZ
+                                                   << " mesh " << p.mesh
                                                    << " g " << double(g) << " at local " << double(ul[0]) << " "
                                                    << double(ul[1]) << " " << double(ul[2]);
     }
@@ -116,7 +108,8 @@ GridSpec smallGrid() {
 TEST(PrimitiveShapes, RoundInsideTestsAgreeWithTheTextbookFormulasAwayFromTheSurface) {
     Rng rng(5);
     const GridSpec grid = smallGrid();
-    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere}) {
+    for (PrimitiveKind kind : {PrimitiveKind::Cylinder, PrimitiveKind::Cone, PrimitiveKind::Sphere, PrimitiveKind::Roof,
+                               PrimitiveKind::Paraboloid}) {
         long checked = 0, in = 0, out = 0;
         for (int n = 0; n < 1000; ++n) {
             Primitive p = test::randomPrimitive(kind, grid, rng);
@@ -194,7 +187,10 @@ TEST(PrimitiveShapes, VoxelCountsOfRotatedPrimitivesApproachTheAnalyticVolumes) 
         float taper;
         std::uint16_t mesh;
         double volume;  ///< per unit of half-extent product h.x * h.y * h.z
+        float taperZ = 1;
     };
+    // A roof: integral over u.y of 4 rx rz = 8 (1 + (a + b) / 2 + a b / 3), a = tx - 1, b = tz - 1.
+    auto roof = [](double tx, double tz) { return 8 * (1 + (tx - 1 + tz - 1) / 2 + (tx - 1) * (tz - 1) / 3); };
     const double pi = M_PI;
     const Case cases[] = {{PrimitiveKind::Box, 1, 0, 8},
                           {PrimitiveKind::Sphere, 1, 0, 4 * pi / 3},
@@ -203,11 +199,17 @@ TEST(PrimitiveShapes, VoxelCountsOfRotatedPrimitivesApproachTheAnalyticVolumes) 
                           {PrimitiveKind::Cone, 0.5f, 0, 2 * pi / 3 * (1 + 0.5 + 0.25)},
                           {PrimitiveKind::Cone, 1, 0, 2 * pi},
                           {PrimitiveKind::Mesh, 1, 0, 4.0 / 3},
-                          {PrimitiveKind::Mesh, 1, 1, 6}};
+                          {PrimitiveKind::Mesh, 1, 1, 6},
+                          {PrimitiveKind::Roof, 1, 0, 8},
+                          {PrimitiveKind::Roof, 1, 0, 4, 0},
+                          {PrimitiveKind::Roof, 0, 0, 8.0 / 3, 0},
+                          {PrimitiveKind::Roof, 0.3f, 0, roof(0.3f, 0.6f), 0.6f},
+                          {PrimitiveKind::Paraboloid, 1, 0, pi}};
     for (const Case& c : cases) {
         Primitive p;
         p.kind = c.kind;
         p.taper = c.taper;
+        p.taperZ = c.taperZ;
         p.mesh = c.mesh;
         p.axes = test::randomRotation(rng);
         p.axes[1] *= -1.0f;  // mirrored
@@ -217,7 +219,8 @@ TEST(PrimitiveShapes, VoxelCountsOfRotatedPrimitivesApproachTheAnalyticVolumes) 
         const VoxelCounts counts = vox.score(geometry, target);
         const double measured = double(counts.occupied + counts.outside) * std::pow(grid.voxelSize, 3);
         const double expected = c.volume * 1.7 * 2.1 * 1.3;
-        EXPECT_NEAR(measured / expected, 1.0, 0.01) << "kind " << int(c.kind) << " taper " << c.taper << " mesh " << c.mesh;
+        EXPECT_NEAR(measured / expected, 1.0, 0.01) << "kind " << int(c.kind) << " taper " << c.taper << " mesh " << c.mesh
+                                                    << " taperZ " << c.taperZ;
         EXPECT_EQ(counts.overlap, 0u);
     }
 }
