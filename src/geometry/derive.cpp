@@ -95,6 +95,45 @@ bool bounded(const Primitive& p) {
 }
 }  // namespace
 
+namespace {
+// The building statements, out of line: derive's loop stays small enough for the compiler to
+// keep the common statements (and their expressions) inlined and in registers.
+
+/// The appearance a Color / Material statement makes of `current`; returns its index in `looks`.
+[[gnu::noinline]] std::uint32_t newLook(const Grammar& g, const Statement& st, std::vector<Appearance>& looks,
+                                         std::uint32_t current, const float* params, const glm::vec3& size,
+                                         const glm::vec3& parentSize, float* evalStack) {
+    Appearance look = looks[current];
+    if (st.kind == StatementKind::Color) {
+        for (int k = 0; k < 3; ++k) {
+            const float v = evaluate(g, st.expr[k], params, &size.x, &parentSize.x, evalStack);
+            look.color[k] = v >= 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN -> 0
+        }
+    } else {
+        look.material = st.slot;
+    }
+    looks.push_back(look);
+    return std::uint32_t(looks.size() - 1);
+}
+
+/// The pieces of a Pieces statement, each a task running its successor on its own scope.
+[[gnu::noinline]] void pushPieces(const Grammar& g, const Statement& st, std::uint32_t gene, const Scope& s,
+                                  const float* params, const glm::vec3& parentSize, float* evalStack,
+                                  std::uint32_t frame, DeriveScratch& scratch) {
+    makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
+    const PieceList& list = g.pieceLists[st.slot];
+    // Last piece first, scope and task alike: the first piece runs first, and every task below
+    // the one popped refers to scopes below its own (see derive's resize of `scopes`).
+    for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
+        const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
+        if (piece.begin == piece.end) continue;  // nil
+        scratch.scopes.push_back(scratch.pieces[k].scope);
+        const auto at = std::uint32_t(scratch.scopes.size() - 1);
+        scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame});
+    }
+}
+}  // namespace
+
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
     out.clear();
     out.meshes = &g.meshes;
@@ -118,7 +157,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
     float evalStack[kMaxExpressionStack];
     constexpr std::uint32_t kNoFrame = DeriveScratch::kNoFrame;
     scopes.push_back(Scope{});
-    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
+    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame});
     std::size_t tasks = 0;
     while (!stack.empty()) {
         if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;  // mirrors without boxes multiply too
@@ -129,14 +168,14 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
         const Rule& r = g.rules[c.rule(task.gene)];
         if (r.paramFloats > 0)
             std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
-        if (task.frame != kNoFrame) std::memcpy(params + kFrameBase, frames.data() + task.frame, r.frameFloats * sizeof(float));
-        frames.resize(task.framesTop);
+        if (task.frame != kNoFrame) [[unlikely]]
+            std::memcpy(params + kFrameBase, frames.data() + task.frame, r.frameFloats * sizeof(float));
         Scope s = scopes[task.scope], beforeTerminal;
         const glm::vec3 parentSize = scopes[task.parent].size;
         // Index of the stored scope equal to `s`, if the last one stored still is (children of
         // consecutive child statements share it); UINT32_MAX when `s` changed since.
         std::uint32_t stored = UINT32_MAX;
-        auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+        auto eval = [&](const ExprRef& e) __attribute__((always_inline)) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
         // The let values this task has now, for tasks it pushes that go on in this gene.
         auto snapshot = [&]() {
             if (r.frameFloats == 0) return kNoFrame;
@@ -185,8 +224,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 scopes.push_back(mirrored);
                 // the parent scope stays where it is: at or below task.scope
                 const std::uint32_t frame = snapshot();
-                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame,
-                                 std::uint32_t(frames.size())});
+                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame});
                 stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
@@ -240,8 +278,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                             scopes.push_back(s);
                             stored = std::uint32_t(scopes.size() - 1);
                         }
-                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame,
-                                         std::uint32_t(frames.size())});
+                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame});
                     }
                 }
                 break;
@@ -262,39 +299,15 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 stored = UINT32_MAX;
                 break;
             case StatementKind::Color:
-            case StatementKind::Material: {
-                Appearance look = looks[s.look];
-                if (st.kind == StatementKind::Color) {
-                    for (int k = 0; k < 3; ++k) {
-                        const float v = eval(st.expr[k]);
-                        look.color[k] = v >= 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN -> 0
-                    }
-                } else {
-                    look.material = st.slot;
-                }
-                s.look = std::uint32_t(looks.size());
-                looks.push_back(look);
+            case StatementKind::Material:
+                s.look = newLook(g, st, looks, s.look, params, s.size, parentSize, evalStack);
                 stored = UINT32_MAX;
                 break;
-            }
-            case StatementKind::Pieces: {
-                makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
-                const std::uint32_t frame = snapshot();
-                const std::uint32_t top = std::uint32_t(frames.size());
-                const PieceList& list = g.pieceLists[st.slot];
-                // Last piece first, scope and task alike: the first piece runs first, and every
-                // task below the one popped refers to scopes below its own (see the resize above).
-                for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
-                    const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
-                    if (piece.begin == piece.end) continue;  // nil
-                    scopes.push_back(scratch.pieces[k].scope);
-                    const auto at = std::uint32_t(scopes.size() - 1);
-                    stack.push_back({task.gene, piece.begin, piece.end, at, at, frame, top});
-                }
+            case StatementKind::Pieces:
+                pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(), scratch);
                 stored = UINT32_MAX;
                 i = st.end - 1;
                 break;
-            }
             }
         }
     }

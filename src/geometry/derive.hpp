@@ -18,7 +18,6 @@ struct DeriveScratch {
         std::uint32_t scope;      ///< index in `scopes`: current scope when the task starts
         std::uint32_t parent;     ///< index in `scopes`: scope the gene received from its parent
         std::uint32_t frame;      ///< its let values in `frames` (kNoFrame: none)
-        std::uint32_t framesTop;  ///< size of `frames` when it was pushed
     };
     static constexpr std::uint32_t kNoFrame = UINT32_MAX;
     std::vector<Task> stack;
@@ -26,7 +25,9 @@ struct DeriveScratch {
     /// entries above the popped task's own scope are no longer referenced).
     std::vector<Scope> scopes;
     std::vector<float> params;
-    std::vector<float> frames;         ///< let values of pending tasks that continue a gene
+    /// Let values of tasks that continue a gene (mirrors, pieces), appended and never popped
+    /// during one derivation (only rules with lets or inline arguments write any).
+    std::vector<float> frames;
     std::vector<PieceScope> pieces;    ///< work space of split / comp / lot statements
     std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was

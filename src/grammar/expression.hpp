@@ -114,7 +114,7 @@ inline float applyBinary(OpCode op, float a, float b) {
 
 /// Evaluate a compiled scalar expression. `params` is the gene's parameter block; `stack` must
 /// hold kMaxExpressionStack floats. Small shapes skip the stack machine (same bits).
-inline float evaluate(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+[[gnu::always_inline]] inline float evaluate(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
                       const float* parentSize, float* stack) {
     if (e.shape == ExprRef::Shape::Program) return evaluateProgram(g, e, params, scopeSize, parentSize, stack);
     const float* const base[4] = {e.value, params, scopeSize, parentSize};  // indexed by LeafSource
