@@ -115,8 +115,8 @@ void makePieces(const Grammar& g, const PieceList& list, const Scope& s, const f
     auto eval = [&](const ExprRef& e) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
     switch (list.kind) {
     case PiecesKind::Split: {
-        float lengths[256];
-        const std::uint32_t n = std::min<std::uint32_t>(list.count, 256);
+        float lengths[kMaxSplitPieces];  // the parser allows no more
+        const std::uint32_t n = std::min<std::uint32_t>(list.count, std::uint32_t(kMaxSplitPieces));
         for (std::uint32_t k = 0; k < n; ++k) {
             const Piece& p = g.pieces[list.first + k];
             const float v = eval(p.value);

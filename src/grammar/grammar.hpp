@@ -120,6 +120,8 @@ enum class PiecesKind : std::uint8_t {
     Corners,      ///< corners (rx, ry) [on (a, b, c, d)] [inside] A | ...: square lots on a flat scope's corners
     Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges, x along the edge
 };
+/// Most pieces one split may list (a repeat group makes any number of them).
+inline constexpr std::size_t kMaxSplitPieces = 256;
 struct PieceList {
     PiecesKind kind = PiecesKind::Split;
     std::uint8_t axis = 0;       ///< Split, Repeat*

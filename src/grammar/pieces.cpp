@@ -96,6 +96,8 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::
         tokens_.expect(':', "after the size of a piece (SIZE: SUCCESSOR)");
         parseSuccessor(rule, scope, p, scope.form);
         pieces.push_back(p);
+        if (pieces.size() > kMaxSplitPieces)
+            tokens_.fail(open, "a split lists at most " + std::to_string(kMaxSplitPieces) + " pieces (use a repeat group for more)");
         if (inGroup && tokens_.peek().is('}')) {
             tokens_.take();
             tokens_.expect('*', "after the '}' of a repeat group ({ SIZE: A | ... }* repeats as many times as fit)");

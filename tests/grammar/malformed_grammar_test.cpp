@@ -176,6 +176,11 @@ const std::vector<Malformed>& cases() {
         {"LotRectTooFewNumbers", body("  lot rect (0, 0, 1) nil"), "bad.grammar:3:20", "lot rect (x1, y1, x2, y2) has 4 numbers, this gives 3"},
         {"EdgesWithoutCounts", body("  lot rect (0, 0, 1, 1) { edges (0.1, 0.1) nil }"), "bad.grammar:3:44", "expected '(' to open edges ... (n1, n2, n3, n4)"},
         {"InlineCallCycle", body("  split x { 1: B }") + "rule B { split y { 1: B } }\n", "bad.grammar:5:23", "inline calls never end: B -> B"},
+        {"SplitTooManyPieces", body("  split x { " + [] {
+             std::string s = "1: nil";
+             for (int i = 0; i < 256; ++i) s += " | 1: nil";
+             return s;
+         }() + " }"), "bad.grammar:3:11", "a split lists at most 256 pieces"},
         {"InlineSelfCall", body("  A"), "bad.grammar:3:3", "inline calls never end: A -> A"},
         {"InlineArgumentsMissing", body("  split x { 1: B }") + "rule B(w) { }\n", "bad.grammar:3:16", "rule B takes 1 argument(s) (w)"},
         {"MaterialWithoutName", body("  material 5"), "bad.grammar:3:12", "expected a material name after 'material'"},
