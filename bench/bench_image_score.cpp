@@ -6,6 +6,9 @@
 //  - BM_ImageScoreCylinders: the same trees with cylinders for leaves too (all one kind).
 //  - BM_LargeTree/<part>: one 50,000-gene tree chromosome (every branch has three children,
 //    breadth first); part 0 = derive + score (ImageScorer::fitness), 1 = derive only, 2 = score only.
+//  - BM_RasterizeKind/kind:<k>: SilhouetteRaster::add + score of 20 random rotated primitives of
+//    one kind (0 box, 1 cylinder, 2 cone, 3 sphere, 5 roof, 6 paraboloid; half extents 0.1..0.5
+//    around the tree's place in the view, fixed seed), to compare the kinds' outline costs.
 // Counters: evals/s; primitives, covered pixels and rasterized rows per evaluation.
 //
 //   cd build && ninja bench_image_score && taskset -c 1 ./bench/bench_image_score --benchmark_min_time=1
@@ -18,6 +21,10 @@
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "genome/random.hpp"
 
 #include "breadth_first_tree.hpp"
 
@@ -191,6 +198,44 @@ void BM_LargeTree(benchmark::State& state) {
     state.SetLabel(part == 0 ? "derive + score" : part == 1 ? "derive only" : "score only");
 }
 
+double between(Rng& rng, double lo, double hi) { return lo + (hi - lo) * rng.uniform(); }
+
+void BM_RasterizeKind(benchmark::State& state) {
+    const Camera camera = paperCamera();
+    Rng rng(7);
+    std::vector<Geometry> models(16);
+    for (Geometry& m : models) {
+        for (int k = 0; k < 20; ++k) {
+            Primitive p;
+            p.kind = PrimitiveKind(state.range(0));
+            p.taper = float(between(rng, 0.0, 1.0));
+            p.taperZ = float(between(rng, 0.0, 1.0));
+            p.centre = {float(between(rng, -1.0, 1.0)), float(between(rng, 0.6, 2.2)), float(between(rng, -0.5, 0.5))};
+            p.half = {float(between(rng, 0.1, 0.5)), float(between(rng, 0.1, 0.5)), float(between(rng, 0.1, 0.5))};
+            const glm::quat q = glm::normalize(glm::quat(float(between(rng, -1.0, 1.0)), float(between(rng, -1.0, 1.0)),
+                                                         float(between(rng, -1.0, 1.0)), float(between(rng, -1.0, 1.0))));
+            p.axes = glm::mat3_cast(q);
+            m.primitives.push_back(p);
+        }
+    }
+    SilhouetteRaster raster(camera);
+    for (const Geometry& m : models) raster.add(m), raster.score(mickey());  // warm
+    std::uint64_t primitives = 0, covered = 0, rows = 0;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        raster.add(models[i]);
+        const SilhouetteCounts counts = raster.score(mickey());
+        benchmark::DoNotOptimize(counts);
+        primitives += models[i].primitives.size();
+        covered += counts.covered;
+        rows += counts.rows;
+        if (++i == models.size()) i = 0;
+    }
+    setCounters(state, primitives, covered, rows);
+    state.counters["primitives/s"] = benchmark::Counter(double(primitives), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_RasterizeKind)->ArgName("kind")->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(5)->Arg(6);
 BENCHMARK(BM_ImageScore);
 BENCHMARK(BM_ImageScoreCylinders);
 BENCHMARK(BM_ImageDeriveScore);
