@@ -69,6 +69,10 @@ public:
     int parseConstantValue(double out[3], const std::string& what, const BodyScope* scope, bool vectorAllowed);
     double parseConstant(const std::string& what, const BodyScope* scope);
     void parseParam(Rule& rule, BodyScope& scope);
+    /// uniform(a, b) or int(a, b) whose bounds depend on the scope, a parameter, a let or a
+    /// run-time argument (true: read and compiled); false (nothing taken) for constant bounds.
+    bool parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at,
+                           const SourceLocation& priorAt);
     void parseChild(Rule& rule, Statement& s, const SourceLocation& childAt, BodyScope& scope);
     /// The rule id for `header` called with these constant arguments (creating the instance).
     std::uint16_t instance(int header, const std::vector<Binding>& args);

@@ -186,6 +186,35 @@ TEST(GrammarLanguage, InlineCallsTakeRunTimeArgumentsAndShareOneParameterBlock) 
     }
 }
 
+TEST(GrammarLanguage, PriorsOverTheScopeDrawFromAUnitParameterWithinTheirRunTimeBounds) {
+    // The gene stores u in [0, 1]; the value is a + u (b - a) with the bounds of this scope.
+    const Grammar g = parseGrammar(
+        "start A\nrule A {\n  size (4, 1, 1)\n  param w = uniform(0.25 * scope.size.x, 0.5 * scope.size.x)\n"
+        "  param n = int(1, scope.size.x)\n  mirror x\n  split y { ~1: { size (w, n, 1) box } }\n}\n",
+        "runtime-prior.grammar");
+    const Rule& r = g.rules[0];
+    ASSERT_EQ(r.paramFloats, 2u);
+    EXPECT_EQ(r.params[0].prior[0].lo, 0.0f);
+    EXPECT_EQ(r.params[0].prior[0].hi, 1.0f);
+    for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+        Rng rng(seed);
+        Chromosome c;
+        plantRoot(g, c, rng);
+        const float u = c.param(0, r, 0), v = c.param(0, r, 1);
+        Geometry out;
+        DeriveScratch scratch;
+        ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
+        ASSERT_EQ(out.primitives.size(), 2u);  // both sides of the mirror see the drawn values
+        for (const Primitive& p : out.primitives) {
+            EXPECT_FLOAT_EQ(2 * p.half.x, 1.0f + u * (2.0f - 1.0f)) << seed;
+            const float n = 2 * p.half.y;
+            EXPECT_EQ(n, std::min(std::floor(1.0f + v * 4.0f), 4.0f)) << seed;
+            EXPECT_GE(n, 1.0f);
+            EXPECT_LE(n, 4.0f);
+        }
+    }
+}
+
 TEST(GrammarLanguage, LetValuesSurviveAMirrorAndPiecesThatContinueTheGene) {
     const Geometry out = deriveRoot(
         "start A\nrule A {\n  let w = 3\n  mirror x\n  translate (w, 0, 0)\n  split y { ~1: { size (w, w, w) box } | ~1: nil }\n}\n");
