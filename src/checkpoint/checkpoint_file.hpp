@@ -7,6 +7,7 @@
 // flushed; a folder without a valid MANIFEST, or whose files do not match it, is incomplete.
 // The HDF5 layouts (stable names) are documented at the top of island_file.cpp and run_file.cpp.
 #pragma once
+#include "grammar/parser.hpp"
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -86,6 +87,7 @@ void publishCheckpoint(const std::string& partialFolder, const std::string& fina
 /// and file size; verbose adds the config text. Verifies the folder first and reads every file
 /// (the grammar is the one stored in run.h5). Throws InputError if the checkpoint is incomplete
 /// or any file is invalid.
-std::string describeCheckpoint(const std::string& folder, bool verbose);
+/// `attrs`: the run config's [grammar.attr] values, which the stored grammar is read with.
+std::string describeCheckpoint(const std::string& folder, bool verbose, const AttrOverrides& attrs = {});
 
 }  // namespace shapevo

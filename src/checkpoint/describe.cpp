@@ -29,7 +29,7 @@ std::string bytes(std::uint64_t n) {
 
 }  // namespace
 
-std::string describeCheckpoint(const std::string& folder, bool verbose) {
+std::string describeCheckpoint(const std::string& folder, bool verbose, const AttrOverrides& attrs) {
     const std::string problem = verifyCheckpoint(folder);
     if (!problem.empty()) throw InputError(folder, "", "not a complete checkpoint: " + problem);
     const std::vector<ManifestEntry> files = readManifest(folder);
@@ -47,7 +47,7 @@ std::string describeCheckpoint(const std::string& folder, bool verbose) {
                                                  std::to_string(islandsListed) + " island files");
     // The checkpoint carries its own grammar; chromosomes are checked against it. The genome
     // length limit is a run setting, not stored here, so any length is accepted for display.
-    const Grammar grammar = parseGrammar(m.grammarText, m.grammarPath);
+    const Grammar grammar = parseGrammar(m.grammarText, m.grammarPath, attrs);
     const GenomeLimits anyLength{UINT32_MAX};
 
     std::ostringstream out;

@@ -245,7 +245,15 @@ int main(int argc, char** argv) {
             o.allowChangedInputs = allowChangedInputs;
             resumeJob(mpi, runDir, o, log);
         } else if (*inspect) {
-            std::cout << describeCheckpoint(resolveCheckpointPath(inspectPath), inspectVerbose);
+            const std::string folder = resolveCheckpointPath(inspectPath);
+            AttrOverrides attrs;  // the run's [grammar.attr], which its grammar was read with
+            try {
+                const RunMetadata meta = readRunMetadata(folder + "/run.h5");
+                attrs = parseConfig(meta.configText, meta.configPath).grammarAttrs;
+            } catch (const InputError&) {
+                // describeCheckpoint reports what is wrong with the checkpoint itself
+            }
+            std::cout << describeCheckpoint(folder, inspectVerbose, attrs);
         } else if (*exportCmd) {
             requireOutputFormat(exportOut, kExportFormats, "-o", exportFormat);
             refuseExisting(exportOut);
