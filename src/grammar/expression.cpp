@@ -416,6 +416,33 @@ void classifyExpression(const std::vector<Instr>& code, ExprRef& e) {
     e = f;
 }
 
+namespace {
+/// The standard normal's quantile: Acklam's rational approximation (relative error below 1.2e-9),
+/// far more than the float it is rounded to needs; 0 and 1 give -inf and +inf.
+double normalQuantile(double p) {
+    if (!(p > 0.0)) return p == 0.0 ? -INFINITY : NAN;
+    if (!(p < 1.0)) return p == 1.0 ? INFINITY : NAN;
+    static constexpr double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+                                   1.383577518672690e+02,  -3.066479806614716e+01, 2.506628277459239e+00};
+    static constexpr double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
+                                   6.680131188771972e+01,  -1.328068155288572e+01};
+    static constexpr double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
+                                   -2.549732539343734e+00, 4.374664141464968e+00,  2.938163982698783e+00};
+    static constexpr double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
+                                   3.754408661907416e+00};
+    const double low = 0.02425;
+    if (p < low || p > 1.0 - low) {
+        const double q = std::sqrt(-2.0 * std::log(p < low ? p : 1.0 - p));
+        const double x = (((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q + c[5]) /
+                         ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1.0);
+        return p < low ? x : -x;
+    }
+    const double q = p - 0.5, r = q * q;
+    return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
+           (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
+}
+}  // namespace
+
 bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e) {
     for (std::uint32_t i = e.begin; i < e.end; ++i)
         if (code[i].op == OpCode::Param || code[i].op == OpCode::ScopeSize || code[i].op == OpCode::ParentSize) return false;
@@ -453,6 +480,8 @@ float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, c
         case OpCode::And: stack[top - 1] = (stack[top - 1] != 0.0f && stack[top] != 0.0f) ? 1.0f : 0.0f; --top; break;
         case OpCode::Or: stack[top - 1] = (stack[top - 1] != 0.0f || stack[top] != 0.0f) ? 1.0f : 0.0f; --top; break;
         case OpCode::Not: stack[top] = stack[top] == 0.0f ? 1.0f : 0.0f; break;
+        case OpCode::NormalCdf: stack[top] = float(0.5 * std::erfc(-double(stack[top]) * M_SQRT1_2)); break;
+        case OpCode::NormalQuantile: stack[top] = float(normalQuantile(double(stack[top]))); break;
         }
     }
     return stack[0];

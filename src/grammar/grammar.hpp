@@ -19,6 +19,7 @@ enum class OpCode : std::uint8_t {
     Add, Sub, Mul, Div, Neg,
     Min, Max, Abs, Sin, Cos, Sqrt, Floor,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Not,  // comparisons and logic: 1 for true, 0 for false
+    NormalCdf, NormalQuantile,             // the standard normal's CDF and its inverse (run-time normal priors)
 };
 struct Instr {
     OpCode op;

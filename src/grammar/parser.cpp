@@ -190,7 +190,7 @@ int stackDepth(const std::vector<Instr>& code, std::uint32_t begin, std::uint32_
         switch (code[i].op) {
         case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
         case OpCode::Neg: case OpCode::Abs: case OpCode::Sin: case OpCode::Cos: case OpCode::Sqrt: case OpCode::Floor:
-        case OpCode::Not: break;
+        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: break;
         default: --depth; break;  // the binary operations
         }
         deepest = std::max(deepest, depth);
@@ -215,17 +215,47 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
         exprs_.compile(ctx, 3, probe, e, stack);
         for (int c = 0; c < 3; ++c) constant = constant && isConstantExpression(probe, e[c]);
     }
+    if (kind == "normal" && tokens_.peek().is(')')) {  // and its bounds: in [lo, hi]
+        tokens_.take();
+        if (tokens_.peek().isWord("in")) {
+            tokens_.take();
+            if (tokens_.peek().is('[')) {
+                tokens_.take();
+                for (int k = 0; k < 2; ++k) {
+                    if (k > 0) {
+                        if (!tokens_.peek().is(',')) break;
+                        tokens_.take();
+                    }
+                    const Token& t = tokens_.peek();
+                    if (t.kind == TokenKind::End || t.is(']') || t.is(',')) break;
+                    exprs_.compile(ctx, 3, probe, e, stack);
+                    for (int c = 0; c < 3; ++c) constant = constant && isConstantExpression(probe, e[c]);
+                }
+            }
+        }
+    }
     tokens_.seek(start);
     if (constant) return false;
     // A run-time prior: the gene stores u in [0, 1] (its genome prior); the value is drawn from u
     // where the parameter is declared, into a frame value the rule's expressions read:
     //   uniform(a, b): a + u (b - a)        int(a, b): min(floor(ceil(a) + u (floor(b) - ceil(a) + 1)), floor(b))
-    ExprRef lo, hi;
+    //   normal(mu, s) in [lo, hi]: min(hi, max(lo, mu + s Q(F(α) + u (F(β) − F(α))))) with
+    //   α = (lo − mu) / s, β = (hi − mu) / s, F the standard normal CDF and Q its inverse
+    ExprRef lo, hi, mu, sigma;
     const SourceLocation loAt = tokens_.peek().where;
-    compileScalar(scope, lo);
+    compileScalar(scope, kind == "normal" ? mu : lo);
     tokens_.expect(',', "between the two arguments of " + kind);
-    compileScalar(scope, hi);
+    compileScalar(scope, kind == "normal" ? sigma : hi);
     tokens_.expect(')', "after the two arguments of " + kind);
+    if (kind == "normal") {
+        if (!tokens_.peek().isWord("in")) tokens_.expected("'in [lo, hi]' after normal(mu, sigma): its support must be bounded");
+        tokens_.take();
+        tokens_.expect('[', "after 'in'");
+        compileScalar(scope, lo);
+        tokens_.expect(',', "between the bounds");
+        compileScalar(scope, hi);
+        tokens_.expect(']', "to close the bounds");
+    }
     p.dims = 1;
     p.prior[0] = p.prior[1] = p.prior[2] = Prior{PriorKind::Uniform, 0.0f, 1.0f};
     p.first = rule.paramFloats;
@@ -238,7 +268,32 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
         code.insert(code.end(), part.begin(), part.end());
     };
     const auto begin = std::uint32_t(code.size());
-    if (kind == "uniform") {
+    if (kind == "normal") {
+        auto standardCdf = [&](const ExprRef& bound) {
+            copy(bound);
+            copy(mu);
+            code.push_back({OpCode::Sub});
+            copy(sigma);
+            code.push_back({OpCode::Div});
+            code.push_back({OpCode::NormalCdf});
+        };
+        copy(hi);
+        copy(lo);
+        copy(mu);
+        copy(sigma);
+        standardCdf(lo);
+        code.push_back({OpCode::Param, 0, u, 0});
+        standardCdf(hi);
+        standardCdf(lo);
+        code.push_back({OpCode::Sub});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::NormalQuantile});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::Max});  // max(lo, v): a NaN draw becomes lo
+        code.push_back({OpCode::Min});  // min(hi, .)
+    } else if (kind == "uniform") {
         copy(lo);
         code.push_back({OpCode::Param, 0, u, 0});
         copy(hi);
@@ -314,7 +369,7 @@ void Parser::parseParam(Rule& rule, BodyScope& scope) {
         tokens_.fail(priorAt, "unknown prior '" + kind + "': expected uniform, normal, int or choice");
     tokens_.expect('(', "after " + kind);
     double a[3], b[3];
-    if ((kind == "uniform" || kind == "int") && parseRunTimePrior(rule, scope, p, kind, at, priorAt)) return;
+    if ((kind == "uniform" || kind == "int" || kind == "normal") && parseRunTimePrior(rule, scope, p, kind, at, priorAt)) return;
     if (kind == "uniform" || kind == "normal" || kind == "int") {
         int da = parseConstantValue(a, "the first argument of " + kind, &scope, true);
         tokens_.expect(',', "between the two arguments of " + kind);

@@ -69,7 +69,7 @@ public:
     int parseConstantValue(double out[3], const std::string& what, const BodyScope* scope, bool vectorAllowed);
     double parseConstant(const std::string& what, const BodyScope* scope);
     void parseParam(Rule& rule, BodyScope& scope);
-    /// uniform(a, b) or int(a, b) whose bounds depend on the scope, a parameter, a let or a
+    /// uniform(a, b), int(a, b) or normal(mu, s) in [lo, hi] whose arguments depend on the scope, a parameter, a let or a
     /// run-time argument (true: read and compiled); false (nothing taken) for constant bounds.
     bool parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at,
                            const SourceLocation& priorAt);

@@ -215,6 +215,34 @@ TEST(GrammarLanguage, PriorsOverTheScopeDrawFromAUnitParameterWithinTheirRunTime
     }
 }
 
+TEST(GrammarLanguage, NormalPriorsOverTheScopeStayInTheirBoundsAndFollowTheQuantile) {
+    // value = mu + s Q(F(α) + u (F(β) − F(α))): u = 1/2 of a symmetric support gives mu.
+    const Grammar g = parseGrammar(
+        "start A\nrule A {\n  size (4, 1, 1)\n  param w = normal(scope.size.x / 2, scope.size.x / 8) in [1, scope.size.x - 1]\n"
+        "  size (w, 1, 1)\n  box\n}\n",
+        "normal-prior.grammar");
+    const Rule& r = g.rules[0];
+    Chromosome c;
+    Rng rng(5);
+    plantRoot(g, c, rng);
+    Geometry out;
+    DeriveScratch scratch;
+    for (float u : {0.0f, 0.001f, 0.25f, 0.5f, 0.75f, 0.999f, 1.0f}) {
+        c.setParam(0, r, 0, u);
+        ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
+        const float w = 2 * out.primitives[0].half.x;
+        EXPECT_GE(w, 1.0f) << u;
+        EXPECT_LE(w, 3.0f) << u;
+        if (u == 0.5f) EXPECT_NEAR(w, 2.0f, 1e-5);
+        if (u == 0.0f) EXPECT_NEAR(w, 1.0f, 1e-5);
+        if (u == 1.0f) EXPECT_NEAR(w, 3.0f, 1e-5);
+    }
+    c.setParam(0, r, 0, 0.75f);
+    derive(g, c, out, scratch);
+    // F(β) = F(2) = 0.97725, F(α) = 0.02275: p = 0.5 + 0.25 * 0.9545 = 0.73863, Q(p) = 0.6398
+    EXPECT_NEAR(2 * out.primitives[0].half.x, 2.0f + 0.5f * 0.6398f, 2e-3);
+}
+
 TEST(GrammarLanguage, LetValuesSurviveAMirrorAndPiecesThatContinueTheGene) {
     const Geometry out = deriveRoot(
         "start A\nrule A {\n  let w = 3\n  mirror x\n  translate (w, 0, 0)\n  split y { ~1: { size (w, w, w) box } | ~1: nil }\n}\n");
