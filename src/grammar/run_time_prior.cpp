@@ -1,0 +1,180 @@
+// Priors over run-time values: uniform(a, b), int(a, b) and normal(mu, s) in [lo, hi] whose
+// arguments use the scope, parameters, lets or inline arguments. The gene stores u in [0, 1]
+// (the parameter's genome prior, which the operators see); a frame value drawn from u where the
+// parameter is declared is what the rule's expressions read (grammars/README.md gives the
+// formulas). Constant priors never come here: parser.cpp folds them.
+#include <cmath>
+
+#include "grammar/parser_state.hpp"
+
+namespace shapevo::grammar_detail {
+
+namespace {
+/// Largest evaluation stack the instructions [begin, end) need.
+int stackDepth(const std::vector<Instr>& code, std::uint32_t begin, std::uint32_t end) {
+    int depth = 0, deepest = 0;
+    for (std::uint32_t i = begin; i < end; ++i) {
+        switch (code[i].op) {
+        case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
+        case OpCode::Neg: case OpCode::Abs: case OpCode::Sin: case OpCode::Cos: case OpCode::Sqrt: case OpCode::Floor:
+        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: break;
+        default: --depth; break;  // the binary operations
+        }
+        deepest = std::max(deepest, depth);
+    }
+    return deepest;
+}
+}  // namespace
+
+bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at,
+                               const SourceLocation& priorAt) {
+    // Probe: do the two arguments depend on anything known only during a derivation?
+    const std::size_t start = tokens_.mark();
+    const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
+    std::vector<Instr> probe;
+    ExprRef e[3];
+    int stack = 0;
+    bool constant = true;
+    for (int k = 0; k < 2; ++k) {
+        if (k > 0) tokens_.expect(',', "between the two arguments of " + kind);
+        const Token& t = tokens_.peek();
+        if (t.kind == TokenKind::End || t.is(')') || t.is(',')) break;  // the constant path reports it
+        exprs_.compile(ctx, 3, probe, e, stack);
+        for (int c = 0; c < 3; ++c) constant = constant && isConstantExpression(probe, e[c]);
+    }
+    if (kind == "normal" && tokens_.peek().is(')')) {  // and its bounds: in [lo, hi]
+        tokens_.take();
+        if (tokens_.peek().isWord("in")) {
+            tokens_.take();
+            if (tokens_.peek().is('[')) {
+                tokens_.take();
+                for (int k = 0; k < 2; ++k) {
+                    if (k > 0) {
+                        if (!tokens_.peek().is(',')) break;
+                        tokens_.take();
+                    }
+                    const Token& t = tokens_.peek();
+                    if (t.kind == TokenKind::End || t.is(']') || t.is(',')) break;
+                    exprs_.compile(ctx, 3, probe, e, stack);
+                    for (int c = 0; c < 3; ++c) constant = constant && isConstantExpression(probe, e[c]);
+                }
+            }
+        }
+    }
+    tokens_.seek(start);
+    if (constant) return false;
+    // A run-time prior: the gene stores u in [0, 1] (its genome prior); the value is drawn from u
+    // where the parameter is declared, into a frame value the rule's expressions read:
+    //   uniform(a, b): a + u (b - a)        int(a, b): min(floor(ceil(a) + u (floor(b) - ceil(a) + 1)), floor(b))
+    //   normal(mu, s) in [lo, hi]: min(hi, max(lo, mu + s Q(F(α) + u (F(β) − F(α))))) with
+    //   α = (lo − mu) / s, β = (hi − mu) / s, F the standard normal CDF and Q its inverse
+    ExprRef lo, hi, mu, sigma;
+    const SourceLocation loAt = tokens_.peek().where;
+    compileScalar(scope, kind == "normal" ? mu : lo);
+    tokens_.expect(',', "between the two arguments of " + kind);
+    compileScalar(scope, kind == "normal" ? sigma : hi);
+    tokens_.expect(')', "after the two arguments of " + kind);
+    if (kind == "normal") {
+        if (!tokens_.peek().isWord("in")) tokens_.expected("'in [lo, hi]' after normal(mu, sigma): its support must be bounded");
+        tokens_.take();
+        tokens_.expect('[', "after 'in'");
+        compileScalar(scope, lo);
+        tokens_.expect(',', "between the bounds");
+        compileScalar(scope, hi);
+        tokens_.expect(']', "to close the bounds");
+    }
+    p.dims = 1;
+    p.prior[0] = p.prior[1] = p.prior[2] = Prior{PriorKind::Uniform, 0.0f, 1.0f};
+    p.first = rule.paramFloats;
+    rule.paramFloats = std::uint16_t(rule.paramFloats + 1);
+    if (rule.paramFloats > 256) tokens_.fail(at, "rule " + rule.name + " has more than 256 parameter values");
+    const std::uint16_t u = p.first;
+    std::vector<Instr>& code = g_.code;
+    auto copy = [&](const ExprRef& r) {
+        const std::vector<Instr> part(code.begin() + r.begin, code.begin() + r.end);
+        code.insert(code.end(), part.begin(), part.end());
+    };
+    const auto begin = std::uint32_t(code.size());
+    if (kind == "normal") {
+        auto standardCdf = [&](const ExprRef& bound) {
+            copy(bound);
+            copy(mu);
+            code.push_back({OpCode::Sub});
+            copy(sigma);
+            code.push_back({OpCode::Div});
+            code.push_back({OpCode::NormalCdf});
+        };
+        copy(hi);
+        copy(lo);
+        copy(mu);
+        copy(sigma);
+        standardCdf(lo);
+        code.push_back({OpCode::Param, 0, u, 0});
+        standardCdf(hi);
+        standardCdf(lo);
+        code.push_back({OpCode::Sub});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::NormalQuantile});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::Max});  // max(lo, v): a NaN draw becomes lo
+        code.push_back({OpCode::Min});  // min(hi, .)
+    } else if (kind == "uniform") {
+        copy(lo);
+        code.push_back({OpCode::Param, 0, u, 0});
+        copy(hi);
+        copy(lo);
+        code.push_back({OpCode::Sub});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+    } else {
+        auto ceilLo = [&] {
+            copy(lo);
+            code.push_back({OpCode::Neg});
+            code.push_back({OpCode::Floor});
+            code.push_back({OpCode::Neg});
+        };
+        auto floorHi = [&] {
+            copy(hi);
+            code.push_back({OpCode::Floor});
+        };
+        ceilLo();
+        code.push_back({OpCode::Param, 0, u, 0});
+        floorHi();
+        ceilLo();
+        code.push_back({OpCode::Sub});
+        code.push_back({OpCode::Const, 0, 0, 1.0f});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::Mul});
+        code.push_back({OpCode::Add});
+        code.push_back({OpCode::Floor});
+        floorHi();
+        code.push_back({OpCode::Min});
+    }
+    ExprRef value{begin, std::uint32_t(code.size())};
+    const int depth = stackDepth(code, value.begin, value.end);
+    if (depth > kMaxExpressionStack)
+        tokens_.fail(loAt, "the bounds of this prior are too deeply nested (the draw needs a stack of " +
+                               std::to_string(depth) + ", the limit is " + std::to_string(kMaxExpressionStack) + ")");
+    g_.maxStack = std::max(g_.maxStack, depth);
+    classifyExpression(code, value);
+    Statement draw{};
+    draw.kind = StatementKind::Let;
+    draw.axis = 1;
+    draw.slot = allocateFrame(rule, 1, at);
+    draw.expr[0] = value;
+    rule.statements.push_back(draw);
+    Binding b;
+    b.name = p.name;
+    b.constant = false;
+    b.index = draw.slot;
+    scope.bindings.push_back(b);
+    Param stored = p;
+    stored.name = scope.prefix + p.name;
+    rule.params.push_back(stored);
+    (void)priorAt;
+    return true;
+}
+
+}  // namespace shapevo::grammar_detail
