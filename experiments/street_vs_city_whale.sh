@@ -11,7 +11,7 @@ for config in street-whale city-whale; do
         "$build/shapevo" run "configs/$config.toml" -q --seed "$s" --out "$out/$config-$s" >/dev/null
         sed -n 's/.*"silhouette_iou": \([0-9.]*\).*/\1/p' "$out/$config-$s/summary.json" >> "$out/$config"
     done
-    printf '%-12s' "$config"; tr '\n' ' ' < "$out/$config"
+    printf '%-14s' "$config"; tr '\n' ' ' < "$out/$config"
     awk '{ s += $1 } END { printf " mean %.4f\n", s / NR }' "$out/$config"
 done
 rm -rf "$out"
