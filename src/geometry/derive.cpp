@@ -10,6 +10,7 @@
 #endif
 
 #include "grammar/expression.hpp"
+#include "mesh/mesh_material.hpp"
 #include "shape/kinds.hpp"
 
 namespace shapevo {
@@ -106,8 +107,7 @@ namespace {
     Appearance look = looks[current];
     if (st.kind == StatementKind::Color) {
         for (int k = 0; k < 3; ++k) {
-            const float v = evaluate(g, st.expr[k], params, &size.x, &parentSize.x, evalStack);
-            look.color[k] = v >= 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN -> 0
+            look.color[k] = clampUnit(evaluate(g, st.expr[k], params, &size.x, &parentSize.x, evalStack));  // NaN -> 0
         }
     } else {
         look.material = st.slot;

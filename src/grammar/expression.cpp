@@ -449,11 +449,16 @@ bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e) {
     return true;
 }
 
-float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+float evaluateConstant(const std::vector<Instr>& code, const ExprRef& e) {
+    float stack[kMaxExpressionStack];
+    return evaluateProgram(code, e, nullptr, nullptr, nullptr, stack);
+}
+
+float evaluateProgram(const std::vector<Instr>& code, const ExprRef& e, const float* params, const float* scopeSize,
                       const float* parentSize, float* stack) {
     int top = -1;
     for (std::uint32_t i = e.begin; i < e.end; ++i) {
-        const Instr& in = g.code[i];
+        const Instr& in = code[i];
         switch (in.op) {
         case OpCode::Const: stack[++top] = in.value; break;
         case OpCode::Param: stack[++top] = params[in.index]; break;

@@ -95,10 +95,17 @@ bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e);
 /// Program when it has none of the small shapes.
 void classifyExpression(const std::vector<Instr>& code, ExprRef& e);
 
-/// Evaluate a compiled scalar expression with the stack machine. `stack` must hold
-/// kMaxExpressionStack floats.
-float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+/// Evaluate a compiled scalar expression with the stack machine: instructions [e.begin, e.end)
+/// of `code` (a grammar's, or ones being compiled). `stack` must hold kMaxExpressionStack floats.
+float evaluateProgram(const std::vector<Instr>& code, const ExprRef& e, const float* params, const float* scopeSize,
                       const float* parentSize, float* stack);
+inline float evaluateProgram(const Grammar& g, const ExprRef& e, const float* params, const float* scopeSize,
+                             const float* parentSize, float* stack) {
+    return evaluateProgram(g.code, e, params, scopeSize, parentSize, stack);
+}
+/// The value of an expression that reads only constants (isConstantExpression), folded while the
+/// grammar is read.
+float evaluateConstant(const std::vector<Instr>& code, const ExprRef& e);
 
 /// One binary operation exactly as the stack machine does it.
 inline float applyBinary(OpCode op, float a, float b) {

@@ -43,7 +43,6 @@ Grammar Parser::run() {
     // Pass 1: the top level; rule bodies are skipped (brace by brace) and compiled below.
     std::string startName;
     SourceLocation startAt{};
-    std::map<std::string, SourceLocation> attrAt;
     while (tokens_.peek().kind != TokenKind::End) {
         const Token& t = tokens_.peek();
         if (t.isWord("start")) {
@@ -60,11 +59,9 @@ Grammar Parser::run() {
                 tokens_.fail(at, "'" + name + "' is a reserved name (scope, parent, pi and the functions) and cannot name an attr");
             tokens_.expect('=', "after the attribute name");
             double v[3];
-            const int dims = parseConstantValue(v, "the value of attr " + name, nullptr, false);
-            (void)dims;
+            parseConstantValue(v, "the value of attr " + name, nullptr, false);
             const auto o = overrides_.find(name);
             attrs_[name] = o != overrides_.end() ? o->second : v[0];
-            attrAt[name] = at;
         } else if (t.isWord("rule")) {
             tokens_.take();
             RuleHeader h;
@@ -166,11 +163,8 @@ int Parser::parseConstantValue(double out[3], const std::string& what, const Bod
     exprs_.compile(ctx, 3, code, e, stack);
     const int dims = exprs_.lastDims();
     if (dims == 3 && !vectorAllowed) tokens_.fail(at, "expected a number for " + what + ", found a vector");
-    Grammar scratch;
-    scratch.code = code;
-    float evalStack[kMaxExpressionStack];
     for (int c = 0; c < 3; ++c) {
-        out[c] = double(evaluateProgram(scratch, e[c], nullptr, nullptr, nullptr, evalStack));
+        out[c] = double(evaluateConstant(code, e[c]));
         if (!std::isfinite(out[c])) tokens_.fail(at, what + " is not a finite number (" + show(out[c]) + ")");
     }
     return dims;
@@ -201,7 +195,7 @@ void Parser::parseParam(Rule& rule, BodyScope& scope) {
         tokens_.fail(priorAt, "unknown prior '" + kind + "': expected uniform, normal, int or choice");
     tokens_.expect('(', "after " + kind);
     double a[3], b[3];
-    if ((kind == "uniform" || kind == "int" || kind == "normal") && parseRunTimePrior(rule, scope, p, kind, at, priorAt)) return;
+    if ((kind == "uniform" || kind == "int" || kind == "normal") && parseRunTimePrior(rule, scope, p, kind, at)) return;
     if (kind == "uniform" || kind == "normal" || kind == "int") {
         int da = parseConstantValue(a, "the first argument of " + kind, &scope, true);
         tokens_.expect(',', "between the two arguments of " + kind);
@@ -303,21 +297,14 @@ std::vector<Binding> Parser::parseArguments(int header, const SourceLocation& at
         b.constant = true;
         for (int c = 0; c < b.dims; ++c) b.constant = b.constant && isConstantExpression(g_.code, e[c]);
         if (b.constant) {
-            float evalStack[kMaxExpressionStack];
-            for (int c = 0; c < 3; ++c) b.value[c] = evaluateProgram(g_, e[c], nullptr, nullptr, nullptr, evalStack);
+            for (int c = 0; c < 3; ++c) b.value[c] = evaluateConstant(g_.code, e[c]);
         } else if (requireConstant || rule == nullptr) {
             tokens_.fail(argAt, "the arguments of a child must be known when the grammar is read (numbers, attrs, "
                                 "the rule's own constant arguments); '" + h.args[k] +
                                     "' here depends on a parameter or the scope: let the child compute it, or "
                                     "use an inline call (a successor of split, comp or a lot)");
         } else {
-            Statement let{};
-            let.kind = StatementKind::Let;
-            let.axis = std::uint8_t(b.dims);
-            let.slot = allocateFrame(*rule, b.dims, argAt);
-            for (int c = 0; c < b.dims; ++c) let.expr[c] = e[c];
-            b.index = let.slot;
-            rule->statements.push_back(let);
+            b = letValue(*rule, h.args[k], b.dims, e, argAt);
         }
         args.push_back(b);
     }

@@ -71,8 +71,7 @@ public:
     void parseParam(Rule& rule, BodyScope& scope);
     /// uniform(a, b), int(a, b) or normal(mu, s) in [lo, hi] whose arguments depend on the scope, a parameter, a let or a
     /// run-time argument (true: read and compiled); false (nothing taken) for constant bounds.
-    bool parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at,
-                           const SourceLocation& priorAt);
+    bool parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at);
     void parseChild(Rule& rule, Statement& s, const SourceLocation& childAt, BodyScope& scope);
     /// The rule id for `header` called with these constant arguments (creating the instance).
     std::uint16_t instance(int header, const std::vector<Binding>& args);
@@ -86,7 +85,7 @@ public:
     void parseStatement(Rule& rule, BodyScope& scope);
     void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
-    void parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::vector<Piece>& pieces);
+    void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces);
     void parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form);
     /// One successor (a rule name with arguments: inline; `{ ... }`; `nil`): fills piece.begin/end.
     void parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form);
@@ -97,6 +96,10 @@ public:
     void compileScalar(const BodyScope& scope, ExprRef& out);
     void compileVector(const BodyScope& scope, ExprRef out[3]);
     std::uint16_t allocateFrame(Rule& rule, int floats, const SourceLocation& at);
+    /// A frame value `name` of `dims` floats computed by expr[0..dims) at this point of the rule
+    /// (a Let statement appended to it): `let`, an inline call's run-time argument, the draw of a
+    /// run-time prior. Returns the (non-constant) binding that names it.
+    Binding letValue(Rule& rule, const std::string& name, int dims, const ExprRef* expr, const SourceLocation& at);
     std::string statementList() const;
 
     TokenStream tokens_;

@@ -69,7 +69,7 @@ void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>
     } while (tokens_.peek().is('|'));
 }
 
-void Parser::parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::vector<Piece>& pieces) {
+void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces) {
     const SourceLocation open = tokens_.peek().where;
     tokens_.expect('{', "after the split axis (split AXIS { SIZE: SUCCESSOR | ... })");
     bool inGroup = false, hadGroup = false;
@@ -120,7 +120,6 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, PieceList& list, std::
         tokens_.take();
         for (Piece& p : pieces) p.repeated = true;
     }
-    (void)list;
 }
 
 void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
@@ -159,7 +158,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     if (w == "split") {
         list.kind = PiecesKind::Split;
         list.axis = axis();
-        parseSplitList(rule, scope, list, pieces);
+        parseSplitList(rule, scope, pieces);
     } else if (w == "repeat") {
         list.axis = axis();
         if (tokens_.peek().isWord("count")) {

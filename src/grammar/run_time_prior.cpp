@@ -26,8 +26,7 @@ int stackDepth(const std::vector<Instr>& code, std::uint32_t begin, std::uint32_
 }
 }  // namespace
 
-bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at,
-                               const SourceLocation& priorAt) {
+bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std::string& kind, const SourceLocation& at) {
     // Probe: do the two arguments depend on anything known only during a derivation?
     const std::size_t start = tokens_.mark();
     const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
@@ -159,21 +158,10 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
                                std::to_string(depth) + ", the limit is " + std::to_string(kMaxExpressionStack) + ")");
     g_.maxStack = std::max(g_.maxStack, depth);
     classifyExpression(code, value);
-    Statement draw{};
-    draw.kind = StatementKind::Let;
-    draw.axis = 1;
-    draw.slot = allocateFrame(rule, 1, at);
-    draw.expr[0] = value;
-    rule.statements.push_back(draw);
-    Binding b;
-    b.name = p.name;
-    b.constant = false;
-    b.index = draw.slot;
-    scope.bindings.push_back(b);
+    scope.bindings.push_back(letValue(rule, p.name, 1, &value, at));
     Param stored = p;
     stored.name = scope.prefix + p.name;
     rule.params.push_back(stored);
-    (void)priorAt;
     return true;
 }
 

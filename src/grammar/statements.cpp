@@ -4,6 +4,7 @@
 // its Pieces statement, so a body is one flat statement list with forward jumps only.
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 
 #include "base/input_error.hpp"
 #include "grammar/parser_state.hpp"
@@ -12,22 +13,28 @@
 
 namespace shapevo::grammar_detail {
 
-
 namespace {
-/// The words that begin a statement other than a primitive or an inline call.
+/// The words that begin a statement other than a primitive or an inline call, in the order the
+/// error messages list them: these, then the kinds' keywords, then the second list.
+constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "scale", "size", "translate", "rotate", "mirror"};
+constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "extrude", "split", "repeat", "comp", "lot",
+                                                 "center", "corners", "edges", "if", "case", "terminal", "child"};
+
 bool isStatementWord(const std::string& w) {
-    for (const char* s : {"param", "let", "scale", "size", "translate", "rotate", "mirror", "color", "colour", "material",
-                          "extrude", "split", "repeat", "comp", "lot", "center", "corners", "edges", "if", "case", "else",
-                          "terminal", "child"})
+    for (std::string_view s : kWordsBeforeKinds)
         if (w == s) return true;
-    return false;
+    for (std::string_view s : kWordsAfterKinds)
+        if (w == s) return true;
+    return w == "colour" || w == "else";  // `colour` spells `color`; `else` continues an if
 }
 }  // namespace
 
 std::string Parser::statementList() const {
-    return "param, let, scale, size, translate, rotate, mirror, " + kindKeywords() +
-           ", color, material, extrude, split, repeat, comp, lot, center, corners, edges, if, case, terminal, "
-           "child or the name of a rule to run inline";
+    std::string list;
+    for (std::string_view s : kWordsBeforeKinds) (list += s) += ", ";
+    list += kindKeywords();
+    for (std::string_view s : kWordsAfterKinds) (list += ", ") += s;
+    return list + " or the name of a rule to run inline";
 }
 
 void Parser::compileScalar(const BodyScope& scope, ExprRef& out) {
@@ -57,6 +64,21 @@ std::uint16_t Parser::allocateFrame(Rule& rule, int floats, const SourceLocation
     const auto index = std::uint16_t(kFrameBase + rule.frameFloats);
     rule.frameFloats = std::uint16_t(rule.frameFloats + floats);
     return index;
+}
+
+Binding Parser::letValue(Rule& rule, const std::string& name, int dims, const ExprRef* expr, const SourceLocation& at) {
+    Statement let{};
+    let.kind = StatementKind::Let;
+    let.axis = std::uint8_t(dims);
+    let.slot = allocateFrame(rule, dims, at);
+    for (int c = 0; c < dims; ++c) let.expr[c] = expr[c];
+    rule.statements.push_back(let);
+    Binding b;
+    b.name = name;
+    b.dims = dims;
+    b.constant = false;
+    b.index = let.slot;
+    return b;
 }
 
 void Parser::parseBlock(Rule& rule, BodyScope& scope, const std::string& closes) {
@@ -154,16 +176,11 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
         for (const Param& p : scope.params)
             if (p.name == name) tokens_.fail(at, "'" + name + "' is already a parameter of this rule");
         tokens_.expect('=', "after the name of the let value");
-        s.kind = StatementKind::Let;
-        compileVector(scope, s.expr);
-        s.axis = std::uint8_t(exprs_.lastDims());
-        s.slot = allocateFrame(rule, s.axis, at);
-        Binding b;
-        b.name = name;
-        b.dims = s.axis;
-        b.constant = false;
-        b.index = s.slot;
-        scope.bindings.push_back(b);  // visible below (a later let of the same name hides it)
+        ExprRef e[3];
+        compileVector(scope, e);
+        // visible below (a later let of the same name hides it)
+        scope.bindings.push_back(letValue(rule, name, exprs_.lastDims(), e, at));
+        return;
     } else if (word.text == "extrude") {
         if (scope.form == ScopeForm::Volume)
             tokens_.fail(word.where, "'extrude' needs a flat scope (a lot, a face from comp, a split of one); "

@@ -64,6 +64,20 @@ struct RoundFrame {
     }
 };
 
+/// The point of a row closest to a round solid's axis (the frame's local y): its offset `mid`
+/// from the row's x = c.x and the radial coordinates u.x, u.z there. Round kinds whose lateral
+/// surface is a quadratic along the row (cone, paraboloid) set the quadratic up around this
+/// point, so its coefficients stay small and nothing cancels.
+struct AxisNearest {
+    double mid, ux, uz;
+};
+/// `radialSlope` are du.x / dx and du.z / dx along every row, `radialSq` their squared length;
+/// bx, bz are u.x and u.z at x = c.x on the row.
+inline AxisNearest nearestToAxis(const double (&radialSlope)[2], double radialSq, double bx, double bz) {
+    const double mid = radialSq > 0.0 ? -(radialSlope[0] * bx + radialSlope[1] * bz) / radialSq : 0.0;
+    return {mid, radialSlope[0] * mid + bx, radialSlope[1] * mid + bz};
+}
+
 /// Offsets dx with |slope * dx + at| <= 1 (a slab: |u| <= 1 along one local axis).
 inline Chord slabChord(double slope, double at) {
     if (slope == 0.0) return std::fabs(at) <= 1.0 ? Chord::all() : Chord::none();

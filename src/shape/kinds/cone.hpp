@@ -92,11 +92,8 @@ struct ConeSolid {
         const double v = f.atCentre(1, y, z);
         const Chord caps = slabChord(axialSlope, v);
         if (caps.empty()) return caps;
-        // The quadratic is set up around the point of the row closest to the axis (offset mid),
-        // so its coefficients stay small and nothing cancels.
-        const double bx = f.atCentre(0, y, z), bz = f.atCentre(2, y, z);
-        const double mid = radialSq > 0.0 ? -(radialSlope[0] * bx + radialSlope[1] * bz) / radialSq : 0.0;
-        const double ux = radialSlope[0] * mid + bx, uz = radialSlope[1] * mid + bz;
+        // The quadratic is set up around the point of the row closest to the axis (offset mid).
+        const auto [mid, ux, uz] = nearestToAxis(radialSlope, radialSq, f.atCentre(0, y, z), f.atCentre(2, y, z));
         const double sigma = r0 + r1 * (axialSlope * mid + v);
         const double b = radialSlope[0] * ux + radialSlope[1] * uz - rho * sigma;
         const double c = ux * ux + uz * uz - sigma * sigma;

@@ -80,9 +80,8 @@ struct ParaboloidSolid {
         if (caps.empty()) return caps;
         // Around the point of the row closest to the axis (offset mid), where u.x, u.z are small
         // for every row that meets the solid.
-        const double bx = f.atCentre(0, y, z), bz = f.atCentre(2, y, z);
-        const double mid = radialSq > 0.0 ? -(radialSlope[0] * bx + radialSlope[1] * bz) / radialSq : 0.0;
-        const double ux = radialSlope[0] * mid + bx, uz = radialSlope[1] * mid + bz, uy = axialSlope * mid + v;
+        const auto [mid, ux, uz] = nearestToAxis(radialSlope, radialSq, f.atCentre(0, y, z), f.atCentre(2, y, z));
+        const double uy = axialSlope * mid + v;
         const double b = radialSlope[0] * ux + radialSlope[1] * uz + 0.25 * axialSlope;
         const double c = ux * ux + uz * uz - 0.5 * (1.0 - uy);
         const Chord lateral = convexQuadraticChord(radialSq, b, c);
