@@ -26,7 +26,7 @@ struct IslandState {
 
 /// One input file of a run and the XXH3-64 of its bytes when the run started.
 struct InputFile {
-    std::string role;  ///< "config", "grammar", "mesh", "target"
+    std::string role;  ///< "config", "grammar", "mesh", "texture", "target"
     std::string path;  ///< absolute
     std::uint64_t hash = 0;
     friend bool operator==(const InputFile&, const InputFile&) = default;

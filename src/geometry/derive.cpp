@@ -9,6 +9,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/texture_look.hpp"
 #include "grammar/expression.hpp"
 #include "mesh/mesh_material.hpp"
 #include "shape/kinds.hpp"
@@ -105,6 +106,7 @@ namespace {
                                          std::uint32_t current, const float* params, const glm::vec3& size,
                                          const glm::vec3& parentSize, float* evalStack) {
     Appearance look = looks[current];
+    look.texture = 0;  // a colour or a material ends a texture
     if (st.kind == StatementKind::Color) {
         for (int k = 0; k < 3; ++k) {
             look.color[k] = clampUnit(evaluate(g, st.expr[k], params, &size.x, &parentSize.x, evalStack));  // NaN -> 0
@@ -138,6 +140,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
     out.clear();
     out.meshes = &g.meshes;
     out.materialNames = &g.materialNames;
+    out.textures = &g.textures;
     if (c.empty()) return DeriveStatus::Complete;
     auto& stack = scratch.stack;
     auto& scopes = scratch.scopes;
@@ -301,6 +304,10 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
             case StatementKind::Color:
             case StatementKind::Material:
                 s.look = newLook(g, st, looks, s.look, params, s.size, parentSize, evalStack);
+                stored = UINT32_MAX;
+                break;
+            case StatementKind::Texture:
+                s.look = textureLook(g, st, looks, s, params, parentSize, evalStack, out.textureFrames);
                 stored = UINT32_MAX;
                 break;
             case StatementKind::Pieces:

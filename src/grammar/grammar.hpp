@@ -81,6 +81,7 @@ enum class StatementKind : std::uint8_t {
     Extrude,   // a flat scope becomes a volume of height expr[0] (geometry/derive.hpp: flat scopes)
     Color,     // the colour of what follows: expr[0..2]
     Material,  // the named material of what follows: slot (index into Grammar::materialNames)
+    Texture,   // the textured material of what follows: slot (index into Grammar::textures), stretch expr[0..1]
 };
 struct Statement {
     StatementKind kind;
@@ -163,7 +164,8 @@ struct Grammar {
     std::vector<PieceList> pieceLists;   ///< one per Pieces statement
     std::vector<Piece> pieces;
     std::vector<std::string> materialNames{""};  ///< index 0: no named material
-    bool hasAppearance = false;      ///< a `color` or `material` statement exists (derive fills Geometry::appearance)
+    bool hasAppearance = false;      ///< a `color`, `material` or `texture` statement exists (derive fills Geometry::appearance)
+    std::vector<Texture> textures;   ///< images of `texture` statements, read when the grammar is loaded
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;
     int maxStack = 0;        ///< deepest expression evaluation stack

@@ -92,6 +92,9 @@ public:
     void inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeForm form);
     void parseTerminal(Rule& rule, BodyScope& scope, const SourceLocation& at);
     std::uint16_t parseMesh();
+    // --- texture_statement.cpp ---
+    /// `texture NAME "FILE.png" (SX, SY)` after its keyword, into `s` (the image read and checked).
+    void parseTexture(const BodyScope& scope, Statement& s);
     ExprRef constantExpression(float v);
     void compileScalar(const BodyScope& scope, ExprRef& out);
     void compileVector(const BodyScope& scope, ExprRef out[3]);

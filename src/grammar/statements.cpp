@@ -17,7 +17,7 @@ namespace {
 /// The words that begin a statement other than a primitive or an inline call, in the order the
 /// error messages list them: these, then the kinds' keywords, then the second list.
 constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "scale", "size", "translate", "rotate", "mirror"};
-constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "extrude", "split", "repeat", "comp", "lot",
+constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "texture", "extrude", "split", "repeat", "comp", "lot",
                                                  "center", "corners", "edges", "if", "case", "terminal", "child"};
 
 bool isStatementWord(const std::string& w) {
@@ -205,6 +205,8 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
         }
         s.slot = std::uint16_t(index);
         g_.hasAppearance = true;
+    } else if (word.text == "texture") {
+        parseTexture(scope, s);
     } else if (word.text == "split" || word.text == "repeat" || word.text == "comp" || word.text == "lot" ||
                word.text == "center" || word.text == "corners" || word.text == "edges") {
         return parsePieces(rule, scope, word);

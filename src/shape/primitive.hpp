@@ -26,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/mesh_shape.hpp"
+#include "shape/texture.hpp"
 
 namespace shapevo {
 
@@ -48,11 +49,13 @@ struct Primitive {
 };
 
 /// How a primitive looks in exported meshes: a colour (linear RGB in [0, 1]) and a named
-/// material (an index into Geometry::materialNames; 0 is the unnamed default). Scoring never
-/// reads it.
+/// material (an index into Geometry::materialNames; 0 is the unnamed default), and for a
+/// textured material its image and texture frame. Scoring never reads it.
 struct Appearance {
     glm::vec3 color{0.8f, 0.8f, 0.8f};
     std::uint16_t material = 0;
+    std::uint16_t texture = 0;  ///< 0: none; k: Geometry::textures[k - 1], placed by Geometry::textureFrames[frame]
+    std::uint32_t frame = 0;    ///< with a texture: its frame in Geometry::textureFrames
     bool operator==(const Appearance&) const = default;
 };
 
@@ -67,9 +70,14 @@ struct Geometry {
     /// The grammar's meshes that Mesh primitives refer to (owned by the Grammar; may be null
     /// when there are none).
     const std::vector<MeshShape>* meshes = nullptr;
+    /// The texture frames Appearance::frame refers to (empty when the grammar has no `texture`).
+    std::vector<TextureFrame> textureFrames;
+    /// The grammar's textures that Appearance::texture refers to (owned by the Grammar; may be null).
+    const std::vector<Texture>* textures = nullptr;
     void clear() {
         primitives.clear();
         appearance.clear();
+        textureFrames.clear();
     }
 };
 

@@ -115,6 +115,7 @@ void checkAccepted(const Grammar& g) {
                 break;
             case StatementKind::Scale: case StatementKind::Size: case StatementKind::Translate: case StatementKind::Color: n = 3; break;
             case StatementKind::Let: n = st.axis; break;
+            case StatementKind::Texture: n = 2; break;
             default: break;
             }
             if (st.kind == StatementKind::Child) CHECK(st.slot < rule.slots.size());
@@ -126,6 +127,9 @@ void checkAccepted(const Grammar& g) {
             if (st.kind == StatementKind::Let)
                 CHECK((st.axis == 1 || st.axis == 3) && st.slot >= kFrameBase && st.slot + st.axis <= kFrameBase + rule.frameFloats);
             if (st.kind == StatementKind::Material) CHECK(st.slot < g.materialNames.size());
+            if (st.kind == StatementKind::Texture)
+                CHECK(st.slot < g.textures.size() && g.textures[st.slot].material < g.materialNames.size() &&
+                      !g.textures[st.slot].png.empty() && g.hasAppearance);
             if (st.kind == StatementKind::Pieces) {
                 CHECK(st.slot < g.pieceLists.size());
                 const PieceList& list = g.pieceLists[st.slot];

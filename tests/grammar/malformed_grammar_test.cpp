@@ -57,9 +57,11 @@ const std::vector<Malformed>& cases() {
         {"AttrWithReservedName", "attr scope = 1\nstart A\nrule A { }\n", "bad.grammar:1:6", "'scope' is a reserved name"},
         // --- statements ------------------------------------------------------------------
         {"UnknownStatement", body("  extrusion 2"), "bad.grammar:3:3", "unknown statement 'extrusion'"},
-        {"StatementIsANumber", body("  5"), "bad.grammar:3:3", "expected a statement (param, let, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, roof, paraboloid, color, material, extrude, split, repeat, comp, lot, center, corners, edges, if, case, terminal, child or the name of a rule to run inline), found number 5"},
+        {"StatementIsANumber", body("  5"), "bad.grammar:3:3", "expected a statement (param, let, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, roof, paraboloid, color, material, texture, extrude, split, repeat, comp, lot, center, corners, edges, if, case, terminal, child or the name of a rule to run inline), found number 5"},
         {"MeshWithoutFileName", body("  mesh leaf"), "bad.grammar:3:8", "expected a file name in quotes after 'mesh', found 'leaf'"},
         {"MeshFileMissing", body("  mesh \"no-such-leaf.obj\""), "bad.grammar:3:8", "mesh \"no-such-leaf.obj\": "},
+        {"TextureFileMissing", body("  texture bricks \"no-such-bricks.png\" (1, 1)"), "bad.grammar:3:18",
+         "cannot open texture 'no-such-bricks.png': no such file"},
         {"TerminalWithChild", body("  terminal { child A prob 0.5 }"), "bad.grammar:3:14", "'child' cannot be used inside 'terminal { }'"},
         {"TerminalWithMirror", body("  terminal { mirror x }"), "bad.grammar:3:14", "'mirror' cannot be used inside 'terminal { }'"},
         {"TerminalNested", body("  terminal { terminal { box } }"), "bad.grammar:3:14", "'terminal' blocks cannot be nested"},
