@@ -17,8 +17,14 @@
 // Every piece is closed: each edge is shared by exactly two triangles, in opposite directions.
 // Looks: when the grammar set colours or materials (Geometry::appearance not empty), the mesh
 // carries one MeshMaterial per distinct appearance (same colour after clamping to [0, 1], same
-// material), in the order primitives first use them, and each triangle the material of its
-// primitive. Without appearance the mesh has no materials and the writers write plain geometry.
+// material, same texture), in the order primitives first use them, and each triangle the material
+// of its primitive. Without appearance the mesh has no materials and the writers write plain geometry.
+// Textures: a textured appearance's material names a MeshTexture (one per image file, in order
+// of first use, named after the file's stem as written in the grammar, its characters as for
+// material names, made unique by "_2", "_3", ..., with the extension .png), and its primitive's
+// triangles get UVs in the appearance's texture frame (geometry/texture_uv.hpp), on vertices of
+// their own. Then the mesh has one UV per vertex (0 on untextured primitives); otherwise none,
+// and its vertices are exactly as without textures.
 #pragma once
 #include <string>
 #include <vector>
@@ -39,7 +45,8 @@ void appendSurface(const Primitive& p, const std::vector<MeshShape>* meshes, Mes
 /// Material names are appearanceName(), made unique by a suffix "_2", "_3", ... in order of use.
 /// @throw std::invalid_argument if geometry.appearance is neither empty nor one entry per
 ///        primitive; std::out_of_range if an appearance names a material that
-///        geometry.materialNames does not hold (or a Mesh primitive a missing mesh).
+///        geometry.materialNames does not hold (or a Mesh primitive a missing mesh, a texture
+///        one that geometry.textures or geometry.textureFrames does not hold).
 Mesh tessellate(const Geometry& geometry);
 
 /// The name an appearance's material has in exported files (before tessellate() makes names

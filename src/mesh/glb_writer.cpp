@@ -1,6 +1,7 @@
 // GLB writer: glTF JSON chunk (space-padded) and BIN chunk (zero-padded), both 4-byte aligned.
 // Without materials the index accessor covers all triangles and no primitive names a material,
-// so a plain mesh gives the same bytes as before materials existed.
+// so a plain mesh gives the same bytes as before materials existed; without textures the same
+// bytes as before textures existed (what textures add comes after everything else).
 #include "mesh/glb_writer.hpp"
 
 #include <algorithm>
@@ -25,6 +26,7 @@ constexpr std::uint32_t kJsonChunk = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kBinChunk = 0x004E4942;   // "BIN\0"
 constexpr int kFloat = 5126, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+constexpr int kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497;
 
 void appendU32(std::vector<std::uint8_t>& out, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
@@ -48,16 +50,29 @@ void appendVec3(std::string& out, const float v[3]) {
 
 using Groups = std::vector<std::vector<std::uint32_t>>;  ///< trianglesByMaterial()
 
+/// Bytes of image `k` in the binary buffer, padded to a multiple of 4.
+std::size_t paddedImageBytes(const Mesh& mesh, std::size_t k) { return (mesh.textures[k].png.size() + 3) / 4 * 4; }
+
 /// The binary buffer: positions, then the indices of each material's triangles, material after
-/// material (all multiples of 4 bytes).
+/// material, then (with textures) the UVs (glTF's v = 1 - v) and each texture's PNG bytes, each
+/// padded with zeros to a multiple of 4 bytes.
 std::vector<std::uint8_t> binaryBuffer(const Mesh& mesh, const Groups& groups) {
     std::vector<std::uint8_t> bin;
-    bin.reserve(mesh.vertices.size() * 12 + mesh.triangles.size() * 12);
+    bin.reserve(mesh.vertices.size() * 12 + mesh.triangles.size() * 12 + mesh.uvs.size() * 8);
     for (const auto& v : mesh.vertices)
         for (int a = 0; a < 3; ++a) appendF32(bin, v[a]);
     for (const auto& group : groups)
         for (const std::uint32_t t : group)
             for (std::uint32_t i : mesh.triangles[t]) appendU32(bin, i);
+    for (const auto& uv : mesh.uvs) {
+        appendF32(bin, uv.x);
+        appendF32(bin, 1.0f - uv.y);
+    }
+    for (std::size_t k = 0; k < mesh.textures.size(); ++k) {
+        const auto& png = mesh.textures[k].png;
+        bin.insert(bin.end(), png.begin(), png.end());
+        bin.resize(bin.size() + paddedImageBytes(mesh, k) - png.size(), 0);
+    }
     return bin;
 }
 
@@ -78,13 +93,18 @@ std::string gltfJson(const Mesh& mesh, const Groups& groups, std::size_t binByte
     };
     const auto n = [](std::size_t v) { return std::to_string(v); };
     const bool materials = !mesh.materials.empty();
+    const bool uvs = !mesh.uvs.empty();
+    std::size_t primitives = 0;
+    for (const auto& group : groups) primitives += group.empty() ? 0 : 1;
+    const std::size_t uvAccessor = 1 + primitives;  // after the index accessors
     // one primitive per material that has triangles; its index accessor is 1 + its rank here
     add(R"("nodes":[{"mesh":0,"name":"shapevo model"}],)", R"("meshes":[{"name":"shapevo model","primitives":[)");
     std::size_t accessor = 1;
     for (std::size_t m = 0; m < groups.size(); ++m) {
         if (groups[m].empty()) continue;
         if (accessor > 1) json += ',';
-        add(R"({"attributes":{"POSITION":0},"indices":)", n(accessor));
+        add(R"({"attributes":{"POSITION":0)", uvs ? R"(,"TEXCOORD_0":)" + n(uvAccessor) : std::string(), R"(},"indices":)",
+            n(accessor));
         ++accessor;
         if (materials) add(R"(,"material":)", n(m));
         add(R"(,"mode":4})");
@@ -99,8 +119,21 @@ std::string gltfJson(const Mesh& mesh, const Groups& groups, std::size_t binByte
                 appendNumber(json, c[a]);
                 json += ',';
             }
-            add(R"(1],"metallicFactor":0}})");
+            add("1]");
+            if (mesh.materials[m].texture >= 0)
+                add(R"(,"baseColorTexture":{"index":)", n(std::size_t(mesh.materials[m].texture)), "}");
+            add(R"(,"metallicFactor":0}})");
         }
+        add("],");
+    }
+    const std::size_t firstImageView = uvs ? 3 : 2;  // after positions, indices and UVs
+    if (!mesh.textures.empty()) {  // one sampler: linear, repeating
+        add(R"("images":[)");
+        for (std::size_t k = 0; k < mesh.textures.size(); ++k)
+            add(k ? "," : "", R"({"bufferView":)", n(firstImageView + k), R"(,"mimeType":"image/png","name":")", mesh.textures[k].name, R"("})");
+        add(R"(],"samplers":[{"magFilter":)", n(kLinear), R"(,"minFilter":)", n(kLinearMipmapLinear), R"(,"wrapS":)",
+            n(kRepeat), R"(,"wrapT":)", n(kRepeat), R"(}],"textures":[)");
+        for (std::size_t k = 0; k < mesh.textures.size(); ++k) add(k ? "," : "", R"({"sampler":0,"source":)", n(k), "}");
         add("],");
     }
     add(R"("accessors":[{"bufferView":0,"componentType":)", n(kFloat), R"(,"count":)", n(mesh.vertices.size()),
@@ -117,11 +150,23 @@ std::string gltfJson(const Mesh& mesh, const Groups& groups, std::size_t binByte
         add(R"("componentType":)", n(kUnsignedInt), R"(,"count":)", n(group.size() * 3), R"(,"type":"SCALAR"})");
         offset += group.size() * 12;
     }
+    if (uvs) add(R"(,{"bufferView":2,"componentType":)", n(kFloat), R"(,"count":)", n(mesh.uvs.size()), R"(,"type":"VEC2"})");
     add("],");
     add(R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)", n(positionBytes), R"(,"target":)",
         n(kArrayBuffer), "},");
     add(R"({"buffer":0,"byteOffset":)", n(positionBytes), R"(,"byteLength":)", n(indexBytes), R"(,"target":)",
-        n(kElementArrayBuffer), "}],");
+        n(kElementArrayBuffer), "}");
+    std::size_t at = positionBytes + indexBytes;
+    if (uvs) {
+        add(R"(,{"buffer":0,"byteOffset":)", n(at), R"(,"byteLength":)", n(mesh.uvs.size() * 8), R"(,"target":)",
+            n(kArrayBuffer), "}");
+        at += mesh.uvs.size() * 8;
+    }
+    for (std::size_t k = 0; k < mesh.textures.size(); ++k) {
+        add(R"(,{"buffer":0,"byteOffset":)", n(at), R"(,"byteLength":)", n(mesh.textures[k].png.size()), "}");
+        at += paddedImageBytes(mesh, k);
+    }
+    add("],");
     add(R"("buffers":[{"byteLength":)", n(binBytes), "}]}");
     return json;
 }

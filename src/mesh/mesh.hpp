@@ -2,13 +2,17 @@
 // writers (report/model_writer.hpp, mesh/glb_writer.hpp) export it. An exported model may also
 // carry how its triangles look: a list of materials (a name and a colour) and one material per
 // triangle. Both lists are empty for meshes read from files and for models whose grammar sets no
-// colour; the writers then write plain geometry, exactly as before colours existed.
+// colour; the writers then write plain geometry, exactly as before colours existed. A material
+// may have a texture image (MeshTexture); a mesh with one has one UV coordinate per vertex
+// (OBJ's convention: v = 0 at the bottom row of the image, one unit = the whole image, which
+// repeats), and a mesh without one has none.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace shapevo {
@@ -17,7 +21,15 @@ namespace shapevo {
 struct MeshMaterial {
     std::string name;             ///< non-empty, unique within its mesh; only A-Z a-z 0-9 _ - .
     glm::vec3 color{0.8f};        ///< linear RGB, each channel in [0, 1]
+    int texture = -1;             ///< index into Mesh::textures, or -1: untextured
     bool operator==(const MeshMaterial&) const = default;
+};
+
+/// A texture image of an exported mesh.
+struct MeshTexture {
+    std::string name;               ///< the file name it gets beside a model: only A-Z a-z 0-9 _ - ., ends in .png, unique in its mesh
+    std::vector<std::uint8_t> png;  ///< the PNG file's bytes
+    bool operator==(const MeshTexture&) const = default;
 };
 
 struct Mesh {
@@ -28,6 +40,11 @@ struct Mesh {
     std::vector<MeshMaterial> materials;
     /// Empty when `materials` is; otherwise one index into `materials` per triangle.
     std::vector<std::uint32_t> triangleMaterials;
+    /// The images of textured materials (each used by at least one material when made by tessellate()).
+    std::vector<MeshTexture> textures;
+    /// Empty when no material has a texture; otherwise one UV coordinate per vertex (those of
+    /// untextured triangles are 0).
+    std::vector<glm::vec2> uvs;
 };
 
 }  // namespace shapevo

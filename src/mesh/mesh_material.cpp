@@ -37,10 +37,45 @@ bool isMaterialName(std::string_view name) {
     return true;
 }
 
+namespace {
+/// Textures and UVs: each image named as promised and used as a PNG, each material's texture
+/// one of them, UVs finite, one per vertex, present exactly when a material has a texture.
+void checkTextures(const Mesh& mesh, const std::string& path) {
+    std::set<std::string_view> names;
+    for (std::size_t t = 0; t < mesh.textures.size(); ++t) {
+        const MeshTexture& tex = mesh.textures[t];
+        const std::string where = "texture " + std::to_string(t);
+        const std::string_view name = tex.name;
+        if (!isMaterialName(name) || name.size() < 5 || name.substr(name.size() - 4) != ".png")
+            throw InputError(path, where,
+                             "file name '" + shortened(tex.name) + "' is not A-Z a-z 0-9 _ - . characters ending in .png");
+        if (!names.insert(name).second) throw InputError(path, where, "file name '" + tex.name + "' is used twice");
+        if (tex.png.size() < 8 || tex.png[0] != 0x89 || tex.png[1] != 'P' || tex.png[2] != 'N' || tex.png[3] != 'G')
+            throw InputError(path, where, "image '" + tex.name + "' is not a PNG");
+    }
+    bool textured = false;
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const int t = mesh.materials[m].texture;
+        if (t < -1 || t >= int(mesh.textures.size()))
+            throw InputError(path, "material " + std::to_string(m), "texture " + std::to_string(t) + " out of range");
+        textured = textured || t >= 0;
+    }
+    if (!textured && !mesh.uvs.empty()) throw InputError(path, "", "UV coordinates but no textured material");
+    if (textured && mesh.uvs.size() != mesh.vertices.size())
+        throw InputError(path, "", std::to_string(mesh.uvs.size()) + " UV coordinates for " +
+                                       std::to_string(mesh.vertices.size()) + " vertices");
+    for (std::size_t v = 0; v < mesh.uvs.size(); ++v)
+        if (!std::isfinite(mesh.uvs[v].x) || !std::isfinite(mesh.uvs[v].y))
+            throw InputError(path, "vertex " + std::to_string(v), "UV coordinate is not a finite number");
+}
+}  // namespace
+
 void checkMaterials(const Mesh& mesh, const std::string& path) {
     if (mesh.materials.empty()) {
         if (!mesh.triangleMaterials.empty())
             throw InputError(path, "", "triangles name materials but the mesh has none");
+        if (!mesh.textures.empty() || !mesh.uvs.empty())
+            throw InputError(path, "", "textures or UV coordinates but no materials");
         return;
     }
     if (mesh.triangleMaterials.size() != mesh.triangles.size())
@@ -62,6 +97,7 @@ void checkMaterials(const Mesh& mesh, const std::string& path) {
         if (mesh.triangleMaterials[t] >= mesh.materials.size())
             throw InputError(path, "triangle " + std::to_string(t),
                              "material " + std::to_string(mesh.triangleMaterials[t]) + " out of range");
+    checkTextures(mesh, path);
 }
 
 std::vector<std::vector<std::uint32_t>> trianglesByMaterial(const Mesh& mesh) {

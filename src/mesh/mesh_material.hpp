@@ -30,9 +30,12 @@ std::string srgbHex(const glm::vec3& linear);
 /// True if `name` can name a material in every format: non-empty, only A-Z a-z 0-9 _ - .
 bool isMaterialName(std::string_view name);
 
-/// Checks that `mesh` either has no materials and no triangleMaterials, or: one material index
-/// per triangle, each naming a material; names as isMaterialName() and pairwise different;
-/// colours finite and in [0, 1]. @throw InputError naming `path` otherwise.
+/// Checks that `mesh` either has no materials, no triangleMaterials, no textures and no UVs, or:
+/// one material index per triangle, each naming a material; names as isMaterialName() and
+/// pairwise different; colours finite and in [0, 1]; each material's texture -1 or one of
+/// Mesh::textures, whose file names are as isMaterialName(), end in .png and are pairwise
+/// different and whose bytes start like a PNG; one finite UV per vertex if a material has a
+/// texture and none otherwise. @throw InputError naming `path` otherwise.
 void checkMaterials(const Mesh& mesh, const std::string& path);
 
 /// The triangles of each material in mesh order: result[m] lists the indices of the triangles

@@ -8,6 +8,7 @@
 #include "base/input_error.hpp"
 #include "geometry/tessellation.hpp"
 #include "mesh/mesh_material.hpp"
+#include "report/texture_files.hpp"
 
 namespace shapevo {
 
@@ -15,7 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void writeMtl(const Mesh& mesh, const std::string& path, Replace replace) {
+/// `images`: the file name of each of the mesh's textures beside the MTL.
+void writeMtl(const Mesh& mesh, const std::string& path, const std::vector<std::string>& images, Replace replace) {
     writeStreamAtomically(
         path,
         [&](std::ostream& out) {
@@ -24,6 +26,7 @@ void writeMtl(const Mesh& mesh, const std::string& path, Replace replace) {
             for (const MeshMaterial& m : mesh.materials) {
                 std::snprintf(kd, sizeof kd, "Kd %.6g %.6g %.6g\n", double(m.color.x), double(m.color.y), double(m.color.z));
                 out << "\nnewmtl " << m.name << '\n' << kd;
+                if (m.texture >= 0) out << "map_Kd " << images.at(std::size_t(m.texture)) << '\n';
             }
         },
         replace);
@@ -42,12 +45,22 @@ void writeObjFile(const Mesh& mesh, const std::string& path, const std::string& 
                 std::snprintf(line, sizeof line, "v %.6g %.6g %.6g\n", double(v.x), double(v.y), double(v.z));
                 out << line;
             }
+            for (const auto& uv : mesh.uvs) {  // one per vertex: face corners use the vertex's index for both
+                std::snprintf(line, sizeof line, "vt %.7g %.7g\n", double(uv.x), double(uv.y));
+                out << line;
+            }
+            const bool uvs = !mesh.uvs.empty();
             const auto groups = trianglesByMaterial(mesh);
             for (std::size_t m = 0; m < groups.size(); ++m) {
                 if (!mesh.materials.empty() && !groups[m].empty()) out << "usemtl " << mesh.materials[m].name << '\n';
                 for (const std::uint32_t i : groups[m]) {
                     const auto& t = mesh.triangles[i];
-                    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+                    if (uvs) {
+                        out << "f " << t[0] + 1 << '/' << t[0] + 1 << ' ' << t[1] + 1 << '/' << t[1] + 1 << ' ' << t[2] + 1
+                            << '/' << t[2] + 1 << '\n';
+                    } else {
+                        out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+                    }
                 }
             }
         },
@@ -81,11 +94,18 @@ void writeObj(const Mesh& mesh, const std::string& path, Replace replace) {
                 if (p == mtlPath) why += " with the materials of " + fs::path(path).filename().string();
                 throw InputError(p, "", why);
             }
-    writeMtl(mesh, mtlPath, replace);
+    const PlacedTextures images = placeTextures(mesh, fs::path(path).parent_path().string());
+    try {
+        writeMtl(mesh, mtlPath, images.names, replace);
+    } catch (...) {
+        removeCreated(images);
+        throw;
+    }
     try {
         writeObjFile(mesh, path, mtlPath, replace);
     } catch (...) {
         if (replace == Replace::Never) fs::remove(mtlPath, ec);  // ours: it did not exist before
+        removeCreated(images);
         throw;
     }
 }

@@ -7,10 +7,14 @@
 //        with one `newmtl NAME` and `Kd R G B` per material, the linear colour as it is (the
 //        way Blender reads and writes Kd); the OBJ names it (`mtllib m.mtl`) and lists the faces
 //        of each material after one `usemtl NAME`, materials in order, faces in mesh order.
+//        A textured material adds `map_Kd FILE.png`, its image copied into the OBJ's folder
+//        (report/texture_files.hpp: an existing file is never replaced; an identical one is
+//        used, another one keeps its name and the image takes the next free one); the OBJ then
+//        has one `vt U V` per vertex after the `v` lines and faces `f a/a b/b c/c`.
 //   PLY  vertex colours, `property uchar red / green / blue` after x y z: the 8-bit sRGB
 //        encoding of the linear colour (mesh/mesh_material.hpp). A vertex takes the colour of
 //        the first triangle that uses it (tessellate() never shares a vertex between
-//        primitives); a vertex no triangle uses is black.
+//        primitives); a vertex no triangle uses is black. Textured materials are white; no UVs.
 #pragma once
 #include <string>
 

@@ -261,7 +261,7 @@ MeshShape octahedron() {
 
 TEST(Tessellation, MeshPrimitivePlacesTheGrammarMeshInItsFrame) {
     const std::vector<MeshShape> meshes = {MeshShape{}, octahedron()};
-    ASSERT_GT(signedVolume(Mesh{meshes[1].vertices, meshes[1].triangles, {}, {}}), 0.0) << "test mesh wound inwards";
+    ASSERT_GT(signedVolume(Mesh{meshes[1].vertices, meshes[1].triangles, {}, {}, {}, {}}), 0.0) << "test mesh wound inwards";
     for (const Frame& f : frames()) {
         SCOPED_TRACE(f.name);
         Primitive p = primitive(PrimitiveKind::Mesh, f.axes);
