@@ -157,6 +157,23 @@ TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
     }
 }
 
+TEST(NoAllocation, DerivingATexturedGrammarAllocatesNothingOnceWarm) {
+    // texture statements append to derive's looks and the geometry's texture frames: reused
+    const Grammar g = loadGrammar(test::sourcePath("docs/grammar-examples/textures.grammar"));
+    Rng rng(37);
+    Chromosome c;
+    plantRoot(g, c, rng);
+    Geometry out;
+    DeriveScratch scratch;
+    std::size_t sink = 0;
+    for (int warm = 0; warm < 2; ++warm) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+    const long before = gAllocations.load();
+    for (int r = 0; r < 20; ++r) sink += std::size_t(derive(g, c, out, scratch)) + out.textureFrames.size();
+    EXPECT_EQ(gAllocations.load() - before, 0);
+    EXPECT_GT(sink, 0u);
+    EXPECT_EQ(out.textureFrames.size(), 3u) << "the keep's and each tower roof's";
+}
+
 TEST(NoAllocation, SilhouettesOfEveryPrimitiveKindAllocateNothingOnceWarm) {
     // every kind (roofs and paraboloids too), on the fast, cut and guard-band paths of each camera
     const std::vector<MeshShape> meshes = test::starMesh();
