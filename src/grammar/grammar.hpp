@@ -164,8 +164,8 @@ struct Grammar {
     std::vector<PieceList> pieceLists;   ///< one per Pieces statement
     std::vector<Piece> pieces;
     std::vector<std::string> materialNames{""};  ///< index 0: no named material
-    bool hasAppearance = false;      ///< a `color`, `material` or `texture` statement exists (derive fills Geometry::appearance)
-    std::vector<Texture> textures;   ///< images of `texture` statements, read when the grammar is loaded
+    bool hasAppearance = false;      ///< a `color` or `material` statement exists (derive fills Geometry::appearance)
+    std::vector<Texture> textures;   ///< images of `texture` statements (which set hasAppearance too), read when the grammar is loaded
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;
     int maxStack = 0;        ///< deepest expression evaluation stack

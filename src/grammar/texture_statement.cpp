@@ -41,20 +41,24 @@ std::vector<std::uint8_t> readTexture(const std::string& written, const std::fil
         why = "cannot open texture " + quoted + ": " + std::strerror(errno);
         return {};
     }
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        why = "cannot read texture " + quoted;
-        return {};
-    }
-    if (bytes.size() < sizeof kPngSignature || std::memcmp(bytes.data(), kPngSignature, sizeof kPngSignature) != 0) {
+    // the signature first: a file that is no PNG is never read whole (it may be huge)
+    unsigned char head[sizeof kPngSignature] = {};
+    in.read(reinterpret_cast<char*>(head), sizeof head);
+    if (in.gcount() != std::streamsize(sizeof head) || std::memcmp(head, kPngSignature, sizeof head) != 0) {
         why = "texture " + quoted + " is not a PNG (" +
-              (bytes.empty() ? std::string("the file is empty") : std::string("it does not start with the PNG signature")) + ")";
+              (in.gcount() == 0 ? std::string("the file is empty") : std::string("it does not start with the PNG signature")) + ")";
         return {};
     }
     try {
         readPng(file.string());  // decodes every pixel: a damaged image fails here, not when a model is written
     } catch (const InputError& e) {
         why = "texture " + quoted + " is not a readable PNG: " + e.message();
+        return {};
+    }
+    in.seekg(0);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad() || bytes.size() < sizeof kPngSignature) {
+        why = "cannot read texture " + quoted;
         return {};
     }
     return bytes;
