@@ -186,7 +186,9 @@ TEST(TextureUv, OnACylindersFrontUGrowsToTheRightSeenFromOutside) {
         for (int k = 0; k < 3; ++k)
             for (int l = 0; l < 3; ++l) {
                 const glm::vec3 &a = t.mesh.vertices[tri[std::size_t(k)]], &b = t.mesh.vertices[tri[std::size_t(l)]];
-                if (a.x < b.x - 1e-4f) EXPECT_LT(t.mesh.uvs[tri[std::size_t(k)]].x, t.mesh.uvs[tri[std::size_t(l)]].x);
+                if (a.x < b.x - 1e-4f) {
+                    EXPECT_LT(t.mesh.uvs[tri[std::size_t(k)]].x, t.mesh.uvs[tri[std::size_t(l)]].x);
+                }
             }
     }
 }
