@@ -85,6 +85,8 @@ public:
     void parseStatement(Rule& rule, BodyScope& scope);
     void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
+    void parseCopy(Rule& rule, BodyScope& scope);
+    void storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces);
     void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces);
     void parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form);
     /// One successor (a rule name with arguments: inline; `{ ... }`; `nil`): fills piece.begin/end.

@@ -261,6 +261,38 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     }
     if (pieces.empty()) tokens_.fail(word.where, "'" + w + "' needs at least one piece");
     if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp and lot statements (at most 65535)");
+    storePieces(rule, at, list, pieces);
+}
+
+void Parser::parseCopy(Rule& rule, BodyScope& scope) {
+    const Token open = tokens_.take();  // [
+    if (g_.pieceLists.size() >= 65535) tokens_.fail(open.where, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
+    const std::size_t at = rule.statements.size();
+    Statement st{};
+    st.kind = StatementKind::Pieces;
+    rule.statements.push_back(st);
+    PieceList list;
+    list.kind = PiecesKind::Copy;
+    std::vector<Piece> pieces(1);
+    pieces[0].begin = std::uint32_t(rule.statements.size());
+    BodyScope inner = scope;
+    while (!tokens_.peek().is(']')) {
+        if (tokens_.peek().kind == TokenKind::End)
+            tokens_.expected("']' to close the [ block opened at line " + std::to_string(open.where.line));
+        parseStatement(rule, inner);
+        if (rule.statements.size() > kMaxStatements) tokens_.fail(open.where, "rule " + rule.name + " has more than 2^20 statements");
+    }
+    tokens_.take();
+    pieces[0].end = std::uint32_t(rule.statements.size());
+    storePieces(rule, at, list, pieces);
+}
+
+void Parser::storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces) {
+    for (std::size_t k = 0; k < pieces.size(); ++k) {  // Piece::first: the first with the same statements
+        std::size_t j = 0;
+        while (pieces[j].begin != pieces[k].begin || pieces[j].end != pieces[k].end) ++j;
+        pieces[k].first = std::uint16_t(std::min<std::size_t>(j, 65535));
+    }
     list.first = std::uint32_t(g_.pieces.size());
     list.count = std::uint32_t(pieces.size());
     g_.pieces.insert(g_.pieces.end(), pieces.begin(), pieces.end());
