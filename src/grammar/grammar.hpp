@@ -171,6 +171,7 @@ struct Rule {
 struct Grammar {
     std::string path;        ///< file it was read from
     std::string source;      ///< its full text (stored in outputs and checkpoints)
+    std::vector<std::string> includes;  ///< other files its text reads (a rule file's includes), relative to its folder
     std::vector<Rule> rules;
     std::uint16_t start = 0;
     std::vector<Instr> code;

@@ -415,19 +415,8 @@ void Parser::parseChild(Rule& rule, Statement& s, const SourceLocation& childAt,
 
 }  // namespace grammar_detail
 
-Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
+Grammar parseShapeGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
     return grammar_detail::Parser(text, path, overrides).run();
-}
-
-Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a grammar file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open grammar file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw InputError(path, "", "cannot read grammar file");
-    return parseGrammar(ss.str(), path, overrides);
 }
 
 }  // namespace shapevo
