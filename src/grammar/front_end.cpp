@@ -37,6 +37,28 @@ Grammar parseRuleFile(const std::string& text, const std::string& path, const At
 }
 }  // namespace
 
+std::string translateRuleFile(const std::string& path, const AttrOverrides& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open rule file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    parseRuleFile(text, path, overrides);  // the same checks as every command
+    const crl::Translation t = crl::translateCrl(text, path, overrides);
+    std::istringstream lines(t.text);
+    std::string out = "# " + path + " in the shapevo language (grammars/README.md); # FILE:LINE says where a rule came from\n";
+    std::string line, last;
+    for (std::size_t k = 0; std::getline(lines, line); ++k) {
+        const crl::Location& from = t.origin[k];
+        std::string place = std::filesystem::path(from.file).filename().string() + ":" + std::to_string(from.line);
+        out += line;
+        if (place != last && line.rfind("rule ", 0) == 0) out += "    # " + place;
+        if (line.rfind("rule ", 0) == 0) last = place;
+        out += "\n";
+    }
+    return out;
+}
+
 Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
     return isRuleFile(path) ? parseRuleFile(text, path, overrides) : parseShapeGrammar(text, path, overrides);
 }

@@ -21,6 +21,9 @@ Grammar parseShapeGrammar(const std::string& text, const std::string& path, cons
 Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides = {});
 /// Read and parse a grammar file (either front end).
 Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides = {});
+/// The shapevo-language text a rule file compiles into (what `shapevo translate` prints), after
+/// the same checks loadGrammar makes.
+std::string translateRuleFile(const std::string& path, const AttrOverrides& overrides = {});
 /// True if `path` names a CastleMaker rule file (ends in .rule).
 bool isRuleFile(const std::string& path);
 

@@ -1,8 +1,8 @@
 // Statements that make several scopes out of one, each running a successor: split and repeat
 // along an axis, comp (a volume's faces), lots (rect, circle, center, corners, edges). The
 // Pieces statement comes first; each successor's statements follow it in the rule, in order
-// (a successor named twice, or comp's `side`, is compiled once and shared), then the statement
-// after the whole construct. Successors: a rule name with arguments (compiled inline: its
+// (a successor named twice without arguments, or comp's `side`, is compiled once and shared),
+// then the statement after the whole construct. Successors: a rule name with arguments (compiled inline: its
 // parameters and child slots become this gene's), `{ statements }`, or `nil`.
 #include <cmath>
 
@@ -14,9 +14,17 @@ namespace {
 constexpr const char* kFaceNames[kFaces] = {"top", "bottom", "front", "back", "left", "right"};
 }
 
-void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form) {
+void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form, CompiledSuccessors* compiled) {
     piece.begin = std::uint32_t(rule.statements.size());
     const Token& t = tokens_.peek();
+    if (compiled && t.kind == TokenKind::Identifier && !tokens_.peekSecond().is('(')) {
+        if (auto it = compiled->find(t.text); it != compiled->end()) {
+            tokens_.take();
+            piece.begin = it->second.first;
+            piece.end = it->second.second;
+            return;
+        }
+    }
     if (t.isWord("nil")) {
         tokens_.take();
     } else if (t.is('{')) {
@@ -29,7 +37,9 @@ void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeFor
         if (!headerIndex_.count(name.text))
             tokens_.fail(name.where, "rule '" + name.text + "' is not defined (a successor is a rule name, "
                                      "'{ statements }' or nil)");
+        const bool plain = !tokens_.peek().is('(');
         inlineCall(rule, scope, name, form);
+        if (compiled && plain) (*compiled)[name.text] = {piece.begin, std::uint32_t(rule.statements.size())};
     } else {
         tokens_.expected("a successor: a rule name, '{ statements }' or nil");
     }
@@ -61,10 +71,11 @@ void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeF
 }
 
 void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form) {
+    CompiledSuccessors compiled;
     do {
         if (!pieces.empty()) tokens_.take();
         Piece p;
-        parseSuccessor(rule, scope, p, form);
+        parseSuccessor(rule, scope, p, form, &compiled);
         pieces.push_back(p);
     } while (tokens_.peek().is('|'));
 }
@@ -72,6 +83,7 @@ void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>
 void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces) {
     const SourceLocation open = tokens_.peek().where;
     tokens_.expect('{', "after the split axis (split AXIS { SIZE: SUCCESSOR | ... })");
+    CompiledSuccessors compiled;
     bool inGroup = false, hadGroup = false;
     while (true) {
         if (tokens_.peek().is('{')) {
@@ -94,7 +106,7 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pi
             tokens_.expected("the size of a piece (a number of units, 'FRACTION or ~SIZE) before ':'");
         compileScalar(scope, p.value);
         tokens_.expect(':', "after the size of a piece (SIZE: SUCCESSOR)");
-        parseSuccessor(rule, scope, p, scope.form);
+        parseSuccessor(rule, scope, p, scope.form, &compiled);
         pieces.push_back(p);
         if (pieces.size() > kMaxSplitPieces)
             tokens_.fail(open, "a split lists at most " + std::to_string(kMaxSplitPieces) + " pieces (use a repeat group for more)");
@@ -179,6 +191,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
                                      "face): extrude it first");
         list.kind = PiecesKind::Comp;
         tokens_.expect('{', "after 'comp' (comp { FACE: SUCCESSOR | ... })");
+        CompiledSuccessors compiled;
         bool named[kFaces] = {};
         std::optional<Piece> side;
         SourceLocation sideAt{};
@@ -194,7 +207,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
                 tokens_.fail(fa, "face '" + face + "' is given twice in this comp");
             tokens_.expect(':', "after the face name (FACE: SUCCESSOR)");
             Piece p;
-            parseSuccessor(rule, scope, p, ScopeForm::Flat);
+            parseSuccessor(rule, scope, p, ScopeForm::Flat, &compiled);
             if (f >= 0) {
                 named[f] = true;
                 p.face = std::uint8_t(f);

@@ -55,20 +55,52 @@ std::string splitText(char axis, const std::vector<std::string>& parts, const st
     return s + " }";
 }
 
-/// A grid of lots: columns along X with `xs` shares, rows along Y with `ys`, successors in turn
-/// x fastest from the low corner (shapevo's z runs against Y, so rows are listed high Y first).
-void grid(Call& c, const std::vector<std::string>& xs, const std::vector<std::string>& ys) {
-    std::vector<std::string> columns;
-    for (std::size_t ix = 0; ix < xs.size(); ++ix) {
-        std::vector<std::string> rowParts, rowSucc;
-        for (std::size_t r = ys.size(); r-- > 0;) {
-            rowParts.push_back(ys[r]);
-            rowSucc.push_back(c.succ(r * xs.size() + ix));
+/// How a grid's rows get their shares: constants (or attrs), expressions over the calling rule's
+/// parameters, or fresh random shares per column (lot_split_rand).
+enum class Rows { Constant, Caller, Random };
+
+/// A grid of lots: columns along X with `xs` shares, rows along Y with `ys` (or `rows` random
+/// ones), successors in turn x fastest from the low corner (shapevo's z runs against Y, so rows
+/// are listed high Y first). A column is a helper rule shared by every column with the same
+/// successors, so the successors are compiled once per column kind, not once per lot.
+void grid(Call& c, const std::vector<std::string>& xs, std::vector<std::string> ys, Rows mode, int rows = 0) {
+    const std::size_t nx = xs.size(), ny = mode == Rows::Random ? std::size_t(rows) : ys.size();
+    auto randomShares = [&](std::size_t n) {  // each share uniform(0.25, 1), normalised
+        std::vector<std::string> names, out;
+        std::string total;
+        for (std::size_t k = 0; k < n; ++k) {
+            names.push_back(declareParam(c.t, "uniform(0.25, 1)"));
+            total += (k ? " + " : "") + names.back();
         }
-        columns.push_back(ys.size() == 1 ? rowSucc[0] : "{ " + splitText('z', rowParts, rowSucc) + " }");
+        for (const std::string& v : names) out.push_back(v + " / " + p(total));
+        return out;
+    };
+    auto rowsText = [&](std::size_t ix, const std::vector<std::string>& shares) {
+        std::vector<std::string> parts, succ;
+        for (std::size_t r = ny; r-- > 0;) {
+            parts.push_back(shares[r]);
+            succ.push_back(c.succ(r * nx + ix));
+        }
+        return splitText('z', parts, succ);
+    };
+    std::vector<std::string> columns;
+    for (std::size_t ix = 0; ix < nx; ++ix) {
+        std::string key = "column " + std::to_string(int(mode)) + " " + std::to_string(ny);
+        for (std::size_t r = 0; r < ny; ++r) key += " " + c.succ(r * nx + ix);
+        if (ny == 1) columns.push_back(c.succ(ix));
+        else if (mode == Rows::Caller) columns.push_back("{ " + rowsText(ix, ys) + " }");
+        else {
+            for (const std::string& y : ys) key += " " + y;
+            columns.push_back(helperRule(c.t, key, [&] { c.line(rowsText(ix, mode == Rows::Random ? randomShares(ny) : ys)); }));
+        }
     }
-    c.line(xs.size() == 1 ? (columns[0].front() == '{' ? columns[0].substr(2, columns[0].size() - 4) : columns[0])
-                          : splitText('x', xs, columns));
+    if (nx == 1) {
+        const std::string& only = columns[0];
+        c.line(only.front() == '{' ? only.substr(2, only.size() - 4) : only);
+    } else {
+        c.line(splitText('x', xs, columns));
+    }
+    (void)randomShares;
 }
 
 std::vector<std::string> equalShares(Call& c, std::size_t k) {
@@ -136,19 +168,22 @@ void edges(Call& c) {
     }
 }
 void lotSplit(Call& c) {
-    if (c.args.size() == 2) return grid(c, equalShares(c, 0), equalShares(c, 1));
+    if (c.args.size() == 2) return grid(c, equalShares(c, 0), equalShares(c, 1), Rows::Constant);
     const int dx = constantCount(c, 0, 1, 256, "Divisions_x"), dy = constantCount(c, 1, 1, 256, "Divisions_y");
     if (c.args.size() != std::size_t(2 + dx + dy))
         c.fail(c.app.where, "lot_split takes 2 arguments (splits in x and y) or 2 + Divisions_x + Divisions_y (" +
                                 std::to_string(2 + dx + dy) + " here), this call gives " + std::to_string(c.args.size()));
-    grid(c, shares(c, 2, std::size_t(dx), "lot_split in x"), shares(c, 2 + std::size_t(dx), std::size_t(dy), "lot_split in y"));
+    bool constantRows = true;
+    for (int k = 0; k < dy; ++k) constantRows = constantRows && c.args[2 + std::size_t(dx + k)].constant;
+    grid(c, shares(c, 2, std::size_t(dx), "lot_split in x"), shares(c, 2 + std::size_t(dx), std::size_t(dy), "lot_split in y"),
+         constantRows ? Rows::Constant : Rows::Caller);
 }
 void lotSplitSimple(Call& c) {
     for (int k = 0; k < 2; ++k)
         if (c.args[std::size_t(k)].constant && !(c.args[std::size_t(k)].value >= 0 && c.args[std::size_t(k)].value <= 1))
             c.fail(c.args[std::size_t(k)].where, "lot_split_simple's fractions lie in [0, 1]");
     const std::string fx = p(c.args[0].expr), fy = p(c.args[1].expr);
-    grid(c, {fx, "1 - " + fx}, {fy, "1 - " + fy});
+    grid(c, {fx, "1 - " + fx}, {fy, "1 - " + fy}, c.args[1].constant ? Rows::Constant : Rows::Caller);
 }
 void lotSplitRand(Call& c);
 void extrude(Call& c) {
@@ -160,11 +195,14 @@ void comp(Call& c) {
     const std::size_t m = c.successors.size();
     auto side = [&](int k) { return m == 1 ? c.succ(0) : c.successors[1 + std::size_t(k) % (m - 1)]; };
     c.line("[ translate (0, scope.size.y, 0) " + c.succ(0) + " ]");  // the top: the frame moved up by its height
+    auto face = [&](int k) {  // a face has unit depth, as a lot has unit height
+        const std::string succ = side(k);
+        return helperRule(c.t, "face " + succ, [&] { c.line("size (scope.size.x, scope.size.y, 1) " + succ); });
+    };
     if (n == 4) {
         static const char* names[4] = {"front", "right", "back", "left"};  // -Y, +X, +Y, -X
         std::string s = "comp {";
-        for (int k = 0; k < 4; ++k)
-            s += std::string(k ? " |" : "") + " " + names[k] + ": { size (scope.size.x, scope.size.y, 1) " + side(k) + " }";
+        for (int k = 0; k < 4; ++k) s += std::string(k ? " |" : "") + " " + names[k] + ": " + face(k);
         c.line(s + " }");
         return;
     }
@@ -292,19 +330,15 @@ const Function kFunctions[] = {
 void lotSplitRand(Call& c) {
     const int nx = constantCount(c, 0, 0, 255, "the number of splits in x") + 1;
     const int ny = constantCount(c, 1, 0, 255, "the number of splits in y") + 1;
-    auto randomShares = [&](int n) {  // each column's (row's) share: uniform(0.25, 1), normalised
-        if (n == 1) return std::vector<std::string>{"1"};
-        std::vector<std::string> names, out;
-        std::string total;
-        for (int k = 0; k < n; ++k) {
-            names.push_back(declareParam(c.t, "uniform(0.25, 1)"));
-            total += (k ? " + " : "") + names.back();
-        }
-        for (const std::string& v : names) out.push_back(v + " / " + p(total));
-        return out;
-    };
-    const auto xs = randomShares(nx);
-    grid(c, xs, randomShares(ny));
+    std::vector<std::string> xs, names;
+    std::string total;
+    for (int k = 0; k < nx && nx > 1; ++k) {  // each column's share uniform(0.25, 1), normalised
+        names.push_back(declareParam(c.t, "uniform(0.25, 1)"));
+        total += (k ? " + " : "") + names.back();
+    }
+    for (const std::string& v : names) xs.push_back(v + " / " + p(total));
+    if (nx == 1) xs.push_back("1");
+    grid(c, xs, ny == 1 ? std::vector<std::string>{"1"} : std::vector<std::string>{}, ny == 1 ? Rows::Constant : Rows::Random, ny);
 }
 bool isMaterialWord(const std::string& s) {
     if (s.empty()) return false;

@@ -144,6 +144,18 @@ public:
         inserting_.pop_back();
         return models_[key];
     }
+    std::string helper(const std::string& key, const std::function<void()>& body) {
+        const std::string full = unit_->prefix + key;
+        if (auto it = helpers_.find(full); it != helpers_.end()) return it->second;
+        const std::string name = unit_->prefix + "crl__h" + std::to_string(helpers_.size() + 1);
+        helpers_[full] = name;
+        const Location where = where_;
+        begin(name, where);
+        body();
+        end();
+        where_ = where;
+        return name;
+    }
     Looks looks() const { return unit_->looks; }
     std::string materialName(const std::string& name) const { return unit_->sharedMaterials ? name : unit_->prefix + name; }
     void line(const std::string& s) { cur_->push_back({where_, s}); }
@@ -473,7 +485,7 @@ private:
     std::vector<Line> rulesText_, attrLines_;
     Location where_;
     int params_ = 0;
-    std::map<std::string, std::string> models_;
+    std::map<std::string, std::string> models_, helpers_;
     friend struct Call;
 };
 
@@ -487,6 +499,7 @@ std::string insertedModel(Translator& t, const Location& at, const std::string& 
     return t.insertedModel(at, file, textured, local);
 }
 Looks looks(const Translator& t) { return t.looks(); }
+std::string helperRule(Translator& t, const std::string& key, const std::function<void()>& body) { return t.helper(key, body); }
 std::string materialName(const Translator& t, const std::string& name) { return t.materialName(name); }
 
 Translation translateCrl(const std::string& text, const std::string& path, const std::map<std::string, double>& attrs) {

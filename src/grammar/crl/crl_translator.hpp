@@ -10,6 +10,7 @@
 // multiply sizes about the base centre, translate(...) moves by fractions of the sizes, rect and
 // circ make frames of height 1.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -84,6 +85,9 @@ std::string insertedModel(Translator& t, const Location& at, const std::string& 
 /// insert says is_textured = 0: the parent's look applies) or the material's name to use.
 enum class Looks { Keep, Drop };
 Looks looks(const Translator& t);
+/// A generated rule (named crl__h<N>) whose body `body` writes with Call::line / declareParam;
+/// made once per `key` and translation unit, so every piece that calls it shares its statements.
+std::string helperRule(Translator& t, const std::string& key, const std::function<void()>& body);
 /// The material name to write for `name` (an inserted model's own materials are kept apart
 /// unless its insert says keep_materials_local).
 std::string materialName(const Translator& t, const std::string& name);
