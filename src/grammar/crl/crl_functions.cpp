@@ -105,7 +105,8 @@ void grid(Call& c, const std::vector<std::string>& xs, std::vector<std::string> 
 
 std::vector<std::string> equalShares(Call& c, std::size_t k) {
     if (!c.args[k].constant || c.args[k].value < 0 || c.args[k].value > 4095 || c.args[k].value != std::floor(c.args[k].value))
-        c.fail(c.args[k].where, "the number of splits must be a whole constant from 0 to 4095 (rand() is not allowed here)");
+        c.fail(c.args[k].where, "the number of splits must be a whole constant from 0 to 4095 (rand() is allowed here only "
+                                "with one successor)");
     const int n = int(c.args[k].value) + 1;
     return std::vector<std::string>(std::size_t(n), num(1.0 / n));
 }
@@ -168,6 +169,11 @@ void edges(Call& c) {
     }
 }
 void lotSplit(Call& c) {
+    if (c.args.size() == 2 && (!c.args[0].constant || !c.args[1].constant) && c.successors.size() == 1) {
+        // rand() counts: equal lots in a repeat along each axis (one successor: no round robin to keep)
+        c.line("repeat x count " + p(c.args[0].expr) + " + 1 { repeat z count " + p(c.args[1].expr) + " + 1 " + c.succ(0) + " }");
+        return;
+    }
     if (c.args.size() == 2) return grid(c, equalShares(c, 0), equalShares(c, 1), Rows::Constant);
     const int dx = constantCount(c, 0, 1, 256, "Divisions_x"), dy = constantCount(c, 1, 1, 256, "Divisions_y");
     if (c.args.size() != std::size_t(2 + dx + dy))
