@@ -70,6 +70,20 @@ std::uint32_t parseCount(const std::string& text, std::uint32_t max) {
 
 /// The k-th (1-based) of `count` output names: `path` itself if count is 1, else `path` with
 /// "-NNN" before its extension (out.obj -> out-001.obj; at least 3 digits, as many as count has).
+/// --attr NAME=VALUE options as attr overrides.
+AttrOverrides parseAttrOptions(const std::vector<std::string>& options) {
+    AttrOverrides attrs;
+    for (const std::string& a : options) {
+        const auto eq = a.find('=');
+        char* end = nullptr;
+        const double v = eq == std::string::npos ? 0.0 : std::strtod(a.c_str() + eq + 1, &end);
+        if (eq == std::string::npos || eq == 0 || end == a.c_str() + eq + 1 || *end != '\0' || !std::isfinite(v))
+            throw InputError("--attr", a, "expected NAME=NUMBER, e.g. --attr taper=0.6");
+        attrs[a.substr(0, eq)] = v;
+    }
+    return attrs;
+}
+
 std::string numberedPath(const std::string& path, std::uint32_t k, std::uint32_t count) {
     if (count == 1) return path;
     const std::filesystem::path p(path);
@@ -156,6 +170,14 @@ int main(int argc, char** argv) {
     target->add_option("mesh", meshPath, "closed triangle mesh")->required();
     target->add_option("-o,--output", vdbOut, "output .vdb (must not exist)")->required();
     target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
+
+    // translate
+    auto* translate = app.add_subcommand("translate", "Print what a CastleMaker rule file (.rule) compiles into, in the shapevo "
+                                                      "grammar language: shapevo translate FILE.rule");
+    std::string translatePath;
+    std::vector<std::string> translateAttrs;
+    translate->add_option("rule_file", translatePath, "CastleMaker rule file (grammars/castlemaker/README.md)")->required();
+    translate->add_option("--attr", translateAttrs, "replace an attr of the rule file, NAME=VALUE (repeatable)");
 
     // evaluate
     auto* evaluate = app.add_subcommand("evaluate", "Score a saved chromosome against a config's target (volume or image), "
@@ -263,16 +285,7 @@ int main(int argc, char** argv) {
             const std::uint32_t count = parseCount(sampleCount, kMaxSampleCount);
             const std::string sampleFormat = requireOutputFormat(sampleOut, kModelFormats, "-o");
             if (!genomeOut.empty()) requireOutputFormat(genomeOut, kGenomeFormats, "--genome");
-            AttrOverrides attrs;
-            for (const std::string& a : sampleAttrs) {
-                const auto eq = a.find('=');
-                char* end = nullptr;
-                const double v = eq == std::string::npos ? 0.0 : std::strtod(a.c_str() + eq + 1, &end);
-                if (eq == std::string::npos || eq == 0 || end == a.c_str() + eq + 1 || *end != '\0' || !std::isfinite(v))
-                    throw InputError("--attr", a, "expected NAME=NUMBER, e.g. --attr taper=0.6");
-                attrs[a.substr(0, eq)] = v;
-            }
-            const Grammar g = loadGrammar(grammarPath, attrs);
+            const Grammar g = loadGrammar(grammarPath, parseAttrOptions(sampleAttrs));
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
             if (g.mandatoryGenes[g.start] > maxGenes)
                 throw InputError("--max-genes", "", std::to_string(maxGenes) + " is smaller than the " +
@@ -324,6 +337,9 @@ int main(int argc, char** argv) {
             writeTargetVdb(mesh, voxelSize, meshPath, vdbOut);
             std::cout << "wrote " << vdbOut << " (" << mesh.triangles.size() << " triangles, voxel size " << voxelSize
                       << ")\n";
+        } else if (*translate) {
+            if (!isRuleFile(translatePath)) throw InputError(translatePath, "", "not a CastleMaker rule file (expected a .rule file)");
+            std::cout << translateRuleFile(translatePath, parseAttrOptions(translateAttrs));
         } else if (*evaluate) {
             const RunSettings s = loadConfig(evalConfig, evalSets);
             const Grammar g = loadGrammar(s.grammarPath, s.grammarAttrs);

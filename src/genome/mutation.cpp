@@ -52,7 +52,7 @@ bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {
     for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords())
         for (const Slot& s : g.rules[c.rule(pos)].slots)
             for (std::uint32_t k = 0; k < s.maxCount; ++k)
-                if (c.child(pos, s.firstChild + k) > 0) total += 1.0 - s.probability;
+                if (c.child(pos, s.firstChild + k) > 0) total += s.cutWeight();
     if (total <= 0) return false;
     double r = rng.uniform() * total;
     for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) {
@@ -61,7 +61,7 @@ bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {
             for (std::uint32_t k = 0; k < s.maxCount; ++k) {
                 const std::int32_t off = c.child(pos, s.firstChild + k);
                 if (off <= 0) continue;
-                r -= 1.0 - s.probability;
+                r -= s.cutWeight();
                 if (r >= 0) continue;
                 removeSubtree(g, c, pos + std::uint32_t(off), 0, scratch);
                 return true;

@@ -121,17 +121,27 @@ namespace {
 /// The pieces of a Pieces statement, each a task running its successor on its own scope.
 [[gnu::noinline]] void pushPieces(const Grammar& g, const Statement& st, std::uint32_t gene, const Scope& s,
                                   const float* params, const glm::vec3& parentSize, float* evalStack,
-                                  std::uint32_t frame, DeriveScratch& scratch) {
+                                  std::uint32_t frame, std::uint32_t key, DeriveScratch& scratch) {
     makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
     const PieceList& list = g.pieceLists[st.slot];
+    std::vector<std::uint32_t>& seen = scratch.repetitions;
+    if (g.usesPieceKeys) seen.assign(list.count, 0);
     // Last piece first, scope and task alike: the first piece runs first, and every task below
     // the one popped refers to scopes below its own (see derive's resize of `scopes`).
+    // With `per piece` parameters, the k-th piece of a kind (counted from the first) gets its key.
+    if (g.usesPieceKeys) {
+        scratch.pieceKeys.resize(scratch.pieces.size());
+        for (std::size_t k = 0; k < scratch.pieces.size(); ++k) {
+            const std::uint16_t kind = g.pieces[list.first + scratch.pieces[k].piece].first;
+            scratch.pieceKeys[k] = pieceKey(key, kind, seen[kind]++);
+        }
+    }
     for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
         const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
         if (piece.begin == piece.end) continue;  // nil
         scratch.scopes.push_back(scratch.pieces[k].scope);
         const auto at = std::uint32_t(scratch.scopes.size() - 1);
-        scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame});
+        scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame, g.usesPieceKeys ? scratch.pieceKeys[k] : key});
     }
 }
 }  // namespace
@@ -155,12 +165,12 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
     }
     // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
     if (scopes.capacity() < stack.capacity()) scopes.reserve(stack.capacity());
-    scratch.params.resize(2 * std::size_t(kFrameBase));
+    scratch.params.resize(std::size_t(kPieceKeySlot) + 1);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
     constexpr std::uint32_t kNoFrame = DeriveScratch::kNoFrame;
     scopes.push_back(Scope{});
-    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame});
+    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
     std::size_t tasks = 0;
     while (!stack.empty()) {
         if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;  // mirrors without boxes multiply too
@@ -173,6 +183,8 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
             std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
         if (task.frame != kNoFrame) [[unlikely]]
             std::memcpy(params + kFrameBase, frames.data() + task.frame, r.frameFloats * sizeof(float));
+        if (g.usesPieceKeys) [[unlikely]]
+            std::memcpy(params + kPieceKeySlot, &task.key, sizeof task.key);
         Scope s = scopes[task.scope], beforeTerminal;
         const glm::vec3 parentSize = scopes[task.parent].size;
         // Index of the stored scope equal to `s`, if the last one stored still is (children of
@@ -227,7 +239,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 scopes.push_back(mirrored);
                 // the parent scope stays where it is: at or below task.scope
                 const std::uint32_t frame = snapshot();
-                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame});
+                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.key});
                 stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
                 break;
             }
@@ -281,7 +293,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                             scopes.push_back(s);
                             stored = std::uint32_t(scopes.size() - 1);
                         }
-                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame});
+                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame, task.key});
                     }
                 }
                 break;
@@ -311,7 +323,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 stored = UINT32_MAX;
                 break;
             case StatementKind::Pieces:
-                pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(), scratch);
+                pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(), task.key, scratch);
                 stored = UINT32_MAX;
                 i = st.end - 1;
                 break;

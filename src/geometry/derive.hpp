@@ -18,6 +18,7 @@ struct DeriveScratch {
         std::uint32_t scope;      ///< index in `scopes`: current scope when the task starts
         std::uint32_t parent;     ///< index in `scopes`: scope the gene received from its parent
         std::uint32_t frame;      ///< its let values in `frames` (kNoFrame: none)
+        std::uint32_t key = 0;    ///< piece key (grammar/expression.hpp, pieceKey): which piece of its kind it runs in
     };
     static constexpr std::uint32_t kNoFrame = UINT32_MAX;
     std::vector<Task> stack;
@@ -29,6 +30,8 @@ struct DeriveScratch {
     /// during one derivation (only rules with lets or inline arguments write any).
     std::vector<float> frames;
     std::vector<PieceScope> pieces;    ///< work space of split / comp / lot statements
+    std::vector<std::uint32_t> repetitions;  ///< per kind of piece of a list: how many came before (`per piece`)
+    std::vector<std::uint32_t> pieceKeys;    ///< the piece keys of the pieces being pushed (`per piece`)
     std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
 };

@@ -142,6 +142,9 @@ void makePieces(const Grammar& g, const PieceList& list, const Scope& s, const f
         for (std::uint32_t k = 0; float(k) < n; ++k) emitAlong(s, list.axis, float(k) * len, len, k % list.count, out);
         return;
     }
+    case PiecesKind::Copy:
+        out.push_back({s, 0});
+        return;
     case PiecesKind::Comp:
         for (std::uint32_t k = 0; k < list.count; ++k) face(s, FaceName(g.pieces[list.first + k].face), k, out);
         return;

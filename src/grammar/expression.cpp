@@ -2,6 +2,7 @@
 #include "grammar/expression.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace shapevo {
 
@@ -15,7 +16,7 @@ struct Function {
 constexpr Function kFunctions[] = {
     {"min", 'm', 2, OpCode::Min}, {"max", 'M', 2, OpCode::Max},   {"abs", 'a', 1, OpCode::Abs},
     {"sin", 's', 1, OpCode::Sin}, {"cos", 'c', 1, OpCode::Cos},   {"sqrt", 'q', 1, OpCode::Sqrt},
-    {"floor", 'f', 1, OpCode::Floor},
+    {"floor", 'f', 1, OpCode::Floor}, {"atan2", 't', 2, OpCode::Atan2},
 };
 const Function* findFunction(const std::string& name) {
     for (const auto& f : kFunctions)
@@ -70,7 +71,7 @@ void ExpressionCompiler::compile(const ExpressionContext& ctx, int dims, std::ve
             case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
             case OpCode::Add: case OpCode::Sub: case OpCode::Mul: case OpCode::Div: case OpCode::Min: case OpCode::Max:
             case OpCode::Lt: case OpCode::Le: case OpCode::Gt: case OpCode::Ge: case OpCode::Eq: case OpCode::Ne:
-            case OpCode::And: case OpCode::Or:
+            case OpCode::And: case OpCode::Or: case OpCode::Atan2:
                 --depth;
                 break;
             default: break;
@@ -443,9 +444,34 @@ double normalQuantile(double p) {
 }
 }  // namespace
 
+float freshDraw(float u, std::uint32_t key) {
+    std::uint32_t h;
+    std::memcpy(&h, &u, sizeof h);
+    h ^= key * 0x9E3779B9u;  // then murmur3's finalizer: every input bit reaches every output bit
+    h ^= h >> 16;
+    h *= 0x85EBCA6Bu;
+    h ^= h >> 13;
+    h *= 0xC2B2AE35u;
+    h ^= h >> 16;
+    return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+std::uint32_t pieceKey(std::uint32_t parent, std::uint32_t kind, std::uint32_t repetition) {
+    if (repetition == 0) return parent;
+    std::uint32_t h = parent * 0x9E3779B9u + kind * 0x85EBCA6Bu + repetition * 0xC2B2AE35u + 0x27D4EB2Fu;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h *= 0x297A2D39u;
+    h ^= h >> 15;
+    return h == 0 ? 1u : h;  // 0 means "the first of its kind"
+}
+
 bool isConstantExpression(const std::vector<Instr>& code, const ExprRef& e) {
     for (std::uint32_t i = e.begin; i < e.end; ++i)
-        if (code[i].op == OpCode::Param || code[i].op == OpCode::ScopeSize || code[i].op == OpCode::ParentSize) return false;
+        if (code[i].op == OpCode::Param || code[i].op == OpCode::ScopeSize || code[i].op == OpCode::ParentSize ||
+            code[i].op == OpCode::Fresh)
+            return false;
     return true;
 }
 
@@ -487,6 +513,13 @@ float evaluateProgram(const std::vector<Instr>& code, const ExprRef& e, const fl
         case OpCode::Not: stack[top] = stack[top] == 0.0f ? 1.0f : 0.0f; break;
         case OpCode::NormalCdf: stack[top] = float(0.5 * std::erfc(-double(stack[top]) * M_SQRT1_2)); break;
         case OpCode::NormalQuantile: stack[top] = float(normalQuantile(double(stack[top]))); break;
+        case OpCode::Atan2: stack[top - 1] = std::atan2(stack[top - 1], stack[top]); --top; break;
+        case OpCode::Fresh: {
+            std::uint32_t key;
+            std::memcpy(&key, params + kPieceKeySlot, sizeof key);
+            if (key != 0) stack[top] = freshDraw(stack[top], key);
+            break;
+        }
         }
     }
     return stack[0];

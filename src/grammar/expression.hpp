@@ -107,6 +107,14 @@ inline float evaluateProgram(const Grammar& g, const ExprRef& e, const float* pa
 /// grammar is read.
 float evaluateConstant(const std::vector<Instr>& code, const ExprRef& e);
 
+/// OpCode::Fresh away from the first piece of its kind: a value in [0, 1) that depends on every
+/// bit of `u` and of the piece key `key` (murmur3's finalizer), so pieces draw independently.
+float freshDraw(float u, std::uint32_t key);
+/// The piece key of a piece: its parent task's key for the first piece of its kind
+/// (`repetition` 0), else a hash of the parent key, the kind (Piece::first) and the repetition
+/// (never 0). Keys start at 0 for the root.
+std::uint32_t pieceKey(std::uint32_t parent, std::uint32_t kind, std::uint32_t repetition);
+
 /// One binary operation exactly as the stack machine does it.
 inline float applyBinary(OpCode op, float a, float b) {
     switch (op) {

@@ -20,6 +20,8 @@ enum class OpCode : std::uint8_t {
     Min, Max, Abs, Sin, Cos, Sqrt, Floor,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Not,  // comparisons and logic: 1 for true, 0 for false
     NormalCdf, NormalQuantile,             // the standard normal's CDF and its inverse (run-time normal priors)
+    Atan2,                                 // atan2(y, x) in radians
+    Fresh,  // u in [0, 1] -> u itself in the first piece of its kind, else a value in [0, 1) hashed from u and the piece key (`per piece`)
 };
 struct Instr {
     OpCode op;
@@ -67,7 +69,13 @@ struct Slot {
     std::uint16_t maxCount = 1;         ///< sibling positions (one child offset each)
     std::uint16_t firstChild = 0;       ///< index of its first child offset in the gene
     std::uint32_t edge = 0;             ///< generator-graph edge id, unique over the grammar
-    bool mandatory() const { return probability >= 1.0f; }
+    /// `optional`: the genome may leave it out even at probability 1 (grow adds it, cut removes
+    /// it, a fresh gene does not bring it), so a cycle through it may end; uncontrolled
+    /// derivations still express each position with `probability`.
+    bool optional = false;
+    bool mandatory() const { return probability >= 1.0f && !optional; }
+    /// Relative chance that cut picks an expressed position of this slot.
+    float cutWeight() const { return optional ? 1.0f : 1.0f - probability; }
 };
 
 enum class StatementKind : std::uint8_t {
@@ -106,6 +114,10 @@ struct Piece {
     std::uint8_t face = 0;      ///< comp: the face (FaceName)
     ExprRef value;              ///< split: the size expression
     std::uint32_t begin = 0, end = 0;
+    /// Index in its list of the first piece with the same successor statements (a successor
+    /// named twice, comp's `side`, a repeat's round robin): pieces of one kind count their
+    /// repetitions for `per piece` parameters.
+    std::uint16_t first = 0;
 };
 /// The faces `comp` takes a volume apart into (see geometry/derive.hpp for their frames).
 enum class FaceName : std::uint8_t { Top, Bottom, Front, Back, Left, Right };
@@ -121,6 +133,7 @@ enum class PiecesKind : std::uint8_t {
     Center,       ///< center (w, d) A: a lot of w x d units in the middle of a flat scope
     Corners,      ///< corners (rx, ry) [on (a, b, c, d)] [inside] A | ...: square lots on a flat scope's corners
     Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges, x along the edge
+    Copy,         ///< [ STATEMENTS ]: one piece, the scope itself (CGA's push / pop)
 };
 /// Most pieces one split may list (a repeat group makes any number of them).
 inline constexpr std::size_t kMaxSplitPieces = 256;
@@ -139,6 +152,9 @@ struct SourceLocation {
 /// Parameter-block index where a rule's frame values (`let`, inline calls' arguments) start: they
 /// follow the (at most 256) stored parameter floats in derive's work space, never in genes.
 inline constexpr std::uint16_t kFrameBase = 256;
+/// Parameter-block index where derive keeps the running task's piece key (its bits, for
+/// OpCode::Fresh): after the frame values.
+inline constexpr std::uint16_t kPieceKeySlot = 2 * kFrameBase;
 
 struct Rule {
     std::string name;
@@ -156,6 +172,7 @@ struct Rule {
 struct Grammar {
     std::string path;        ///< file it was read from
     std::string source;      ///< its full text (stored in outputs and checkpoints)
+    std::vector<std::string> includes;  ///< other files its text reads (a rule file's includes), relative to its folder
     std::vector<Rule> rules;
     std::uint16_t start = 0;
     std::vector<Instr> code;
@@ -165,6 +182,7 @@ struct Grammar {
     std::vector<Piece> pieces;
     std::vector<std::string> materialNames{""};  ///< index 0: no named material
     bool hasAppearance = false;      ///< a `color` or `material` statement exists (derive fills Geometry::appearance)
+    bool usesPieceKeys = false;      ///< a `per piece` parameter exists (derive keeps piece keys for OpCode::Fresh)
     std::vector<Texture> textures;   ///< images of `texture` statements (which set hasAppearance too), read when the grammar is loaded
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;

@@ -37,7 +37,8 @@ struct Walker {
         for (auto it = from; it != path.end(); ++it) text += g.rules[it->rule].name + " -> ";
         text += g.rules[c].name;
         fail(g.rules[c].where, "recursion never ends: " + text +
-                                   " are all probability-1 children; give one of these child slots a prob below 1");
+                                   " are all probability-1 children; give one of these child slots a prob below 1 "
+                                   "(or mark it 'optional')");
     }
 
     void visit(int root) {

@@ -382,9 +382,14 @@ void Parser::parseChild(Rule& rule, Statement& s, const SourceLocation& childAt,
     for (float w : slot.weights) totalWeight += w;
     if (!std::isfinite(totalWeight))
         tokens_.fail(childAt, "the weights of this child slot add up to more than a 32-bit float can hold");
-    bool seenProb = false, seenMax = false;
-    while (tokens_.peek().isWord("prob") || tokens_.peek().isWord("max")) {
+    bool seenProb = false, seenMax = false, seenOptional = false;
+    while (tokens_.peek().isWord("prob") || tokens_.peek().isWord("max") || tokens_.peek().isWord("optional")) {
         const Token key = tokens_.take();
+        if (key.text == "optional") {
+            if (seenOptional) tokens_.fail(key.where, "'optional' is given twice for this child slot");
+            seenOptional = slot.optional = true;
+            continue;
+        }
         bool& seen = key.text == "prob" ? seenProb : seenMax;
         if (seen) tokens_.fail(key.where, "'" + key.text + "' is given twice for this child slot");
         seen = true;
@@ -410,19 +415,8 @@ void Parser::parseChild(Rule& rule, Statement& s, const SourceLocation& childAt,
 
 }  // namespace grammar_detail
 
-Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
+Grammar parseShapeGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
     return grammar_detail::Parser(text, path, overrides).run();
-}
-
-Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a grammar file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open grammar file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw InputError(path, "", "cannot read grammar file");
-    return parseGrammar(ss.str(), path, overrides);
 }
 
 }  // namespace shapevo

@@ -85,10 +85,15 @@ public:
     void parseStatement(Rule& rule, BodyScope& scope);
     void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
+    void parseCopy(Rule& rule, BodyScope& scope);
+    void storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces);
     void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces);
     void parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form);
     /// One successor (a rule name with arguments: inline; `{ ... }`; `nil`): fills piece.begin/end.
-    void parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form);
+    /// Successors of one statement already compiled, by name (a plain name without arguments
+    /// is compiled once per statement; its pieces share the statements).
+    using CompiledSuccessors = std::map<std::string, std::pair<std::uint32_t, std::uint32_t>>;
+    void parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form, CompiledSuccessors* compiled = nullptr);
     void inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeForm form);
     void parseTerminal(Rule& rule, BodyScope& scope, const SourceLocation& at);
     std::uint16_t parseMesh();

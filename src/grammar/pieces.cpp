@@ -1,8 +1,8 @@
 // Statements that make several scopes out of one, each running a successor: split and repeat
 // along an axis, comp (a volume's faces), lots (rect, circle, center, corners, edges). The
 // Pieces statement comes first; each successor's statements follow it in the rule, in order
-// (a successor named twice, or comp's `side`, is compiled once and shared), then the statement
-// after the whole construct. Successors: a rule name with arguments (compiled inline: its
+// (a successor named twice without arguments, or comp's `side`, is compiled once and shared),
+// then the statement after the whole construct. Successors: a rule name with arguments (compiled inline: its
 // parameters and child slots become this gene's), `{ statements }`, or `nil`.
 #include <cmath>
 
@@ -14,9 +14,17 @@ namespace {
 constexpr const char* kFaceNames[kFaces] = {"top", "bottom", "front", "back", "left", "right"};
 }
 
-void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form) {
+void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form, CompiledSuccessors* compiled) {
     piece.begin = std::uint32_t(rule.statements.size());
     const Token& t = tokens_.peek();
+    if (compiled && t.kind == TokenKind::Identifier && !tokens_.peekSecond().is('(')) {
+        if (auto it = compiled->find(t.text); it != compiled->end()) {
+            tokens_.take();
+            piece.begin = it->second.first;
+            piece.end = it->second.second;
+            return;
+        }
+    }
     if (t.isWord("nil")) {
         tokens_.take();
     } else if (t.is('{')) {
@@ -29,7 +37,9 @@ void Parser::parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeFor
         if (!headerIndex_.count(name.text))
             tokens_.fail(name.where, "rule '" + name.text + "' is not defined (a successor is a rule name, "
                                      "'{ statements }' or nil)");
+        const bool plain = !tokens_.peek().is('(');
         inlineCall(rule, scope, name, form);
+        if (compiled && plain) (*compiled)[name.text] = {piece.begin, std::uint32_t(rule.statements.size())};
     } else {
         tokens_.expected("a successor: a rule name, '{ statements }' or nil");
     }
@@ -61,10 +71,11 @@ void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeF
 }
 
 void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form) {
+    CompiledSuccessors compiled;
     do {
         if (!pieces.empty()) tokens_.take();
         Piece p;
-        parseSuccessor(rule, scope, p, form);
+        parseSuccessor(rule, scope, p, form, &compiled);
         pieces.push_back(p);
     } while (tokens_.peek().is('|'));
 }
@@ -72,6 +83,7 @@ void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>
 void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces) {
     const SourceLocation open = tokens_.peek().where;
     tokens_.expect('{', "after the split axis (split AXIS { SIZE: SUCCESSOR | ... })");
+    CompiledSuccessors compiled;
     bool inGroup = false, hadGroup = false;
     while (true) {
         if (tokens_.peek().is('{')) {
@@ -94,7 +106,7 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pi
             tokens_.expected("the size of a piece (a number of units, 'FRACTION or ~SIZE) before ':'");
         compileScalar(scope, p.value);
         tokens_.expect(':', "after the size of a piece (SIZE: SUCCESSOR)");
-        parseSuccessor(rule, scope, p, scope.form);
+        parseSuccessor(rule, scope, p, scope.form, &compiled);
         pieces.push_back(p);
         if (pieces.size() > kMaxSplitPieces)
             tokens_.fail(open, "a split lists at most " + std::to_string(kMaxSplitPieces) + " pieces (use a repeat group for more)");
@@ -179,6 +191,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
                                      "face): extrude it first");
         list.kind = PiecesKind::Comp;
         tokens_.expect('{', "after 'comp' (comp { FACE: SUCCESSOR | ... })");
+        CompiledSuccessors compiled;
         bool named[kFaces] = {};
         std::optional<Piece> side;
         SourceLocation sideAt{};
@@ -194,7 +207,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
                 tokens_.fail(fa, "face '" + face + "' is given twice in this comp");
             tokens_.expect(':', "after the face name (FACE: SUCCESSOR)");
             Piece p;
-            parseSuccessor(rule, scope, p, ScopeForm::Flat);
+            parseSuccessor(rule, scope, p, ScopeForm::Flat, &compiled);
             if (f >= 0) {
                 named[f] = true;
                 p.face = std::uint8_t(f);
@@ -261,6 +274,38 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     }
     if (pieces.empty()) tokens_.fail(word.where, "'" + w + "' needs at least one piece");
     if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp and lot statements (at most 65535)");
+    storePieces(rule, at, list, pieces);
+}
+
+void Parser::parseCopy(Rule& rule, BodyScope& scope) {
+    const Token open = tokens_.take();  // [
+    if (g_.pieceLists.size() >= 65535) tokens_.fail(open.where, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
+    const std::size_t at = rule.statements.size();
+    Statement st{};
+    st.kind = StatementKind::Pieces;
+    rule.statements.push_back(st);
+    PieceList list;
+    list.kind = PiecesKind::Copy;
+    std::vector<Piece> pieces(1);
+    pieces[0].begin = std::uint32_t(rule.statements.size());
+    BodyScope inner = scope;
+    while (!tokens_.peek().is(']')) {
+        if (tokens_.peek().kind == TokenKind::End)
+            tokens_.expected("']' to close the [ block opened at line " + std::to_string(open.where.line));
+        parseStatement(rule, inner);
+        if (rule.statements.size() > kMaxStatements) tokens_.fail(open.where, "rule " + rule.name + " has more than 2^20 statements");
+    }
+    tokens_.take();
+    pieces[0].end = std::uint32_t(rule.statements.size());
+    storePieces(rule, at, list, pieces);
+}
+
+void Parser::storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces) {
+    for (std::size_t k = 0; k < pieces.size(); ++k) {  // Piece::first: the first with the same statements
+        std::size_t j = 0;
+        while (pieces[j].begin != pieces[k].begin || pieces[j].end != pieces[k].end) ++j;
+        pieces[k].first = std::uint16_t(std::min<std::size_t>(j, 65535));
+    }
     list.first = std::uint32_t(g_.pieces.size());
     list.count = std::uint32_t(pieces.size());
     g_.pieces.insert(g_.pieces.end(), pieces.begin(), pieces.end());

@@ -2,7 +2,8 @@
 // arguments use the scope, parameters, lets or inline arguments. The gene stores u in [0, 1]
 // (the parameter's genome prior, which the operators see); a frame value drawn from u where the
 // parameter is declared is what the rule's expressions read (grammars/README.md gives the
-// formulas). Constant priors never come here: parser.cpp folds them.
+// formulas). Constant priors never come here (parser.cpp folds them) unless marked `per piece`:
+// then the draw reads OpCode::Fresh of u, so each piece of one statement gets its own value.
 #include <cmath>
 
 #include "grammar/parser_state.hpp"
@@ -17,7 +18,7 @@ int stackDepth(const std::vector<Instr>& code, std::uint32_t begin, std::uint32_
         switch (code[i].op) {
         case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
         case OpCode::Neg: case OpCode::Abs: case OpCode::Sin: case OpCode::Cos: case OpCode::Sqrt: case OpCode::Floor:
-        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: break;
+        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: case OpCode::Fresh: break;
         default: --depth; break;  // the binary operations
         }
         deepest = std::max(deepest, depth);
@@ -60,8 +61,12 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
             }
         }
     }
+    if (kind != "normal" && tokens_.peek().is(')')) tokens_.take();
+    if (kind == "normal" && tokens_.peek().is(']')) tokens_.take();
+    // `per piece`: every piece of a split, repeat, comp or lot draws its own value (OpCode::Fresh)
+    const bool perPiece = tokens_.peek().isWord("per") && tokens_.peekSecond().isWord("piece");
     tokens_.seek(start);
-    if (constant) return false;
+    if (constant && !perPiece) return false;
     // A run-time prior: the gene stores u in [0, 1] (its genome prior); the value is drawn from u
     // where the parameter is declared, into a frame value the rule's expressions read:
     //   uniform(a, b): a + u (b - a)        int(a, b): min(floor(ceil(a) + u (floor(b) - ceil(a) + 1)), floor(b))
@@ -89,6 +94,10 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
     if (rule.paramFloats > 256) tokens_.fail(at, "rule " + rule.name + " has more than 256 parameter values");
     const std::uint16_t u = p.first;
     std::vector<Instr>& code = g_.code;
+    auto pushU = [&] {
+        code.push_back({OpCode::Param, 0, u, 0});
+        if (perPiece) code.push_back({OpCode::Fresh});
+    };
     auto copy = [&](const ExprRef& r) {
         const std::vector<Instr> part(code.begin() + r.begin, code.begin() + r.end);
         code.insert(code.end(), part.begin(), part.end());
@@ -108,7 +117,7 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
         copy(mu);
         copy(sigma);
         standardCdf(lo);
-        code.push_back({OpCode::Param, 0, u, 0});
+        pushU();
         standardCdf(hi);
         standardCdf(lo);
         code.push_back({OpCode::Sub});
@@ -121,7 +130,7 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
         code.push_back({OpCode::Min});  // min(hi, .)
     } else if (kind == "uniform") {
         copy(lo);
-        code.push_back({OpCode::Param, 0, u, 0});
+        pushU();
         copy(hi);
         copy(lo);
         code.push_back({OpCode::Sub});
@@ -139,7 +148,7 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
             code.push_back({OpCode::Floor});
         };
         ceilLo();
-        code.push_back({OpCode::Param, 0, u, 0});
+        pushU();
         floorHi();
         ceilLo();
         code.push_back({OpCode::Sub});
@@ -150,6 +159,11 @@ bool Parser::parseRunTimePrior(Rule& rule, BodyScope& scope, Param& p, const std
         code.push_back({OpCode::Floor});
         floorHi();
         code.push_back({OpCode::Min});
+    }
+    if (perPiece) {
+        tokens_.take();  // per
+        tokens_.take();  // piece
+        g_.usesPieceKeys = true;
     }
     ExprRef value{begin, std::uint32_t(code.size())};
     const int depth = stackDepth(code, value.begin, value.end);

@@ -137,6 +137,7 @@ struct PrimitiveArguments {
 };
 
 void Parser::parseStatement(Rule& rule, BodyScope& scope) {
+    if (tokens_.peek().is('[')) return parseCopy(rule, scope);
     const Token word = tokens_.take();
     if (word.kind != TokenKind::Identifier)
         tokens_.fail(word.where, "expected a statement (" + statementList() + "), found " + word.describe());

@@ -31,10 +31,12 @@ void writeFile(const std::string& path, const std::string& text) {
     writeStreamAtomically(path, [&](std::ostream& out) { out << text; });
 }
 
-/// Every input file of a run: the config, the grammar, the meshes and textures it names and the targets.
+/// Every input file of a run: the config, the grammar, the files it includes, the meshes and
+/// textures it names and the targets.
 std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g) {
     std::vector<InputFile> inputs{hashInput("config", s.configPath), hashInput("grammar", s.grammarPath)};
     const std::filesystem::path grammarDir = std::filesystem::path(s.grammarPath).parent_path();
+    for (const std::string& f : g.includes) inputs.push_back(hashInput("include", (grammarDir / f).string()));
     for (const MeshShape& m : g.meshes) inputs.push_back(hashInput("mesh", (grammarDir / m.path).string()));
     for (const Texture& t : g.textures) inputs.push_back(hashInput("texture", t.file));
     for (const TargetVolumeSpec& t : s.targets) inputs.push_back(hashInput("target", t.path));
