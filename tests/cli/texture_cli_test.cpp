@@ -1,7 +1,8 @@
 // Textured grammars through the command line: `shapevo sample` writes a textured OBJ with its MTL
-// and the image beside it, and a GLB with the image embedded; a run writes best.obj, best.mtl,
-// the image and best.glb into its folder, records the texture among its inputs and resumes; a
-// missing texture file is exit 2 with file:line:column naming it, and nothing is written.
+// and the image beside it, and a GLB with the image embedded, for a CastleMaker rule file's
+// add_texture too; a run writes best.obj, best.mtl, the image and best.glb into its folder,
+// records the texture among its inputs and resumes; a missing texture file is exit 2 with
+// file:line:column naming it, and nothing is written.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -46,6 +47,25 @@ TEST(TextureCli, SampleWritesTheImageBesideTheObjAndEmbedsItInTheGlb) {
     const std::string glb = readFile(dir.file("out/m.glb"));
     EXPECT_NE(glb.find("\"mimeType\":\"image/png\""), std::string::npos);
     EXPECT_NE(glb.find(readFile(sourcePath("tests/data/bricks.png"))), std::string::npos) << "the PNG's bytes are in the GLB";
+}
+
+TEST(TextureCli, ARuleFilesAddTextureIsATexturedMaterial) {
+    TempDir dir;
+    copyBricks(dir);
+    writeFile(dir.file("wall.rule"),
+              "Lot = rect(-10, -3, 10, 3);\nLot -> extrude(8) {Block};\n"
+              "Block -> add_texture(\"bricks\", \"bricks.png\", 10, 8) {Tex};\nTex -> subdiv(70, 30) {Low | High};\n"
+              "Low -> insert_volume(1, 1, 1, 0, 0, 1);\nHigh -> insert_volume(1, 1, 1, 0, 0, 1);\n");
+    const auto r = runShapevo("sample " + dir.file("wall.rule") + " -o " + dir.file("m.obj"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(readFile(dir.file("m.mtl")).find("newmtl bricks\nKd 1 1 1\nmap_Kd bricks.png\n"), std::string::npos)
+        << readFile(dir.file("m.mtl"));
+    const std::string obj = readFile(dir.file("m.obj"));
+    std::size_t v = 0, vt = 0;
+    for (std::size_t at = obj.find("\nv "); at != std::string::npos; at = obj.find("\nv ", at + 1)) ++v;
+    for (std::size_t at = obj.find("\nvt "); at != std::string::npos; at = obj.find("\nvt ", at + 1)) ++vt;
+    EXPECT_GT(v, 0u);
+    EXPECT_EQ(vt, v) << "one UV per vertex";
 }
 
 TEST(TextureCli, AMissingTextureIsExitTwoAtItsNameAndWritesNothing) {
