@@ -89,5 +89,7 @@ Looks looks(const Translator& t);
 std::string materialName(const Translator& t, const std::string& name);
 /// Every function's name, for messages.
 std::string functionNames();
+/// The function whose name is nearest to a misspelt `name` (at most two edits), or "".
+std::string similarFunction(const std::string& name);
 
 }  // namespace shapevo::crl
