@@ -94,16 +94,18 @@ inline void writeFile(const std::string& path, const std::string& text) {
     std::fclose(f);
 }
 
-/// Writes `grammarText` to `dir`/NAME.grammar and a copy of configs/spaceship.toml that uses it
-/// (with the spaceship's target, by absolute path) to `dir`/NAME.toml; returns the config's path.
-inline std::string configWithGrammar(const TempDir& dir, const std::string& grammarText, const std::string& name = "g") {
-    writeFile(dir.file(name + ".grammar"), grammarText);
+/// Writes `grammarText` to `dir`/NAME.grammar (NAME`extension`: ".rule" for a CastleMaker rule file)
+/// and a copy of configs/spaceship.toml that uses it (with the spaceship's target, by absolute
+/// path) to `dir`/NAME.toml; returns the config's path.
+inline std::string configWithGrammar(const TempDir& dir, const std::string& grammarText, const std::string& name = "g",
+                                     const std::string& extension = ".grammar") {
+    writeFile(dir.file(name + extension), grammarText);
     std::string cfg = readFile(sourcePath("configs/spaceship.toml"));
     auto replaceAll = [&cfg](const std::string& from, const std::string& to) {
         for (std::size_t at = cfg.find(from); at != std::string::npos; at = cfg.find(from, at + to.size()))
             cfg.replace(at, from.size(), to);
     };
-    replaceAll("\"../grammars/spaceship.grammar\"", "\"" + name + ".grammar\"");
+    replaceAll("\"../grammars/spaceship.grammar\"", "\"" + name + extension + "\"");
     replaceAll("\"../targets/", "\"" + sourcePath("targets/"));
     writeFile(dir.file(name + ".toml"), cfg);
     return dir.file(name + ".toml");

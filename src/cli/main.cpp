@@ -298,26 +298,47 @@ int main(int argc, char** argv) {
             // File k is seed + k - 1, as --count 1 --seed (seed + k - 1) writes it. Every
             // derivation is drawn once before anything is written, so a size window that cannot
             // be met leaves no files behind; the second draw repeats the first exactly.
+            // A recursion that ends only by chance (a rule file's recursive stochastic rule,
+            // castlemaker-crl.txt §5.2) may grow without end: --max-genes stops each draw, and
+            // genome.max_primitives (its default: sample has no config) each model.
+            const bool mayNeverEnd = isRuleFile(grammarPath) || hasOptionalRecursion(g);
+            const std::string neverEnds = "a recursive stochastic rule may never end (castlemaker-crl.txt §5.2): ";
+            Geometry geo;
+            DeriveScratch scratch;
             auto draw = [&](std::uint32_t k, Chromosome& c) {
                 const std::uint64_t seedK = sampleSeedValue + (k - 1);  // wraps mod 2^64
                 Rng rng(seedK);
                 const SampleOutcome o = sampleDerivation(g, c, rng, minGenes, maxGenes, kSampleAttempts);
+                if (!o.found && mayNeverEnd && o.tooLarge == o.attempts)
+                    throw InputError("--max-genes", "",
+                                     "all " + std::to_string(o.attempts) + " derivations of " + grammarPath + " drawn (seed " +
+                                         std::to_string(seedK) + ") grew past the limit of " + std::to_string(maxGenes) +
+                                         " genes and were stopped there; " + neverEnds +
+                                         "lower the probabilities of the alternatives that recurse, or raise --max-genes");
                 if (!o.found)
                     throw InputError("--min-genes/--max-genes", "",
                                      "no derivation of " + grammarPath + " with " + std::to_string(minGenes) + " to " +
                                          std::to_string(maxGenes) + " genes in " + std::to_string(o.attempts) + " draws (seed " +
-                                         std::to_string(seedK) + "); the grammar's prob values make that size rare or "
-                                         "impossible: widen the window");
+                                         std::to_string(seedK) +
+                                         (o.tooLarge ? "; " + std::to_string(o.tooLarge) + " of them grew past --max-genes" : std::string()) +
+                                         "); the grammar's prob values make that size rare or impossible" +
+                                         (o.tooLarge && mayNeverEnd ? " (" + neverEnds.substr(0, neverEnds.size() - 2) + ")" : std::string()) +
+                                         ": widen the window");
+                if (derive(g, c, geo, scratch) == DeriveStatus::Truncated)
+                    throw InputError("genome.max_primitives", "",
+                                     "the derivation of " + grammarPath + " drawn with seed " + std::to_string(seedK) + " (" +
+                                         std::to_string(c.genes) + " genes) reached the limit of " + std::to_string(kDefaultMaxPrimitives) +
+                                         " primitives (the limit genome.max_primitives sets; sample uses its default) and was stopped "
+                                         "there; " +
+                                         (mayNeverEnd ? neverEnds + "lower the probabilities of the alternatives that recurse, or --max-genes"
+                                                      : std::string("splits, repeats and comps nested in each other multiply their pieces: nest fewer")));
                 return std::pair{seedK, o.attempts};
             };
             Chromosome c;
             for (std::uint32_t k = 1; k <= count; ++k) draw(k, c);
-            Geometry geo;
-            DeriveScratch scratch;
             for (std::uint32_t k = 1; k <= count; ++k) {
                 const auto [seedK, attempts] = draw(k, c);
                 const std::string modelPath = numberedPath(sampleOut, k, count);
-                derive(g, c, geo, scratch);
                 writeModelFile(geo, sampleFormat, modelPath, Replace::Never);
                 std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives (seed " << seedK;
                 if (attempts > 1) std::cout << ", draw " << attempts;

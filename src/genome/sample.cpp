@@ -2,6 +2,8 @@
 // slot's probability; rejection for the size window.
 #include "genome/sample.hpp"
 
+#include <algorithm>
+
 #include "genome/operators.hpp"
 
 namespace shapevo {
@@ -29,13 +31,35 @@ SampleOutcome sampleDerivation(const Grammar& g, Chromosome& c, Rng& rng, std::u
     SampleOutcome out;
     while (out.attempts < maxAttempts) {
         ++out.attempts;
-        if (growUncontrolled(g, c, rng, maxGenes) && c.genes >= minGenes) {
+        if (!growUncontrolled(g, c, rng, maxGenes)) {
+            ++out.tooLarge;
+        } else if (c.genes >= minGenes) {
             out.found = true;
             return out;
         }
     }
     c.clear();
     return out;
+}
+
+bool hasOptionalRecursion(const Grammar& g) {
+    std::vector<std::uint8_t> seen(g.rules.size());
+    std::vector<std::uint16_t> todo;
+    for (std::size_t r = 0; r < g.rules.size(); ++r)
+        for (const Slot& s : g.rules[r].slots) {
+            if (!s.optional) continue;
+            std::fill(seen.begin(), seen.end(), 0);
+            todo.assign(s.rules.begin(), s.rules.end());
+            while (!todo.empty()) {
+                const std::uint16_t x = todo.back();
+                todo.pop_back();
+                if (x == r) return true;
+                if (seen[x]) continue;
+                seen[x] = 1;
+                for (const Slot& t : g.rules[x].slots) todo.insert(todo.end(), t.rules.begin(), t.rules.end());
+            }
+        }
+    return false;
 }
 
 }  // namespace shapevo

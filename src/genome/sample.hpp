@@ -23,7 +23,13 @@ bool growUncontrolled(const Grammar& g, Chromosome& c, Rng& rng, std::uint32_t m
 struct SampleOutcome {
     bool found = false;
     std::uint32_t attempts = 0;  ///< derivations drawn, the kept one included
+    std::uint32_t tooLarge = 0;  ///< of those, how many were abandoned at maxGenes
 };
+
+/// Whether some `optional` child slot can lead back to its own rule: a recursion that ends only
+/// by chance (a CastleMaker rule file's recursive stochastic rule is one, castlemaker-crl.txt
+/// §5.2), so that an uncontrolled derivation may grow without end.
+bool hasOptionalRecursion(const Grammar& g);
 
 /// Draw derivations with growUncontrolled until one has between minGenes and maxGenes genes,
 /// at most `maxAttempts` of them. On success `c` is that derivation.

@@ -1,162 +1,20 @@
 // libFuzzer target: arbitrary bytes -> parseGrammar. A located InputError is the expected way
 // to reject input; any other exception, a sanitizer report, or a broken invariant of an accepted
-// grammar is a crash. See grammars/README.md ("Fuzzing") for how to build and run it.
-#include <cmath>
+// grammar is a crash (grammar_invariants.hpp). See grammars/README.md ("Fuzzing") for how to
+// build and run it.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <set>
 #include <string>
 
-#include "grammar/expression.hpp"
-#include "grammar/parser.hpp"
-#include "base/input_error.hpp"
-
-namespace {
-
-using namespace shapevo;
-
-[[noreturn]] void broken(const char* what) {
-    std::fprintf(stderr, "fuzz_grammar_parser: invariant broken: %s\n", what);
-    std::abort();
-}
-#define CHECK(cond) \
-    do {            \
-        if (!(cond)) broken(#cond); \
-    } while (0)
-
-/// An error must start with "fuzz.grammar:LINE:COL: " and point inside the text (or just past its end).
-void checkLocated(const InputError& e, const std::string& text) {
-    const std::string what = e.what();
-    CHECK(what.rfind("fuzz.grammar:", 0) == 0);
-    int line = 0, column = 0, consumed = 0;
-    CHECK(std::sscanf(what.c_str() + 13, "%d:%d: %n", &line, &column, &consumed) == 2 && consumed > 0);
-    CHECK(what.size() > std::size_t(13 + consumed));  // a message follows the location
-    // Lines and columns count bytes from 1; the column may be one past the line's last byte.
-    int l = 1;
-    std::size_t lineStart = 0;
-    for (std::size_t i = 0; i < text.size() && l < line; ++i)
-        if (text[i] == '\n') {
-            ++l;
-            lineStart = i + 1;
-        }
-    CHECK(line >= 1 && l == line);
-    std::size_t lineEnd = text.find('\n', lineStart);
-    if (lineEnd == std::string::npos) lineEnd = text.size();
-    CHECK(column >= 1 && std::size_t(column) <= lineEnd - lineStart + 1);
-}
-
-void checkAccepted(const Grammar& g) {
-    CHECK(!g.rules.empty() && g.start < g.rules.size());
-    CHECK(g.maxStack >= 0 && g.maxStack <= kMaxExpressionStack);
-    CHECK(g.mandatoryGenes.size() == g.rules.size() && g.mandatoryWords.size() == g.rules.size());
-    std::set<std::uint32_t> edges;
-    for (std::size_t r = 0; r < g.rules.size(); ++r) {
-        const Rule& rule = g.rules[r];
-        CHECK(g.mandatoryGenes[r] >= 1 && g.mandatoryGenes[r] <= 1000000);
-        CHECK(g.mandatoryWords[r] >= rule.geneWords());
-        CHECK(rule.childOffsets <= 64 && rule.paramFloats <= 256);
-        std::uint32_t offsets = 0;
-        for (const Slot& s : rule.slots) {
-            CHECK(!s.rules.empty() && s.rules.size() == s.weights.size());
-            float totalWeight = 0;
-            for (std::size_t a = 0; a < s.rules.size(); ++a) {
-                CHECK(s.rules[a] < g.rules.size());
-                CHECK(s.weights[a] > 0 && std::isfinite(s.weights[a]));
-                totalWeight += s.weights[a];
-            }
-            CHECK(std::isfinite(totalWeight));
-            CHECK(s.probability >= 0 && s.probability <= 1);
-            CHECK(s.maxCount >= 1 && s.firstChild == offsets);
-            offsets += s.maxCount;
-            CHECK(s.edge < g.edgeCount && edges.insert(s.edge).second);
-        }
-        CHECK(offsets == rule.childOffsets);
-        std::uint32_t floats = 0;
-        for (const Param& p : rule.params) {
-            CHECK(p.first == floats && (p.dims == 1 || p.dims == 3));
-            floats += p.dims;
-            for (int c = 0; c < p.dims; ++c) {
-                const Prior& pr = p.prior[c];
-                CHECK(std::isfinite(pr.lo) && std::isfinite(pr.hi) && pr.lo <= pr.hi);
-                if (pr.kind == PriorKind::Normal) CHECK(pr.sigma > 0 && std::isfinite(pr.mu));
-                if (pr.kind == PriorKind::Int) CHECK(std::ceil(pr.lo) <= std::floor(pr.hi));
-                if (pr.kind == PriorKind::Choice)
-                    CHECK(pr.choiceCount >= 1 && pr.choiceBegin + pr.choiceCount <= g.choiceValues.size());
-            }
-        }
-        CHECK(floats == rule.paramFloats);
-        // Every compiled expression stays inside the code and evaluates within the stack limit
-        // (AddressSanitizer catches a push past the end of `stack`); parameter reads stay in the
-        // stored block or in the rule's frame values.
-        float params[2 * kFrameBase], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
-        for (std::size_t i = 0; i < 2 * kFrameBase; ++i) params[i] = 0.5f + float(i);
-        CHECK(rule.frameFloats <= kFrameBase);
-        auto checkExpression = [&](const ExprRef& e) {
-            CHECK(e.begin < e.end && e.end <= g.code.size());
-            for (std::uint32_t i = e.begin; i < e.end; ++i) {
-                if (g.code[i].op == OpCode::Param)
-                    CHECK(g.code[i].index < rule.paramFloats ||
-                          (g.code[i].index >= kFrameBase && g.code[i].index < kFrameBase + rule.frameFloats));
-                if (g.code[i].op == OpCode::ScopeSize || g.code[i].op == OpCode::ParentSize) CHECK(g.code[i].component < 3);
-            }
-            float stack[kMaxExpressionStack];
-            (void)evaluate(g, e, params, scope, parent, stack);
-        };
-        const std::size_t count = rule.statements.size();
-        for (std::size_t index = 0; index < count; ++index) {
-            const Statement& st = rule.statements[index];
-            int n = 0;
-            switch (st.kind) {
-            case StatementKind::Rotate: case StatementKind::If: case StatementKind::Extrude: n = 1; break;
-            case StatementKind::Primitive:  // a kind's arguments (cone top, roof top (x, z)): those it set
-                for (const ExprRef& e : st.expr)
-                    if (e.end > e.begin) checkExpression(e);
-                break;
-            case StatementKind::Scale: case StatementKind::Size: case StatementKind::Translate: case StatementKind::Color: n = 3; break;
-            case StatementKind::Let: n = st.axis; break;
-            case StatementKind::Texture: n = 2; break;
-            default: break;
-            }
-            if (st.kind == StatementKind::Child) CHECK(st.slot < rule.slots.size());
-            if (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Mesh) CHECK(st.slot < g.meshes.size());
-            if (st.kind == StatementKind::TerminalBegin) CHECK(st.end < count && rule.statements[st.end].kind == StatementKind::TerminalEnd);
-            if (st.kind == StatementKind::Rotate || st.kind == StatementKind::Mirror) CHECK(st.axis < 3);
-            if (st.kind == StatementKind::If || st.kind == StatementKind::Jump || st.kind == StatementKind::Pieces)
-                CHECK(st.end > index && st.end <= count);  // forward jumps only: derive always ends
-            if (st.kind == StatementKind::Let)
-                CHECK((st.axis == 1 || st.axis == 3) && st.slot >= kFrameBase && st.slot + st.axis <= kFrameBase + rule.frameFloats);
-            if (st.kind == StatementKind::Material) CHECK(st.slot < g.materialNames.size());
-            if (st.kind == StatementKind::Texture)
-                CHECK(st.slot < g.textures.size() && g.textures[st.slot].material < g.materialNames.size() &&
-                      !g.textures[st.slot].png.empty() && g.hasAppearance);
-            if (st.kind == StatementKind::Pieces) {
-                CHECK(st.slot < g.pieceLists.size());
-                const PieceList& list = g.pieceLists[st.slot];
-                CHECK(list.count >= 1 && list.first + list.count <= g.pieces.size() && list.axis < 3);
-                for (const ExprRef& e : list.arg)
-                    if (e.end > e.begin) checkExpression(e);
-                for (std::uint32_t k = 0; k < list.count; ++k) {
-                    const Piece& piece = g.pieces[list.first + k];
-                    CHECK(piece.begin > index && piece.begin <= piece.end && piece.end <= st.end);
-                    CHECK(piece.face < kFaces);
-                    if (list.kind == PiecesKind::Split) checkExpression(piece.value);
-                }
-            }
-            for (int c = 0; c < n; ++c) checkExpression(st.expr[c]);
-        }
-    }
-}
-
-}  // namespace
+#include "grammar_invariants.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace shapevo;
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
         const Grammar g = parseGrammar(text, "fuzz.grammar");
-        checkAccepted(g);
+        fuzz::checkAccepted(g);
     } catch (const InputError& e) {
-        checkLocated(e, text);
+        fuzz::checkLocated(e, text, "fuzz.grammar");
     }
     return 0;
 }

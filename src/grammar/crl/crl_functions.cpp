@@ -2,6 +2,7 @@
 // frame crl_translator.hpp defines (scope x = the component's X, y = its Z, z = its -Y; base at
 // -size.y / 2). Each emitter writes scope statements and then calls its successors inline;
 // grammars/castlemaker/README.md has the same table for users.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,12 @@ std::string num(double v) {
     char b[40];
     std::snprintf(b, sizeof b, "%.9g", v);
     return v < 0 ? std::string("(") + b + ")" : std::string(b);
+}
+/// A number as a message shows it (num() without the parentheses).
+std::string shown(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.9g", v);
+    return b;
 }
 
 /// Scale the frame by (sx, sy) across and by h up, about the centre of its base (the thesis's
@@ -38,7 +45,7 @@ std::vector<std::string> shares(Call& c, std::size_t first, std::size_t n, const
     std::vector<std::string> out;
     if (constant) {
         if (std::fabs(sum - 100.0) > 1e-3)
-            c.fail(c.args[first].where, std::string("the percentages of ") + what + " add up to " + num(sum) + ", not 100");
+            c.fail(c.args[first].where, std::string("the percentages of ") + what + " add up to " + shown(sum) + ", not 100");
         for (std::size_t k = first; k < first + n; ++k) out.push_back(num(c.args[k].value / 100.0));
         return out;
     }
@@ -103,20 +110,17 @@ void grid(Call& c, const std::vector<std::string>& xs, std::vector<std::string> 
     (void)randomShares;
 }
 
-std::vector<std::string> equalShares(Call& c, std::size_t k) {
-    if (!c.args[k].constant || c.args[k].value < 0 || c.args[k].value > 4095 || c.args[k].value != std::floor(c.args[k].value))
-        c.fail(c.args[k].where, "the number of splits must be a whole constant from 0 to 4095 (rand() is allowed here only "
-                                "with one successor)");
-    const int n = int(c.args[k].value) + 1;
-    return std::vector<std::string>(std::size_t(n), num(1.0 / n));
-}
-
 int constantCount(Call& c, std::size_t k, int lo, int hi, const char* what) {
     const Value& v = c.args[k];
     if (!v.constant || v.value < lo || v.value > hi || v.value != std::floor(v.value))
         c.fail(v.where, std::string(what) + " must be a whole constant from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                            (v.constant ? "" : " (rand() is not allowed here)"));
+                            (v.constant ? ", found " + shown(v.value) : " (rand() is not allowed here)"));
     return int(v.value);
+}
+
+std::vector<std::string> equalShares(Call& c, std::size_t k) {
+    const int n = constantCount(c, k, 0, 255, k == 0 ? "lot_split's number of splits in x" : "lot_split's number of splits in y") + 1;
+    return std::vector<std::string>(std::size_t(n), num(1.0 / n));
 }
 
 // --- lot rules (§3.7.1) ----------------------------------------------------------------------
@@ -175,7 +179,7 @@ void lotSplit(Call& c) {
         return;
     }
     if (c.args.size() == 2) return grid(c, equalShares(c, 0), equalShares(c, 1), Rows::Constant);
-    const int dx = constantCount(c, 0, 1, 256, "Divisions_x"), dy = constantCount(c, 1, 1, 256, "Divisions_y");
+    const int dx = constantCount(c, 0, 1, 256, "lot_split's Divisions_x"), dy = constantCount(c, 1, 1, 256, "lot_split's Divisions_y");
     if (c.args.size() != std::size_t(2 + dx + dy))
         c.fail(c.app.where, "lot_split takes 2 arguments (splits in x and y) or 2 + Divisions_x + Divisions_y (" +
                                 std::to_string(2 + dx + dy) + " here), this call gives " + std::to_string(c.args.size()));
@@ -197,7 +201,7 @@ void extrude(Call& c) {
     c.line(c.succ(0));
 }
 void comp(Call& c) {
-    const int n = constantCount(c, 0, 3, 64, "the number of side faces");
+    const int n = constantCount(c, 0, 3, 64, "comp's number of side faces");
     const std::size_t m = c.successors.size();
     auto side = [&](int k) { return m == 1 ? c.succ(0) : c.successors[1 + std::size_t(k) % (m - 1)]; };
     c.line("[ translate (0, scope.size.y, 0) " + c.succ(0) + " ]");  // the top: the frame moved up by its height
@@ -222,10 +226,11 @@ void comp(Call& c) {
     }
 }
 // --- subdivisions and splits ----------------------------------------------------------------
+std::string countOf(std::size_t n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 void subdivide(Call& c, char axis) {
     if (c.successors.size() != c.args.size())
-        c.fail(c.app.where, c.app.function + " has " + std::to_string(c.args.size()) + " percentages and " +
-                                std::to_string(c.successors.size()) + " successors; they must be as many");
+        c.fail(c.app.where, c.app.function + " has " + countOf(c.args.size(), "percentage") + " and " + countOf(c.successors.size(), "successor") +
+                                "; they must be as many");
     c.line(splitText(axis, shares(c, 0, c.args.size(), c.app.function.c_str()), c.successors));
 }
 void uniformSubdivide(Call& c, char axis) {
@@ -236,8 +241,8 @@ void uniformSubdivide(Call& c, char axis) {
 void repeatSubdivide(Call& c, char axis) {
     const std::size_t n = c.args.size() - 1;
     if (c.successors.size() != n)
-        c.fail(c.app.where, c.app.function + " has " + std::to_string(n) + " percentages and " + std::to_string(c.successors.size()) +
-                                " successors; they must be as many");
+        c.fail(c.app.where, c.app.function + " has " + countOf(n, "percentage") + " and " + countOf(c.successors.size(), "successor") +
+                                "; they must be as many");
     std::vector<std::string> parts;
     {
         Call inner{c.t, c.app, std::vector<Value>(c.args.begin() + 1, c.args.end()), c.successors, false};
@@ -334,8 +339,8 @@ const Function kFunctions[] = {
 };
 
 void lotSplitRand(Call& c) {
-    const int nx = constantCount(c, 0, 0, 255, "the number of splits in x") + 1;
-    const int ny = constantCount(c, 1, 0, 255, "the number of splits in y") + 1;
+    const int nx = constantCount(c, 0, 0, 255, "lot_split_rand's number of splits in x") + 1;
+    const int ny = constantCount(c, 1, 0, 255, "lot_split_rand's number of splits in y") + 1;
     std::vector<std::string> xs, names;
     std::string total;
     for (int k = 0; k < nx && nx > 1; ++k) {  // each column's share uniform(0.25, 1), normalised
@@ -399,6 +404,28 @@ const Function* findFunction(const std::string& name) {
     for (const Function& f : kFunctions)
         if (name == f.name) return &f;
     return nullptr;
+}
+
+std::string similarFunction(const std::string& name) {
+    if (name.size() > 64) return "";
+    std::string best;
+    std::size_t bestDistance = 3;
+    for (const Function& f : kFunctions) {  // Levenshtein distance, one row at a time
+        const std::string w = f.name;
+        std::vector<std::size_t> row(w.size() + 1);
+        for (std::size_t j = 0; j <= w.size(); ++j) row[j] = j;
+        for (std::size_t i = 1; i <= name.size(); ++i) {
+            std::size_t diagonal = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= w.size(); ++j) {
+                const std::size_t up = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (name[i - 1] == w[j - 1] ? 0 : 1)});
+                diagonal = up;
+            }
+        }
+        if (row[w.size()] < bestDistance) bestDistance = row[w.size()], best = w;
+    }
+    return best;
 }
 
 std::string functionNames() {

@@ -88,6 +88,8 @@ private:
         }
     }
     void advance() {
+        endLine_ = line_;  // just past the token being left
+        endColumn_ = column_;
         skip();
         Token t;
         t.line = line_;
@@ -116,8 +118,11 @@ private:
                 if (at() == '+' || at() == '-') step();
                 while (std::isdigit(static_cast<unsigned char>(at()))) step();
             }
-            if (std::isalnum(static_cast<unsigned char>(at())) || at() == '_' || at() == '.')
-                fail(t.line, t.column, "malformed number '" + shortened(text_.substr(start, pos_ - start + 1)) + "'");
+            if (std::isalnum(static_cast<unsigned char>(at())) || at() == '_' || at() == '.') {
+                std::size_t stop = pos_;  // show the whole run, as in 1.2.3 or 3x
+                while (stop < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[stop])) || text_[stop] == '_' || text_[stop] == '.')) ++stop;
+                fail(t.line, t.column, "malformed number '" + shortened(text_.substr(start, stop - start)) + "'");
+            }
             t.kind = Kind::Number;
             t.text = text_.substr(start, pos_ - start);
             t.number = std::strtod(t.text.c_str(), nullptr);
@@ -162,6 +167,17 @@ private:
     void expect(char c, const std::string& what) {
         if (!tok_.is(c)) expected(std::string("'") + c + "' " + what);
         advance();
+    }
+    /// The ';' that ends a rule or an attr. A missing one is reported just past the statement's
+    /// last token when the next token is on a later line; a bare successor that is really the
+    /// handle of the next rule (`L = rect(...)` then `L -> ...`) is reported as such.
+    void endStatement(const std::string& what) {
+        if (tok_.is(';')) return advance();
+        if (bare_ && (tok_.kind == Kind::Arrow || tok_.is('=')))
+            fail(bareEnd_.line, bareEnd_.column, "expected ';' " + what + ", found '" + shortened(bareHandle_.text) + "' at line " +
+                                                     std::to_string(bareHandle_.line) + ", which starts the next rule");
+        if (tok_.line > endLine_) fail(endLine_, endColumn_, "expected ';' " + what + ", found " + describe(tok_) + " at line " + std::to_string(tok_.line));
+        expected("';' " + what);
     }
 
     // --- parser ------------------------------------------------------------------------------
@@ -215,6 +231,7 @@ private:
 
     Application application() {
         Application app;
+        bare_ = false;
         if (tok_.is('[')) {
             app.weighted = true;
             take();
@@ -254,12 +271,15 @@ private:
             take();
         } else if (tok_.kind == Kind::Word && isHandle(tok_.text)) {
             app.successors.push_back({tok_.text, here()});
-            take();
+            bareEnd_ = {path_, endLine_, endColumn_};
+            bareHandle_ = take();
+            bare_ = true;
         }
         return app;
     }
 
     void item(File& f) {
+        bare_ = false;
         if (tok_.isWord("attr")) {
             take();
             Attr a;
@@ -272,7 +292,7 @@ private:
                                                            shortened(a.name) + "'");
             expect('=', "after the attr name");
             a.value = signedNumber("the attr's value (a number)");
-            expect(';', "after the attr definition");
+            endStatement("after the attr definition");
             f.attrs.push_back(a);
             return;
         }
@@ -310,7 +330,7 @@ private:
         } else {
             expected("'->' (or '→') or '=' after the handle " + shortened(r.predecessor));
         }
-        expect(';', "to end the rule");
+        endStatement("to end the rule");
         f.rules.push_back(std::move(r));
     }
 
@@ -318,7 +338,11 @@ private:
     std::string path_;
     std::size_t pos_ = 0;
     int line_ = 1, column_ = 1;
+    int endLine_ = 1, endColumn_ = 1;  ///< just past the last token taken
     Token tok_;
+    bool bare_ = false;  ///< the last application ended with a bare successor (no braces)
+    Token bareHandle_;
+    Location bareEnd_;   ///< just past the token before it
 };
 
 }  // namespace

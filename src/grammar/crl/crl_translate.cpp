@@ -19,7 +19,6 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <sstream>
 
 #include "base/input_error.hpp"
@@ -36,16 +35,22 @@ std::string num(double v) {
     std::snprintf(b, sizeof b, "%.9g", v);
     return v < 0 ? std::string("(") + b + ")" : std::string(b);
 }
+/// A number as a message shows it (num() without the parentheses).
+std::string shown(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.9g", v);
+    return b;
+}
 std::string at(const Location& l) { return std::to_string(l.line) + ":" + std::to_string(l.column); }
 [[noreturn]] void failAt(const Location& l, const std::string& what) { throw InputError(l.file, at(l), what); }
 
-std::string readText(const std::string& path, const Location* from, const char* what) {
+/// The text of the rule file `path`, named `written` (as the rule file wrote it) at `from` if it cannot be read.
+std::string readText(const std::string& path, const Location& from, const char* what, const std::string& written) {
     std::error_code ec;
-    std::ifstream in(path, std::ios::binary);
-    if (fs::is_directory(path, ec) || !in) {
-        if (from) failAt(*from, std::string("cannot open ") + what + " '" + shortened(path) + "'");
-        throw InputError(path, "", std::string("cannot open ") + what);
-    }
+    std::ifstream in;
+    if (fs::is_regular_file(path, ec)) in.open(path, std::ios::binary);  // never a folder, a device or a pipe
+    if (!in.is_open() || !in)
+        failAt(from, std::string("cannot open ") + what + " '" + shortened(written) + "' (looked for " + shortened(path, 200) + ")");
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();
@@ -73,6 +78,8 @@ public:
 
     void run(const std::string& text, const std::string& path) {
         Unit& u = units_.emplace_back();
+        inserting_.push_back(fs::weakly_canonical(fs::path(path)).string());  // an inserted file may insert this one
+        insertingNames_.push_back(fs::path(path).filename().generic_string());
         load(u, text, path, nullptr);
         for (const auto& [name, v] : overrides_)
             if (u.attrValue.count(name)) u.attrValue[name] = v;
@@ -102,7 +109,7 @@ public:
         const fs::path full = fs::path(from.file).parent_path() / file;
         std::error_code ec;
         if (!fs::is_regular_file(full, ec)) failAt(from, std::string("cannot open ") + what + " '" + shortened(file) + "' (looked for " + shortened(full.string(), 200) + ")");
-        return fs::path(full).lexically_relative(mainDir_.empty() ? fs::path(".") : mainDir_).generic_string();
+        return full.lexically_normal().lexically_relative(mainDir_.empty() ? fs::path(".") : mainDir_).generic_string();
     }
     double objectHeight(const Location& from, const std::string& file) {
         try {
@@ -119,10 +126,14 @@ public:
     }
     std::string insertedModel(const Location& from, const std::string& file, bool textured, bool local) {
         const std::string key = file + (textured ? "#t" : "#-") + (local ? "l" : "-");
-        if (auto it = models_.find(key); it != models_.end()) return it->second;
         const std::string canonical = fs::weakly_canonical(mainDir_ / file).string();
-        if (std::find(inserting_.begin(), inserting_.end(), canonical) != inserting_.end())
-            failAt(from, "rule files insert each other without end: '" + shortened(file) + "' is already being inserted");
+        if (std::find(inserting_.begin(), inserting_.end(), canonical) != inserting_.end()) {
+            std::string chain;
+            for (auto it = std::find(inserting_.begin(), inserting_.end(), canonical); it != inserting_.end(); ++it)
+                chain += insertingNames_[std::size_t(it - inserting_.begin())] + " -> ";
+            failAt(from, "insert cycle: " + chain + shortened(file) + " (rule files that insert each other never end)");
+        }
+        if (auto it = models_.find(key); it != models_.end()) return it->second;
         const std::string prefix = "I" + std::to_string(models_.size() + 1) + "__";
         models_[key] = prefix + "model";
         Unit& u = units_.emplace_back();
@@ -130,8 +141,9 @@ public:
         u.looks = textured ? Looks::Keep : Looks::Drop;
         u.sharedMaterials = local;
         inserting_.push_back(canonical);
+        insertingNames_.push_back(file);
         const std::string path = (mainDir_ / file).generic_string();
-        load(u, readText(path, &from, "inserted rule file"), path, &from);
+        load(u, readText(path, from, "inserted rule file", file), path, &from);
         for (const Attr* a : u.attrs) attrLines_.push_back({a->where, "attr " + u.prefix + a->name + " = " + num(a->value)});
         std::vector<Line>* saved = cur_;
         const Location savedWhere = where_;
@@ -142,6 +154,7 @@ public:
         where_ = savedWhere;
         unit_ = savedUnit;
         inserting_.pop_back();
+        insertingNames_.pop_back();
         return models_[key];
     }
     std::string helper(const std::string& key, const std::function<void()>& body) {
@@ -199,7 +212,7 @@ private:
         }
         for (const Include& inc : f.includes) {
             const std::string child = (fs::path(path).parent_path() / inc.path).generic_string();
-            load(u, readText(child, &inc.where, "included rule file"), child, &inc.where);
+            load(u, readText(child, inc.where, "included rule file", inc.path), child, &inc.where);
         }
         for (const RuleDef& r : f.rules) {
             if (r.predecessor.find("__") != std::string::npos)
@@ -217,7 +230,11 @@ private:
 
     void check(const Unit& u, const Application& app, bool direct) {
         const Function* f = findFunction(app.function);
-        if (!f) failAt(app.where, "unknown function '" + shortened(app.function) + "': expected one of " + functionNames());
+        if (!f) {
+            const std::string near = similarFunction(app.function);
+            failAt(app.where, "unknown function '" + shortened(app.function) + "'" + (near.empty() ? "" : " (did you mean " + near + "?)") +
+                                  ": expected one of " + functionNames());
+        }
         const bool lot = app.function == "rect" || app.function == "circ";
         if (direct && !lot) failAt(app.where, "a direct rule (Handle = ...) makes a lot with rect(x1, y1, x2, y2) or circ(cx, cy, r), not " + app.function);
         if (!direct && lot) failAt(app.where, app.function + " makes a direct lot: write Handle = " + app.function + "(...);");
@@ -225,7 +242,7 @@ private:
         const std::size_t lo = T - std::size_t(f->optionalArgs);
         if (n < lo || (!f->variadic && n > T)) {
             std::string want = f->variadic ? "at least " + std::to_string(lo) : lo == T ? std::to_string(T) : std::to_string(lo) + " to " + std::to_string(T);
-            failAt(app.where, app.function + " takes " + want + " argument" + (want == "1" ? "" : "s") + ", this call gives " + std::to_string(n));
+            failAt(app.where, app.function + " takes " + want + " argument" + (lo == 1 && (T == 1 || f->variadic) ? "" : "s") + ", this call gives " + std::to_string(n));
         }
         const int s = int(app.successors.size());
         if (s < f->minSuccessors)
@@ -241,79 +258,116 @@ private:
         double sum = 0;
         for (const Application& a : d.alternatives) {
             if (!a.weighted) failAt(a.where, "every alternative of a stochastic rule has a probability: [p] " + a.function + "(...)");
-            if (!(a.probability >= 0 && a.probability <= 1)) failAt(a.probabilityAt, "a probability lies in [0, 1], found " + num(a.probability));
+            if (!(a.probability >= 0 && a.probability <= 1)) failAt(a.probabilityAt, "a probability lies in [0, 1], found " + shown(a.probability));
             sum += a.probability;
         }
         if (std::fabs(sum - 1.0) > 1e-4)
-            failAt(d.alternatives[0].probabilityAt, "the probabilities of this stochastic rule add up to " + num(sum) + ", not 1 (castlemaker-crl.txt §3.7.4)");
+            failAt(d.alternatives[0].probabilityAt, "the probabilities of this stochastic rule add up to " + shown(sum) + ", not 1 (castlemaker-crl.txt §3.7.4)");
     }
 
     /// Which stochastic rules lead back to their own predecessor (they become child slots), and
     /// that no cycle is left among the rules called inline.
     void analyse(Unit& u) {
-        std::map<std::string, int> index, low, comp;
-        std::vector<std::string> stack;
-        std::map<std::string, bool> onStack;
-        int counter = 0, comps = 0;
-        std::function<void(const std::string&)> strong = [&](const std::string& h) {
-            index[h] = low[h] = counter++;
-            stack.push_back(h);
-            onStack[h] = true;
-            for (const RuleDef* d : u.handles[h])
+        // Both walks keep their own stacks: a chain of 100,000 handles must not overflow the C++ stack.
+        const std::size_t n = u.order.size();
+        std::map<std::string, int> id;
+        for (std::size_t v = 0; v < n; ++v) id[u.order[v]] = int(v);
+        std::vector<std::vector<const Successor*>> next(n), inlineNext(n);  // every successor; those called inline
+        std::vector<std::vector<const RuleDef*>> stochasticDefs(n);
+        for (std::size_t v = 0; v < n; ++v)
+            for (const RuleDef* d : u.handles[u.order[v]]) {
+                if (stochastic(*d)) stochasticDefs[v].push_back(d);
                 for (const Application& a : d->alternatives)
-                    for (const Successor& s : a.successors) {
-                        if (!index.count(s.handle)) {
-                            strong(s.handle);
-                            low[h] = std::min(low[h], low[s.handle]);
-                        } else if (onStack[s.handle]) {
-                            low[h] = std::min(low[h], index[s.handle]);
-                        }
-                    }
-            if (low[h] == index[h]) {
-                std::string w;
-                do {
-                    w = stack.back();
-                    stack.pop_back();
-                    onStack[w] = false;
-                    comp[w] = comps;
-                } while (w != h);
-                ++comps;
+                    for (const Successor& s : a.successors) next[v].push_back(&s);
             }
+        // Strongly connected components (Tarjan).
+        std::vector<int> index(n, -1), low(n, 0), comp(n, -1), stack;
+        std::vector<char> onStack(n, 0);
+        struct Frame {
+            int v;
+            std::size_t k;
         };
-        for (const std::string& h : u.order)
-            if (!index.count(h)) strong(h);
-        for (const std::string& h : u.order)
-            for (const RuleDef* d : u.handles[h]) {
-                if (!stochastic(*d)) continue;
+        std::vector<Frame> calls;
+        int counter = 0, comps = 0;
+        auto enter = [&](int v) {
+            index[std::size_t(v)] = low[std::size_t(v)] = counter++;
+            stack.push_back(v);
+            onStack[std::size_t(v)] = 1;
+            calls.push_back({v, 0});
+        };
+        for (std::size_t root = 0; root < n; ++root) {
+            if (index[root] >= 0) continue;
+            enter(int(root));
+            while (!calls.empty()) {
+                Frame& f = calls.back();
+                const std::size_t v = std::size_t(f.v);
+                if (f.k < next[v].size()) {
+                    const int w = id.at(next[v][f.k++]->handle);
+                    if (index[std::size_t(w)] < 0) enter(w);  // f may dangle now
+                    else if (onStack[std::size_t(w)]) low[v] = std::min(low[v], index[std::size_t(w)]);
+                    continue;
+                }
+                calls.pop_back();
+                if (!calls.empty()) low[std::size_t(calls.back().v)] = std::min(low[std::size_t(calls.back().v)], low[v]);
+                if (low[v] == index[v]) {
+                    int w;
+                    do {
+                        w = stack.back();
+                        stack.pop_back();
+                        onStack[std::size_t(w)] = 0;
+                        comp[std::size_t(w)] = comps;
+                    } while (w != int(v));
+                    ++comps;
+                }
+            }
+        }
+        for (std::size_t v = 0; v < n; ++v)
+            for (const RuleDef* d : stochasticDefs[v])
                 for (const Application& a : d->alternatives)
                     for (const Successor& s : a.successors)
-                        if (comp[s.handle] == comp[h]) recursive_.insert(d);
-            }
-        // Inline calls must not cycle: depth first over the edges that stay inline.
-        std::map<std::string, int> mark;
-        std::vector<std::pair<std::string, const Successor*>> path;
-        std::function<void(const std::string&)> visit = [&](const std::string& h) {
-            mark[h] = 1;
-            for (const RuleDef* d : u.handles[h]) {
+                        if (comp[std::size_t(id.at(s.handle))] == comp[v]) recursive_.insert(d);
+        for (std::size_t v = 0; v < n; ++v)
+            for (const RuleDef* d : u.handles[u.order[v]]) {
                 if (recursive_.count(d)) continue;
                 for (const Application& a : d->alternatives)
-                    for (const Successor& s : a.successors) {
-                        path.push_back({h, &s});
-                        if (mark[s.handle] == 1) {
-                            std::string text;
-                            auto from = std::find_if(path.begin(), path.end(), [&](const auto& e) { return e.first == s.handle; });
-                            for (auto it = from; it != path.end(); ++it) text += it->first + " -> ";
-                            failAt(s.where, "recursion never ends: " + text + s.handle +
-                                                " and no rule on the way is stochastic (a recursive rule must be, castlemaker-crl.txt ch. 4-5)");
-                        }
-                        if (mark[s.handle] == 0) visit(s.handle);
-                        path.pop_back();
-                    }
+                    for (const Successor& s : a.successors) inlineNext[v].push_back(&s);
             }
-            mark[h] = 2;
-        };
-        for (const std::string& h : u.order)
-            if (mark[h] == 0) visit(h);
+        // Inline calls must not cycle: depth first over the edges that stay inline.
+        std::vector<char> mark(n, 0);  // 0 new, 1 on the path, 2 done
+        for (std::size_t root = 0; root < n; ++root) {
+            if (mark[root]) continue;
+            mark[root] = 1;
+            calls.push_back({int(root), 0});
+            while (!calls.empty()) {
+                Frame& f = calls.back();
+                const std::size_t v = std::size_t(f.v);
+                if (f.k == inlineNext[v].size()) {
+                    mark[v] = 2;
+                    calls.pop_back();
+                    continue;
+                }
+                const Successor& s = *inlineNext[v][f.k++];
+                const int w = id.at(s.handle);
+                if (mark[std::size_t(w)] == 1) {
+                    auto from = std::find_if(calls.begin(), calls.end(), [&](const Frame& e) { return e.v == w; });
+                    std::string text;
+                    const std::size_t length = std::size_t(calls.end() - from);
+                    for (std::size_t k = 0; k < length; ++k) {
+                        if (length > 12 && k == 5) {
+                            text += "... (" + std::to_string(length - 10) + " more) -> ";
+                            k = length - 5;
+                        }
+                        text += shortened(u.order[std::size_t(from[std::ptrdiff_t(k)].v)]) + " -> ";
+                    }
+                    failAt(s.where, "recursion never ends: " + text + shortened(s.handle) +
+                                        " and no rule on the way is stochastic (a recursive rule must be, castlemaker-crl.txt ch. 4-5)");
+                }
+                if (mark[std::size_t(w)] == 0) {
+                    mark[std::size_t(w)] = 1;
+                    calls.push_back({w, 0});
+                }
+            }
+        }
     }
 
     // --- emission ----------------------------------------------------------------------------
@@ -399,7 +453,9 @@ private:
             return std::pair{num(b.number), b.number};
         };
         if (type == ArgType::String) {
-            if (a.kind != ArgKind::String) failAt(a.where, function + " expects a \"string\" here");
+            if (a.kind != ArgKind::String)
+                failAt(a.where, function + " expects a \"string\" here (a name or a file in quotes), found " +
+                                    (a.kind == ArgKind::Number ? "number " + shown(a.number) : a.kind == ArgKind::Rand ? std::string("rand(...)") : "'" + shortened(a.text) + "' (not in quotes)"));
             v.text = a.text;
             v.constant = true;
             return v;
@@ -413,16 +469,16 @@ private:
             v.value = value;
             v.constant = true;
             if (type != ArgType::Real && value != std::floor(value))
-                failAt(a.where, function + " expects a whole number here, found " + num(value));
-            if (type == ArgType::Bool && value != 0 && value != 1) failAt(a.where, function + " expects 0 or 1 here, found " + num(value));
+                failAt(a.where, function + " expects a whole number here, found " + shown(value));
+            if (type == ArgType::Bool && value != 0 && value != 1) failAt(a.where, function + " expects 0 or 1 here, found " + shown(value));
             return v;
         }
         case ArgKind::Rand: {
             const auto [lo, loValue] = bound(a.bounds[0]);
             const auto [hi, hiValue] = bound(a.bounds[1]);
-            if (loValue > hiValue) failAt(a.where, "rand(a, b) needs a <= b, found rand(" + num(loValue) + ", " + num(hiValue) + ")");
+            if (loValue > hiValue) failAt(a.where, "rand(a, b) needs a <= b, found rand(" + shown(loValue) + ", " + shown(hiValue) + ")");
             if (type != ArgType::Real && std::floor(hiValue) < std::ceil(loValue))
-                failAt(a.where, "rand(" + num(loValue) + ", " + num(hiValue) + ") holds no whole number, but " + function + " needs one here");
+                failAt(a.where, "rand(" + shown(loValue) + ", " + shown(hiValue) + ") holds no whole number, but " + function + " needs one here");
             if (type != ArgType::Real && (std::fabs(loValue) > 16777216 || std::fabs(hiValue) > 16777216))
                 failAt(a.where, "a whole-number rand lies within +-16777216");
             v.expr = declareParam(std::string(type == ArgType::Real ? "uniform(" : "int(") + lo + ", " + hi + ")");
@@ -478,7 +534,7 @@ private:
     Translation& out_;
     std::deque<Unit> units_;
     Unit* unit_ = nullptr;
-    std::vector<std::string> stack_, inserting_;
+    std::vector<std::string> stack_, inserting_, insertingNames_;  ///< inserting_: canonical; its names relative to the main folder
     std::set<const RuleDef*> recursive_;
     std::deque<std::vector<Line>> pending_;
     std::vector<Line>* cur_ = nullptr;

@@ -93,5 +93,7 @@ std::string helperRule(Translator& t, const std::string& key, const std::functio
 std::string materialName(const Translator& t, const std::string& name);
 /// Every function's name, for messages.
 std::string functionNames();
+/// The function whose name is nearest to a misspelt `name` (at most two edits), or "".
+std::string similarFunction(const std::string& name);
 
 }  // namespace shapevo::crl
