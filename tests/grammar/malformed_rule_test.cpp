@@ -75,8 +75,9 @@ const std::vector<MalformedRule>& cases() {
          "rand(a, b) needs a <= b, found rand(5, -2)"},
         {"RandWithoutWholeNumber", lotThen("L -> uniform_subdiv(rand(1.2, 1.8)) {A};\n" + kA), "bad.rule:2:21",
          "rand(1.2, 1.8) holds no whole number, but uniform_subdiv needs one here"},
-        {"RandAsLotSplitCount", lotThen("L -> lot_split(rand(1, 3), 2) {A};\n" + kA), "bad.rule:2:16",
-         "lot_split's number of splits in x must be a whole constant from 0 to 255 (rand() is not allowed here)"},
+        {"RandAsLotSplitCountWithSeveralSuccessors", lotThen("L -> lot_split(rand(1, 3), 2) {A | A};\n" + kA), "bad.rule:2:16",
+         "lot_split's number of splits is rand() here, which needs a single successor (with several, their round robin needs "
+         "constant counts)"},
         {"LotSplitCountTooLarge", lotThen("L -> lot_split(1, 5000) {A};\n" + kA), "bad.rule:2:19",
          "lot_split's number of splits in y must be a whole constant from 0 to 255, found 5000"},
         {"RandAsCompFaceCount", lotThen("L -> comp(rand(3, 6)) {A};\n" + kA), "bad.rule:2:11",
@@ -212,11 +213,10 @@ const std::vector<MalformedFiles>& fileCases() {
          "cannot open texture 'data/stone.png' (looked for {dir}/data/stone.png)"},
         // The .grammar language has no texture statement yet: an add_texture whose file exists
         // is refused where it stands, by the statement it translates to.
-        {"TextureStatementNotInTheLanguageYet",
+        {"TextureFileThatIsNotAPng",
          {{"main.rule", lotThen("L -> add_texture(\"stone\", \"stone.png\", 2, 1) {A};\n" + kA)}, {"stone.png", "png"}}, "main.rule:2:6",
-         "unknown statement 'texture': expected param, let, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, "
-         "roof, paraboloid, color, material, extrude, split, repeat, comp, lot, center, corners, edges, if, case, terminal, child or "
-         "the name of a rule to run inline (in its translation to the shapevo language: texture \"stone\" \"stone.png\" (2, 1))"},
+         "texture 'stone.png' is not a PNG (it does not start with the PNG signature) (in its translation to the shapevo language: "
+         "texture \"stone\" \"stone.png\" (2, 1))"},
         {"MissingInsertedRuleFile", {{"main.rule", lotThen("L -> insert(\"door.rule\");\n")}}, "main.rule:2:13",
          "cannot open rule file 'door.rule' (looked for {dir}/door.rule)"},
         {"InsertedRuleFileWithoutLot", {{"main.rule", lotThen("L -> insert(\"door.rule\");\n")}, {"door.rule", "attr w = 1;\n"}},

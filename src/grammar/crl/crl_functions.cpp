@@ -173,7 +173,10 @@ void edges(Call& c) {
     }
 }
 void lotSplit(Call& c) {
-    if (c.args.size() == 2 && (!c.args[0].constant || !c.args[1].constant) && c.successors.size() == 1) {
+    if (c.args.size() == 2 && (!c.args[0].constant || !c.args[1].constant)) {
+        if (c.successors.size() > 1)
+            c.fail(c.args[c.args[0].constant ? 1 : 0].where, "lot_split's number of splits is rand() here, which needs a single "
+                                                              "successor (with several, their round robin needs constant counts)");
         // rand() counts: equal lots in a repeat along each axis (one successor: no round robin to keep)
         c.line("repeat x count " + p(c.args[0].expr) + " + 1 { repeat z count " + p(c.args[1].expr) + " + 1 " + c.succ(0) + " }");
         return;
