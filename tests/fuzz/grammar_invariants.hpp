@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <set>
 #include <string>
 
@@ -19,9 +20,9 @@ namespace shapevo::fuzz {
     std::fprintf(stderr, "fuzz target: invariant broken: %s\n", what);
     std::abort();
 }
-#define FUZZ_CHECK(cond)             \
-    do {                             \
-        if (!(cond)) broken(#cond);  \
+#define FUZZ_CHECK(cond)                              \
+    do {                                              \
+        if (!(cond)) ::shapevo::fuzz::broken(#cond);  \
     } while (0)
 
 /// An error must start with "FILE:LINE:COL: " and point inside `text`, FILE's text (or just past
@@ -90,8 +91,12 @@ inline void checkAccepted(const Grammar& g) {
         // Every compiled expression stays inside the code and evaluates within the stack limit
         // (AddressSanitizer catches a push past the end of `stack`); parameter reads stay in the
         // stored block or in the rule's frame values.
-        float params[2 * kFrameBase], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
-        for (std::size_t i = 0; i < 2 * kFrameBase; ++i) params[i] = 0.5f + float(i);
+        // The block derive evaluates with: stored floats, frame values, then the piece key that
+        // `per piece` parameters (OpCode::Fresh) read.
+        float params[kPieceKeySlot + 1], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
+        for (std::size_t i = 0; i < kPieceKeySlot; ++i) params[i] = 0.5f + float(i);
+        const std::uint32_t pieceKey = 12345;
+        std::memcpy(&params[kPieceKeySlot], &pieceKey, sizeof pieceKey);
         FUZZ_CHECK(rule.frameFloats <= kFrameBase);
         auto checkExpression = [&](const ExprRef& e) {
             FUZZ_CHECK(e.begin < e.end && e.end <= g.code.size());

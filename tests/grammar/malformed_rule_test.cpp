@@ -124,6 +124,8 @@ const std::vector<MalformedRule>& cases() {
         {"RectInAnIndirectRule", lotThen("L -> rect(0, 0, 1, 1);\n"), "bad.rule:2:6", "rect makes a direct lot: write Handle = rect(...);"},
         {"ExtrudeInADirectRule", "L = extrude(3);\n", "bad.rule:1:5",
          "a direct rule (Handle = ...) makes a lot with rect(x1, y1, x2, y2) or circ(cx, cy, r), not extrude"},
+        {"LotWithASuccessor", "L = rect(0, 0, 10, 10) {A};\n" + kA, "bad.rule:1:25",
+         "rect makes a lot, which takes no successor: its rules follow as Handle -> function(...) {...};"},
         {"NoDirectLot", "L -> extrude(1) {A};\n" + kA, "bad.rule:1:1",
          "no lot: a rule file needs a direct lot (Handle = rect(x1, y1, x2, y2); or circ(cx, cy, r);)"},
         {"EmptyFile", "", "bad.rule:1:1", "no lot: a rule file needs a direct lot (Handle = rect(x1, y1, x2, y2); or circ(cx, cy, r);)"},

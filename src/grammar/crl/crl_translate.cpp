@@ -249,7 +249,8 @@ private:
             failAt(app.where, app.function + " needs " + (f->minSuccessors == 1 ? "a successor {Handle}" : std::to_string(f->minSuccessors) + " successors"));
         if (f->maxSuccessors >= 0 && s > f->maxSuccessors)
             failAt(app.successors[std::size_t(f->maxSuccessors)].where,
-                   app.function + (f->maxSuccessors == 0 ? " is a terminal and takes no successor" : " takes at most " + std::to_string(f->maxSuccessors) + " successor" + (f->maxSuccessors == 1 ? "" : "s")));
+                   app.function + (lot ? " makes a lot, which takes no successor: its rules follow as Handle -> function(...) {...};"
+                                   : f->maxSuccessors == 0 ? " is a terminal and takes no successor" : " takes at most " + std::to_string(f->maxSuccessors) + " successor" + (f->maxSuccessors == 1 ? "" : "s")));
         for (const Successor& sc : app.successors)
             if (!u.handles.count(sc.handle)) failAt(sc.where, "handle '" + shortened(sc.handle) + "' is never defined (no rule " + shortened(sc.handle) + " -> ...; and no lot " + shortened(sc.handle) + " = ...;)");
     }
