@@ -19,6 +19,8 @@
 #include "grammar/parser.hpp"
 #include "mesh/glb_writer.hpp"
 
+#include "run_derive.hpp"
+
 namespace {
 
 using namespace shapevo;
@@ -44,22 +46,7 @@ Chromosome castleSample(const Grammar& g) {
     }
 }
 
-void runDerive(benchmark::State& state, const Grammar& g, const Chromosome& c) {
-    DeriveScratch scratch;
-    Geometry geometry;
-    derive(g, c, geometry, scratch);
-    std::uint64_t primitives = 0;
-    for (auto _ : state) {
-        derive(g, c, geometry, scratch);
-        benchmark::DoNotOptimize(geometry.primitives.data());
-        benchmark::ClobberMemory();
-        primitives += geometry.primitives.size();
-    }
-    state.SetItemsProcessed(state.iterations());
-    state.counters["genes"] = double(c.genes);
-    state.counters["primitives"] = double(geometry.primitives.size());
-    state.counters["primitives/s"] = benchmark::Counter(double(primitives), benchmark::Counter::kIsRate);
-}
+using bench::runDerive;
 
 void BM_DeriveToyCastleRule(benchmark::State& state) {
     const Grammar& g = load("grammars/castlemaker/toy-castle.rule");

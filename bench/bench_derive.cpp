@@ -19,6 +19,8 @@
 
 #include "breadth_first_tree.hpp"
 
+#include "run_derive.hpp"
+
 namespace {
 
 using namespace shapevo;
@@ -69,23 +71,7 @@ const Grammar& street() {
     return g;
 }
 
-void runDerive(benchmark::State& state, const Grammar& g, const Chromosome& c) {
-    DeriveScratch scratch;
-    Geometry geometry;
-    derive(g, c, geometry, scratch);  // warm the buffers
-    const std::size_t primitivesPerDerivation = geometry.primitives.size();
-    std::uint64_t primitives = 0;
-    for (auto _ : state) {
-        derive(g, c, geometry, scratch);
-        benchmark::DoNotOptimize(geometry.primitives.data());
-        benchmark::ClobberMemory();
-        primitives += geometry.primitives.size();
-    }
-    state.SetItemsProcessed(state.iterations());
-    state.counters["primitives/s"] = benchmark::Counter(double(primitives), benchmark::Counter::kIsRate);
-    state.counters["genes"] = double(c.genes);
-    state.counters["primitives"] = double(primitivesPerDerivation);
-}
+using bench::runDerive;
 
 void BM_DeriveSpaceship(benchmark::State& state) {
     runDerive(state, spaceship(), grown(spaceship(), std::uint32_t(state.range(0)), 42));

@@ -14,17 +14,7 @@ namespace shapevo::crl {
 namespace {
 
 std::string p(const std::string& e) { return "(" + e + ")"; }
-std::string num(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.9g", v);
-    return v < 0 ? std::string("(") + b + ")" : std::string(b);
-}
-/// A number as a message shows it (num() without the parentheses).
-std::string shown(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.9g", v);
-    return b;
-}
+std::string num(double v) { return number(v); }
 
 /// Scale the frame by (sx, sy) across and by h up, about the centre of its base (the thesis's
 /// T * diag(sx, sy, h)).
@@ -402,6 +392,13 @@ void insert(Call& c) {
 }
 
 }  // namespace
+
+std::string shown(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.9g", v);
+    return b;
+}
+std::string number(double v) { return v < 0 ? "(" + shown(v) + ")" : shown(v); }
 
 const Function* findFunction(const std::string& name) {
     for (const Function& f : kFunctions)

@@ -30,17 +30,7 @@ namespace shapevo::crl {
 namespace fs = std::filesystem;
 
 namespace {
-std::string num(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.9g", v);
-    return v < 0 ? std::string("(") + b + ")" : std::string(b);
-}
-/// A number as a message shows it (num() without the parentheses).
-std::string shown(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.9g", v);
-    return b;
-}
+std::string num(double v) { return number(v); }
 std::string at(const Location& l) { return std::to_string(l.line) + ":" + std::to_string(l.column); }
 [[noreturn]] void failAt(const Location& l, const std::string& what) { throw InputError(l.file, at(l), what); }
 

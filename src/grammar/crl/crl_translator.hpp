@@ -33,6 +33,12 @@ struct Translation {
 /// @throw InputError at file:line:column for every problem the rule file has.
 Translation translateCrl(const std::string& text, const std::string& path, const std::map<std::string, double>& attrs);
 
+/// `v` as the translation writes it (9 significant digits; a negative number in parentheses, so
+/// that it can stand anywhere in an expression).
+std::string number(double v);
+/// `v` as a message shows it (9 significant digits, no parentheses).
+std::string shown(double v);
+
 /// Argument types of CRL functions.
 enum class ArgType { Real, Int, Bool, String };
 
