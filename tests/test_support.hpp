@@ -1,6 +1,7 @@
 // Helpers shared by the tests: paths into the source tree and a temporary folder per test.
 #pragma once
 #include <filesystem>
+#include <unistd.h>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,7 +15,10 @@ class TempDir {
 public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("shapevo-") + (info ? std::string(info->test_suite_name()) + "-" + info->name() : "t");
+        // The process id too: ctest -j runs test processes side by side, and a folder made
+        // outside a test (a fixture's set-up) would otherwise have the same name in each.
+        std::string name = std::string("shapevo-") + (info ? std::string(info->test_suite_name()) + "-" + info->name() : "t") + "-" +
+                           std::to_string(::getpid());
         for (char& c : name)
             if (c == '/') c = '_';
         path_ = std::filesystem::temp_directory_path() / name;
