@@ -327,11 +327,11 @@ int main(int argc, char** argv) {
                 if (derive(g, c, geo, scratch) == DeriveStatus::Truncated)
                     throw InputError("genome.max_primitives", "",
                                      "the derivation of " + grammarPath + " drawn with seed " + std::to_string(seedK) + " (" +
-                                         std::to_string(c.genes) + " genes) reached the limit of " + std::to_string(kDefaultMaxPrimitives) +
+                                         std::to_string(c.genes) + (c.genes == 1 ? " gene" : " genes") + ") reached the limit of " + std::to_string(kDefaultMaxPrimitives) +
                                          " primitives (the limit genome.max_primitives sets; sample uses its default) and was stopped "
                                          "there; " +
                                          (mayNeverEnd ? neverEnds + "lower the probabilities of the alternatives that recurse, or --max-genes"
-                                                      : std::string("splits, repeats and comps nested in each other multiply their pieces: nest fewer")));
+                                                      : std::string("nested splits, repeats, comps and mirrors multiply what they hold: nest fewer of them")));
                 return std::pair{seedK, o.attempts};
             };
             Chromosome c;

@@ -108,6 +108,18 @@ TEST(RuleRecursion, AnOptionalRecursionOfAGrammarGetsTheSameNote) {
                                 "impossible: widen the window\n");
 }
 
+TEST(RuleRecursion, APlainGrammarPastThePrimitiveLimitIsRefusedWithoutTheNote) {
+    TempDir dir;
+    writeFile(dir.file("a.grammar"), "start A\nrule A { repeat x count 100 { repeat y count 100 { repeat z count 100 { box } } } }\n");
+    const auto r = runShapevo("sample " + dir.file("a.grammar") + " -o " + dir.file("m.obj"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_EQ(r.output, "shapevo: error: genome.max_primitives: the derivation of " + dir.file("a.grammar") +
+                            " drawn with seed 1 (1 gene) reached the limit of 262144 primitives (the limit genome.max_primitives "
+                            "sets; sample uses its default) and was stopped there; nested splits, repeats, comps and mirrors "
+                            "multiply what they hold: nest fewer of them\n");
+    EXPECT_FALSE(fs::exists(dir.file("m.obj")));
+}
+
 TEST(RuleRecursion, RunEvolvesRuleFilesThatMayNeverEnd) {
     const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set ga.generations=6 -q";
     const std::vector<std::pair<std::string, std::string>> files = {{"ends", kEnds}, {"never", kNeverEnds}, {"branches", kBranches}};
