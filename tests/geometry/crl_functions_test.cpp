@@ -285,5 +285,21 @@ TEST(CrlFunctions, RecursiveStochasticRulesAreOptionalChildSlotsThatEnd) {
     EXPECT_GE(sizes.size(), 4u);
 }
 
+TEST(CrlFunctions, AChainOfHandlesDeeperThanInlineCallsMayNestStillDerives) {
+    std::string text = "L = rect(0, 0, 1, 1);\nL -> extrude(1) {H0};\n";
+    for (int i = 0; i < 300; ++i) text += "H" + std::to_string(i) + " -> extrude(1.01) {H" + std::to_string(i + 1) + "};\n";
+    text += "H300 -> insert_volume(1, 1, 1, 0, 0, 1);\n";
+    const Grammar g = rules(text);
+    Chromosome c;
+    Rng rng(1);
+    ASSERT_TRUE(growUncontrolled(g, c, rng, 1000));
+    EXPECT_GT(c.genes, 20u) << "the chain is cut into genes of at most a dozen levels";
+    Geometry geo;
+    DeriveScratch scratch;
+    ASSERT_EQ(derive(g, c, geo, scratch), DeriveStatus::Complete);
+    ASSERT_EQ(geo.primitives.size(), 1u);
+    EXPECT_NEAR(2 * geo.primitives[0].half.y, std::pow(1.01, 300), 1e-2);
+}
+
 }  // namespace
 }  // namespace shapevo

@@ -323,7 +323,29 @@ private:
                 for (const Application& a : d->alternatives)
                     for (const Successor& s : a.successors) inlineNext[v].push_back(&s);
             }
-        // Inline calls must not cycle: depth first over the edges that stay inline.
+        // Inline calls must not cycle: depth first over the edges that stay inline. On the way
+        // back (successors first) each handle's inline height is known: the longest chain of
+        // inline calls below it. The shapevo language nests inline calls at most 32 deep (a CRL
+        // level may take two: a helper rule and the handle), so where a handle would stand on
+        // more than kInlineLevels levels, its tallest successors become genes of their own
+        // (called through a child slot), and the chain starts again below them.
+        constexpr int kInlineLevels = 12;
+        std::vector<int> height(n, 0);
+        auto settle = [&](std::size_t v) {
+            auto tallest = [&] {
+                int h = 0;
+                for (const Successor* s : inlineNext[v]) {
+                    const std::size_t w = std::size_t(id.at(s->handle));
+                    if (!geneRoots_.count(u.prefix + s->handle)) h = std::max(h, height[w]);
+                }
+                return h + 1;
+            };
+            height[v] = tallest();
+            if (height[v] <= kInlineLevels) return;
+            for (const Successor* s : inlineNext[v])
+                if (height[std::size_t(id.at(s->handle))] >= kInlineLevels / 2) geneRoots_.insert(u.prefix + s->handle);
+            height[v] = tallest();
+        };
         std::vector<char> mark(n, 0);  // 0 new, 1 on the path, 2 done
         for (std::size_t root = 0; root < n; ++root) {
             if (mark[root]) continue;
@@ -334,6 +356,7 @@ private:
                 const std::size_t v = std::size_t(f.v);
                 if (f.k == inlineNext[v].size()) {
                     mark[v] = 2;
+                    settle(v);
                     calls.pop_back();
                     continue;
                 }
@@ -485,7 +508,21 @@ private:
         Call c{*this, app, {}, {}, inLot};
         for (std::size_t k = 0; k < app.args.size(); ++k)
             c.args.push_back(argument(u, app.args[k], f->args[std::min(k, f->args.size() - 1)], app.function));
-        for (const Successor& s : app.successors) c.successors.push_back(u.prefix + s.handle);
+        for (const Successor& s : app.successors) {
+            const std::string name = u.prefix + s.handle;
+            if (!geneRoots_.count(name)) {
+                c.successors.push_back(name);
+                continue;
+            }
+            c.successors.push_back(name + "__gene");  // a rule whose one child slot derives `name`
+            if (geneWrappers_.insert(name).second) {
+                const Location where = where_;
+                begin(name + "__gene", s.where);
+                line("child " + name);
+                end();
+                where_ = where;
+            }
+        }
         where_ = app.where;
         f->emit(c);
     }
@@ -527,6 +564,7 @@ private:
     Unit* unit_ = nullptr;
     std::vector<std::string> stack_, inserting_, insertingNames_;  ///< inserting_: canonical; its names relative to the main folder
     std::set<const RuleDef*> recursive_;
+    std::set<std::string> geneRoots_, geneWrappers_;  ///< handles called through a child slot (deep chains)
     std::deque<std::vector<Line>> pending_;
     std::vector<Line>* cur_ = nullptr;
     std::vector<Line> rulesText_, attrLines_;
