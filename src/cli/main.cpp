@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     std::string sampleSeed = "1", sampleCount = "1";
     std::uint32_t minGenes = 1, maxGenes = 100;
     const std::string redraws = std::to_string(kSampleAttempts);
-    sample->add_option("grammar", grammarPath, "grammar file")->required();
+    sample->add_option("grammar", grammarPath, "grammar file: .grammar (grammars/README.md) or a CastleMaker .rule file (grammars/castlemaker/README.md)")->required();
     sample->add_option("--seed", sampleSeed, "random seed, 0 to 2^64-1; with --count N, file k uses seed + k - 1 (mod 2^64)")
         ->capture_default_str();
     sample->add_option("--min-genes", minGenes, "a derivation with fewer genes is dropped and drawn again (at most " + redraws +
