@@ -14,8 +14,8 @@ namespace shapevo {
 bool isRuleFile(const std::string& path) { return std::filesystem::path(path).extension() == ".rule"; }
 
 namespace {
-Grammar parseRuleFile(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
-    const crl::Translation t = crl::translateCrl(text, path, overrides);
+/// The grammar of rule file `path` (its `text`) from its translation `t`.
+Grammar compileTranslation(const crl::Translation& t, const std::string& text, const std::string& path, const AttrOverrides& overrides) {
     try {
         Grammar g = parseShapeGrammar(t.text, path, overrides);
         g.source = text;
@@ -43,8 +43,8 @@ std::string translateRuleFile(const std::string& path, const AttrOverrides& over
     std::ostringstream ss;
     ss << in.rdbuf();
     const std::string text = ss.str();
-    parseRuleFile(text, path, overrides);  // the same checks as every command
     const crl::Translation t = crl::translateCrl(text, path, overrides);
+    compileTranslation(t, text, path, overrides);  // the same checks as every command
     std::istringstream lines(t.text);
     std::string out = "# " + path + " in the shapevo language (grammars/README.md); # FILE:LINE says where a rule came from\n";
     std::string line, last;
@@ -60,7 +60,8 @@ std::string translateRuleFile(const std::string& path, const AttrOverrides& over
 }
 
 Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
-    return isRuleFile(path) ? parseRuleFile(text, path, overrides) : parseShapeGrammar(text, path, overrides);
+    if (!isRuleFile(path)) return parseShapeGrammar(text, path, overrides);
+    return compileTranslation(crl::translateCrl(text, path, overrides), text, path, overrides);
 }
 
 Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides) {

@@ -97,7 +97,6 @@ void grid(Call& c, const std::vector<std::string>& xs, std::vector<std::string> 
     } else {
         c.line(splitText('x', xs, columns));
     }
-    (void)randomShares;
 }
 
 int constantCount(Call& c, std::size_t k, int lo, int hi, const char* what) {
