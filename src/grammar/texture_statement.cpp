@@ -82,7 +82,12 @@ void Parser::parseTexture(const BodyScope& scope, Statement& s) {
         Texture t;
         t.name = name.text;
         t.path = file.text;
-        t.file = std::filesystem::absolute(std::filesystem::path(g_.path).parent_path() / file.text).lexically_normal().string();
+        // An empty name would make an empty path, which std::filesystem::absolute throws on.
+        if (file.text.empty()) tokens_.fail(file.where, "the texture's file name is empty (expected a PNG image, relative to the grammar's folder)");
+        std::error_code ec;
+        const std::filesystem::path relative = std::filesystem::path(g_.path).parent_path() / file.text;
+        const std::filesystem::path absolute = std::filesystem::absolute(relative, ec);
+        t.file = (ec ? relative : absolute).lexically_normal().string();
         for (const Texture& other : g_.textures)  // the same image under another name: read once
             if (other.file == t.file) t.png = other.png;
         if (t.png.empty()) {

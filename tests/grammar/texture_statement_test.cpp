@@ -78,6 +78,13 @@ TEST(TextureStatement, AMissingFileIsLocatedAtItsName) {
                   fs::absolute(test::sourcePath("tests/data/nope.png")).lexically_normal().string() + ")");
 }
 
+// Regression (fuzz_grammar_parser): an empty file name made an empty path, and
+// std::filesystem::absolute threw a filesystem_error that ended the program.
+TEST(TextureStatement, AnEmptyFileNameIsLocatedAtItsName) {
+    EXPECT_EQ(errorOf(body("  texture t \"\" (1, 1)"), "g.grammar"),
+              "g.grammar:3:13: the texture's file name is empty (expected a PNG image, relative to the grammar's folder)");
+}
+
 TEST(TextureStatement, AFileThatIsNotAPngIsLocatedAtItsName) {
     const test::TempDir dir;
     const std::string grammar = dir.file("g.grammar");
