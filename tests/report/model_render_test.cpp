@@ -55,8 +55,12 @@ TEST(ModelRender, FrontViewOfAUnitCubeCoversItsProjectedSquare) {
             const bool model = p.at(x, y) != bg;
             covered += model;
             const float cx = float(x) + 0.5f, cy = float(y) + 0.5f;
-            if (cx > lo.x + 1 && cx < hi.x - 1 && cy > lo.y + 1 && cy < hi.y - 1) EXPECT_TRUE(model) << x << "," << y;
-            if (cx < lo.x - 1 || cx > hi.x + 1 || cy < lo.y - 1 || cy > hi.y + 1) EXPECT_FALSE(model) << x << "," << y;
+            if (cx > lo.x + 1 && cx < hi.x - 1 && cy > lo.y + 1 && cy < hi.y - 1) {
+                EXPECT_TRUE(model) << x << "," << y;
+            }
+            if (cx < lo.x - 1 || cx > hi.x + 1 || cy < lo.y - 1 || cy > hi.y + 1) {
+                EXPECT_FALSE(model) << x << "," << y;
+            }
         }
     const double side = hi.x - lo.x;
     EXPECT_NEAR(double(covered), side * side, 4 * side + 4) << "within a one-pixel band round the square";
