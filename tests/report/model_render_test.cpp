@@ -126,6 +126,21 @@ TEST(ModelRender, AMaterialsColourAppearsAndAPlainMeshIsNeutral) {
     EXPECT_EQ(gold[3], 255);
 }
 
+TEST(ModelRender, ATexturedMaterialShowsItsImagesMeanColour) {
+    Mesh cube = unitCube();
+    cube.materials = {{"bricks", {1.0f, 1.0f, 1.0f}, 0}};
+    cube.triangleMaterials.assign(cube.triangles.size(), 0);
+    const ViewCamera cam = frameView(View::Front, boundingSphere(cube), 64, 64);
+    const Rgba white = draw(cube, cam).at(32, 32);
+    const std::string bricks = test::readFile(test::sourcePath("tests/data/bricks.png"));
+    cube.textures = {{"bricks.png", std::vector<std::uint8_t>(bricks.begin(), bricks.end())}};
+    cube.uvs.assign(cube.vertices.size(), glm::vec2(0.0f));
+    const Rgba textured = draw(cube, cam).at(32, 32);
+    EXPECT_LT(brightness(textured), brightness(white) - 30) << "not drawn white";
+    cube.textures[0].png.resize(20);  // unreadable: the material's own colour
+    EXPECT_EQ(draw(cube, cam).at(32, 32), white);
+}
+
 TEST(ModelRender, SameModelSameBytesAndAReusedRendererForgetsThePreviousModel) {
     const Mesh cube = unitCube();
     Mesh tri;

@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "image/png_mean_colour.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -63,6 +65,14 @@ void MeshRenderer::render(const Mesh& mesh, const ViewCamera& camera, std::span<
         const glm::vec3 p = camera.project(mesh.vertices[i]);
         projected_[i] = {p.x * float(ss), p.y * float(ss), p.z};
     }
+    albedo_.resize(mesh.materials.size());
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const MeshMaterial& mat = mesh.materials[m];
+        albedo_[m] = mat.color;
+        if (mat.texture >= 0 && std::size_t(mat.texture) < mesh.textures.size())
+            if (const auto mean = pngMeanColour(mesh.textures[std::size_t(mat.texture)].png))
+                albedo_[m] *= glm::vec3((*mean)[0], (*mean)[1], (*mean)[2]);
+    }
     auto world = [&](const glm::vec3& d) { return glm::normalize(d.x * camera.right + d.y * camera.up + d.z * camera.toward); };
     const glm::vec3 key = world(kKeyDirection), fill = world(kFillDirection);
 
@@ -89,7 +99,7 @@ void MeshRenderer::render(const Mesh& mesh, const ViewCamera& camera, std::span<
         const float len = glm::length(n);
         n = len > 0.0f && std::isfinite(len) ? n / len : camera.toward;
         if (glm::dot(n, camera.toward) < 0.0f) n = -n;
-        const glm::vec3 albedo = coloured ? mesh.materials[mesh.triangleMaterials[t]].color : kNeutralColour;
+        const glm::vec3 albedo = coloured ? albedo_[mesh.triangleMaterials[t]] : kNeutralColour;
         const float light = kAmbient + kKey * std::max(0.0f, glm::dot(n, key)) + kFill * std::max(0.0f, glm::dot(n, fill));
         shade_[t] = glm::min(albedo * light, glm::vec3(1.0f));
 

@@ -7,8 +7,8 @@
 //     inside the triangle or on its edge; the 4 samples of a pixel are averaged in linear light
 //     (antialiased edges);
 //   - flat shading per triangle on its material colour (Mesh::materials; kNeutralColour for a
-//     mesh without materials; a textured material shows its colour, white: textures are not
-//     drawn): ambient light plus a key light from the viewer's upper left and a weaker fill
+//     mesh without materials; a textured material shows its colour times the mean colour of its
+//     image, image/png_mean_colour.hpp: textures are not mapped pixel by pixel): ambient light plus a key light from the viewer's upper left and a weaker fill
 //     from the right, both fixed relative to the camera, so every view is lit; the result is
 //     clamped to 1 and encoded as 8-bit sRGB, opaque, on the light kBackground;
 //   - triangles with a non-finite projected corner and degenerate ones draw nothing;
@@ -51,6 +51,7 @@ private:
     std::vector<float> depth_;            ///< per sample; +inf = nothing drawn
     std::vector<std::uint32_t> surface_;  ///< per sample: the triangle drawn there, or kNone
     std::vector<glm::vec3> shade_;        ///< per triangle: its shaded linear colour
+    std::vector<glm::vec3> albedo_;       ///< per material: the colour it is drawn in
     std::vector<glm::vec3> projected_;    ///< per vertex: camera.project() in sample units
 };
 
