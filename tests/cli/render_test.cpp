@@ -1,7 +1,8 @@
 // Pictures end to end: `shapevo render` draws a mesh file, a run folder or a checkpoint file at
 // the size and views asked for; every run writes best.png, which is what `render RUN_DIR`
 // draws; `sample --count N -o sheet.png` writes one contact sheet; an existing output, a bad
-// --size or --view, or a wrong extension is exit 2 with nothing written.
+// --size or --view, or a wrong extension is exit 2 with nothing written. A texture image named
+// best.png takes another name beside best.obj (best.png is written first).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -66,6 +67,18 @@ TEST(RenderCommand, EveryRunWritesBestPngAndRenderDrawsTheRunsBestModel) {
     r = runShapevo("render " + checkpoint + "/run.h5 -o " + dir.file("top.png") + " --view top --size 64x48");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(pngSize(dir.file("top.png")), std::pair(64, 48));
+}
+
+TEST(RenderCommand, ATextureNamedBestPngDoesNotReplaceTheRunsPicture) {
+    TempDir dir;
+    fs::copy_file(sourcePath("tests/data/bricks.png"), dir.file("best.png"));
+    const std::string cfg = test::configWithGrammar(
+        dir, "start S\nrule S {\n  size (1, 1, 0.4)\n  texture bricks \"best.png\" (2, 2)\n  box\n}\n", "wall");
+    const auto r = runShapevo("run " + cfg + " --out " + dir.file("r") + " --set ga.population=12 --set ga.generations=1 --set ga.elitism=2 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(pngSize(dir.file("r/best.png")), std::pair(800, 600)) << "the picture";
+    EXPECT_NE(readFile(dir.file("r/best.mtl")).find("map_Kd best_2.png"), std::string::npos) << readFile(dir.file("r/best.mtl"));
+    EXPECT_EQ(readFile(dir.file("r/best_2.png")), readFile(sourcePath("tests/data/bricks.png"))) << "the texture, beside it";
 }
 
 TEST(RenderCommand, RefusesAnExistingOutputAndBadOptionsWithExitTwo) {
