@@ -1,4 +1,4 @@
-// shapevo command line: run, resume, inspect, export, sample, target, evaluate. Bad input
+// shapevo command line: run, resume, inspect, export, render, sample, target, evaluate. Bad input
 // (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
 // other failures exit with code 1. Under mpirun every rank runs this; only run and resume use
 // more than one rank. Results go to stdout; errors, warnings and notices ("shapevo: ...") to
@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -24,6 +25,9 @@
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "report/model_writer.hpp"
+#include "report/render/contact_sheet.hpp"
+#include "report/render/model_picture.hpp"
 #include "cli/log_router.hpp"
 #include "run/config_file.hpp"
 #include "run/island_loop.hpp"
@@ -153,7 +157,11 @@ int main(int argc, char** argv) {
     sample->add_option("--max-genes", maxGenes, "a derivation that would need more genes is abandoned and drawn again (same limit); "
                                                 "never truncated")
         ->capture_default_str();
-    sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb; must not exist)")->required();
+    sample->add_option("-o,--output", sampleOut, "model file (.obj, .ply or .glb; must not exist), or .png: one contact sheet "
+                                                 "of all --count models, three-quarter views in a grid, each labelled with its seed")
+        ->required();
+    std::string sampleSize;
+    sample->add_option("--size", sampleSize, "with -o .png: the size of each tile, WIDTHxHEIGHT in pixels (default 256x256)");
     sample->add_option("--genome", genomeOut, "also save the chromosome (a .genome file) for shapevo evaluate");
     std::vector<std::string> sampleAttrs;
     sample->add_option("--attr", sampleAttrs, "replace an attr of the grammar, NAME=VALUE (repeatable), as [grammar.attr] does in a config");
@@ -222,6 +230,20 @@ int main(int argc, char** argv) {
                           "over an image target); must match the output file's extension")
         ->check(CLI::IsMember({"obj", "ply", "glb", "vdb", "png"}));
 
+    // render
+    auto* renderCmd = app.add_subcommand("render", "Draw a shaded picture of a model (PNG; on the CPU, no display needed): "
+                                                   "shapevo render MODEL|RUN_DIR|CHECKPOINT -o view.png");
+    std::string renderPath, renderOut, renderView = "three-quarter", renderSize = "800x600";
+    renderCmd->add_option("path", renderPath,
+                          "a mesh file (.obj, .ply, .stl; drawn in a neutral colour), or a run folder, checkpoint folder, or a "
+                          "checkpoint's run.h5 or island-NNNN.h5 (the checkpoint's best model over all islands, in its colours)")
+        ->required();
+    renderCmd->add_option("-o,--output", renderOut, "PNG file to write; must not exist")->required();
+    renderCmd->add_option("--view", renderView, "three-quarter (from the front right, 30 degrees up), front, side, top, or three "
+                                                "(front, side and top side by side)")
+        ->capture_default_str();
+    renderCmd->add_option("--size", renderSize, "the size of each view, WIDTHxHEIGHT in pixels (16 to 8192 each)")->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -280,10 +302,36 @@ int main(int argc, char** argv) {
             requireOutputFormat(exportOut, kExportFormats, "-o", exportFormat);
             refuseExisting(exportOut);
             std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(exportPath)), exportFormat, exportOut) << "\n";
+        } else if (*renderCmd) {
+            requireOutputFormat(renderOut, std::array<std::string_view, 1>{"png"}, "-o");
+            refuseExisting(renderOut);
+            const std::vector<View> views = parseViews(renderView);
+            const PictureSize size = parsePictureSize(renderSize);
+            Mesh mesh;
+            std::string what = renderPath;
+            if (std::filesystem::is_directory(renderPath) || formatOfPath(renderPath) == "h5") {
+                const CheckpointBest b = bestOfCheckpoint(resolveCheckpointPath(renderPath));
+                Geometry geo;
+                DeriveScratch scratch;
+                derive(b.grammar, b.best, geo, scratch, b.settings.limits.maxPrimitives);
+                mesh = meshOf(geo);
+                what = "best model: " + b.from;
+            } else {
+                mesh = readMesh(renderPath);
+            }
+            writeModelPicture(mesh, views, size, renderOut);
+            std::cout << "wrote " << renderOut << " (" << size.width * int(views.size()) << "x" << size.height << ", " << renderView
+                      << " view" << (views.size() > 1 ? "s" : "") << " of " << mesh.triangles.size() << " triangles; " << what << ")\n";
         } else if (*sample) {
             const std::uint64_t sampleSeedValue = parseSeed(sampleSeed, "--seed", UINT64_MAX);
             const std::uint32_t count = parseCount(sampleCount, kMaxSampleCount);
-            const std::string sampleFormat = requireOutputFormat(sampleOut, kModelFormats, "-o");
+            constexpr std::array<std::string_view, 4> kSampleFormats{"obj", "ply", "glb", "png"};
+            const std::string sampleFormat = requireOutputFormat(sampleOut, kSampleFormats, "-o");
+            const bool sheetOut = sampleFormat == "png";  // one contact sheet instead of numbered model files
+            if (!sampleSize.empty() && !sheetOut)
+                throw InputError("--size", "", "sizes a contact sheet's tiles: use it with -o FILE.png");
+            std::optional<ContactSheet> sheet;
+            if (sheetOut) sheet.emplace(int(count), sampleSize.empty() ? PictureSize{256, 256} : parsePictureSize(sampleSize));
             if (!genomeOut.empty()) requireOutputFormat(genomeOut, kGenomeFormats, "--genome");
             const Grammar g = loadGrammar(grammarPath, parseAttrOptions(sampleAttrs));
             if (minGenes > maxGenes) throw InputError("--min-genes", "", "must not exceed --max-genes");
@@ -292,7 +340,7 @@ int main(int argc, char** argv) {
                                                         std::to_string(g.mandatoryGenes[g.start]) + " genes every derivation of " +
                                                         grammarPath + " needs");
             for (std::uint32_t k = 1; k <= count; ++k) {
-                refuseExisting(numberedPath(sampleOut, k, count));
+                refuseExisting(sheetOut ? sampleOut : numberedPath(sampleOut, k, count));
                 if (!genomeOut.empty()) refuseExisting(numberedPath(genomeOut, k, count));
             }
             // File k is seed + k - 1, as --count 1 --seed (seed + k - 1) writes it. Every
@@ -338,8 +386,9 @@ int main(int argc, char** argv) {
             for (std::uint32_t k = 1; k <= count; ++k) draw(k, c);
             for (std::uint32_t k = 1; k <= count; ++k) {
                 const auto [seedK, attempts] = draw(k, c);
-                const std::string modelPath = numberedPath(sampleOut, k, count);
-                writeModelFile(geo, sampleFormat, modelPath, Replace::Never);
+                const std::string modelPath = sheetOut ? sampleOut + " tile " + std::to_string(k) : numberedPath(sampleOut, k, count);
+                if (sheetOut) sheet->draw(int(k) - 1, meshOf(geo), std::to_string(seedK));
+                else writeModelFile(geo, sampleFormat, modelPath, Replace::Never);
                 std::cout << "sampled " << c.genes << " genes, " << geo.primitives.size() << " primitives (seed " << seedK;
                 if (attempts > 1) std::cout << ", draw " << attempts;
                 std::cout << ") -> " << modelPath;
@@ -349,6 +398,11 @@ int main(int argc, char** argv) {
                     std::cout << ", " << genomePath;
                 }
                 std::cout << "\n";
+            }
+            if (sheetOut) {
+                sheet->write(sampleOut);
+                std::cout << "wrote " << sampleOut << " (" << count << (count == 1 ? " model, " : " models, ") << sheet->width()
+                          << "x" << sheet->height() << " pixels)\n";
             }
         } else if (*target) {
             requireOutputFormat(vdbOut, kTargetFormats, "-o");

@@ -14,6 +14,7 @@
 #include "genome/genome_file.hpp"
 #include "mesh/glb_writer.hpp"
 #include "report/model_writer.hpp"
+#include "report/render/model_picture.hpp"
 #include "report/run_report.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
@@ -237,6 +238,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         DeriveScratch scratch;
         derive(grammar, champion, geometry, scratch, s.limits.maxPrimitives);
         const Mesh mesh = meshOf(geometry);
+        // best.png first: a grammar's texture named best.png then goes beside best.obj as best_2.png
+        writeModelPicture(mesh, std::array{View::ThreeQuarter}, PictureSize{}, folder + "/best.png");
         writeObj(mesh, folder + "/best.obj");
         writePly(mesh, folder + "/best.ply");
         writeGlb(mesh, folder + "/best.glb");

@@ -2,7 +2,7 @@
 // progress on rank 0, ring migration, checkpoints every checkpoint.interval generations and on
 // SIGTERM/SIGUSR1, stopping rules agreed by all ranks, and the run folder's outputs:
 //   config.toml, grammar copy, curve.csv, summary.json, best.obj (and best.mtl when the grammar
-//   sets colours), best.ply, best.glb, best.genome,
+//   sets colours), best.ply, best.glb, best.png (a picture: report/render/model_picture.hpp), best.genome,
 //   checkpoint-NNNNNN/ (HDF5, see checkpoint/checkpoint_file.hpp)
 #pragma once
 #include <iosfwd>

@@ -23,7 +23,7 @@ TEST(ImageRun, SketchAndLogoScenesWriteOverlayCurveAndSilhouetteIoU) {
         const std::string out = dir.file(scene);
         const auto r = runShapevo("run " + sourcePath(std::string("configs/") + scene + ".toml") + " --out " + out + kSmall);
         ASSERT_EQ(r.exitCode, 0) << scene << ": " << r.output;
-        for (const char* f : {"best-overlay.png", "best.glb", "best.obj", "curve.svg", "curve.png", "summary.json"})
+        for (const char* f : {"best-overlay.png", "best.png", "best.glb", "best.obj", "curve.svg", "curve.png", "summary.json"})
             EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << scene << " " << f;
         const std::string summary = readFile(out + "/summary.json");
         EXPECT_NE(summary.find("\"silhouette_iou\": 0."), std::string::npos) << summary;
