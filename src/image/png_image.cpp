@@ -146,8 +146,7 @@ PngImage readPng(const std::string& path) {
         throw InputError(path, "",
                          "the image is " + std::to_string(announcedWidth) + " x " + std::to_string(announcedHeight) +
                              " pixels, over the size limit of " + std::to_string(kMaxPngSide) + " pixels on a side and " +
-                             std::to_string(kMaxPngPixels) + " (64 Mpixel) in all; scale it down (a target is fitted "
-                             "into the camera's frame, so a few thousand pixels on a side are plenty)");
+                             std::to_string(kMaxPngPixels) + " (64 Mpixel) in all; scale it down");
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, onError, onWarning);
     if (!png) throw std::bad_alloc();
     png_infop info = png_create_info_struct(png);
