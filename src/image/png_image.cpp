@@ -45,14 +45,23 @@ void readBytes(png_structp png, png_bytep data, std::size_t n) {
     }
 }
 
-/// Decode into 8-bit RGBA. Returns false on a libpng error (message in ctx). Holds nothing with
-/// a destructor: `rgba` and `rows` belong to the caller.
-bool decode(LibpngContext& ctx, png_structp png, png_infop info, std::vector<std::uint8_t>& rgba,
-            std::vector<png_bytep>& rows, int& width, int& height) {
+void toLuminanceAndAlpha(const std::uint8_t* rgba, std::size_t n, std::uint8_t* luminance, std::uint8_t* alpha) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* p = rgba + 4 * i;
+        luminance[i] = std::uint8_t((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u);
+        alpha[i] = p[3];
+    }
+}
+
+/// Decode into luminance and alpha bytes. Returns false on a libpng error (message in ctx).
+/// Holds nothing with a destructor: every buffer belongs to the caller. Non-interlaced images
+/// go through one RGBA row (`rgba`); interlaced ones through a full RGBA image and `rows`.
+bool decode(LibpngContext& ctx, png_structp png, png_infop info, PngImage& image, std::vector<std::uint8_t>& rgba,
+            std::vector<png_bytep>& rows) {
     if (setjmp(ctx.jump)) return false;
     png_set_read_fn(png, &ctx, readBytes);
     png_set_sig_bytes(png, 8);
-    png_set_user_limits(png, kMaxPngSide, kMaxPngSide);
+    png_set_user_limits(png, kMaxPngSide, kMaxPngSide);  // readPng checked the IHDR already; a second guard
     // Read past the ancillary chunks we do not use (all but tRNS) without storing them: libpng
     // would allocate and zero the length a text or colour chunk announces (2 GB for a 45-byte
     // file) before it finds that the file is too short.
@@ -72,13 +81,39 @@ bool decode(LibpngContext& ctx, png_structp png, png_infop info, std::vector<std
     png_read_update_info(png, info);
     if (png_get_channels(png, info) != 4 || png_get_bit_depth(png, info) != 8 || png_get_rowbytes(png, info) != 4 * w)
         png_error(png, "unsupported pixel layout");
-    width = int(w);
-    height = int(h);
-    rgba.resize(std::size_t(w) * h * 4);
-    rows.resize(h);
-    for (png_uint_32 y = 0; y < h; ++y) rows[y] = rgba.data() + std::size_t(y) * w * 4;
-    png_read_image(png, rows.data());
+    image.width = int(w);
+    image.height = int(h);
+    const std::size_t n = std::size_t(w) * h;
+    image.luminance.resize(n);
+    image.alpha.resize(n);
+    if (interlace == PNG_INTERLACE_NONE) {
+        rgba.resize(std::size_t(w) * 4);
+        for (png_uint_32 y = 0; y < h; ++y) {
+            png_read_row(png, rgba.data(), nullptr);
+            const std::size_t at = std::size_t(y) * w;
+            toLuminanceAndAlpha(rgba.data(), w, image.luminance.data() + at, image.alpha.data() + at);
+        }
+    } else {
+        rgba.resize(n * 4);
+        rows.resize(h);
+        for (png_uint_32 y = 0; y < h; ++y) rows[y] = rgba.data() + std::size_t(y) * w * 4;
+        png_read_image(png, rows.data());
+        toLuminanceAndAlpha(rgba.data(), n, image.luminance.data(), image.alpha.data());
+    }
     png_read_end(png, nullptr);
+    return true;
+}
+
+/// The size an IHDR chunk right after the signature announces (the PNG standard puts it first),
+/// or false if the next chunk is not a well-formed IHDR (libpng then says what is wrong).
+bool peekSize(std::FILE* f, std::uint64_t& width, std::uint64_t& height) {
+    unsigned char b[16];
+    const bool ok = std::fread(b, 1, 16, f) == 16 && std::memcmp(b, "\0\0\0\x0dIHDR", 8) == 0;
+    std::fseek(f, 8, SEEK_SET);
+    if (!ok) return false;
+    auto big = [](const unsigned char* p) { return std::uint64_t(p[0]) << 24 | std::uint64_t(p[1]) << 16 | std::uint64_t(p[2]) << 8 | p[3]; };
+    width = big(b + 8);
+    height = big(b + 12);
     return true;
 }
 
@@ -104,6 +139,14 @@ PngImage readPng(const std::string& path) {
     const std::size_t got = std::fread(signature, 1, 8, ctx.file);
     if (got < 8 || png_sig_cmp(signature, 0, 8) != 0) throw InputError(path, "", "not a PNG file (bad signature)");
 
+    std::uint64_t announcedWidth = 0, announcedHeight = 0;
+    if (peekSize(ctx.file, announcedWidth, announcedHeight) &&
+        (announcedWidth > std::uint64_t(kMaxPngSide) || announcedHeight > std::uint64_t(kMaxPngSide) ||
+         announcedWidth * announcedHeight > std::uint64_t(kMaxPngPixels)))
+        throw InputError(path, "",
+                         "the image is " + std::to_string(announcedWidth) + " x " + std::to_string(announcedHeight) +
+                             " pixels, over the size limit of " + std::to_string(kMaxPngSide) + " pixels on a side and " +
+                             std::to_string(kMaxPngPixels) + " (64 Mpixel) in all; scale it down");
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, onError, onWarning);
     if (!png) throw std::bad_alloc();
     png_infop info = png_create_info_struct(png);
@@ -111,12 +154,12 @@ PngImage readPng(const std::string& path) {
         png_destroy_read_struct(&png, nullptr, nullptr);
         throw std::bad_alloc();
     }
+    PngImage image;
     std::vector<std::uint8_t> rgba;
     std::vector<png_bytep> rows;
-    int width = 0, height = 0;
     bool ok = false;
     try {
-        ok = decode(ctx, png, info, rgba, rows, width, height);
+        ok = decode(ctx, png, info, image, rgba, rows);
     } catch (...) {  // std::bad_alloc from the buffers
         png_destroy_read_struct(&png, &info, nullptr);
         throw;
@@ -127,19 +170,7 @@ PngImage readPng(const std::string& path) {
         throw InputError(path, "", std::string("unreadable PNG: ") + ctx.message +
                                        (ctx.warning[0] ? std::string(" (") + ctx.warning + ")" : std::string()));
     }
-    if (width <= 0 || height <= 0) throw InputError(path, "", "the image has no pixels");
-
-    PngImage image;
-    image.width = width;
-    image.height = height;
-    const std::size_t n = std::size_t(width) * std::size_t(height);
-    image.luminance.resize(n);
-    image.alpha.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* p = &rgba[4 * i];
-        image.luminance[i] = std::uint8_t((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u);
-        image.alpha[i] = p[3];
-    }
+    if (image.width <= 0 || image.height <= 0) throw InputError(path, "", "the image has no pixels");
     return image;
 }
 

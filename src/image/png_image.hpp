@@ -6,7 +6,10 @@
 // grey values below 8 bits are expanded; tRNS becomes alpha; images without alpha get 255.
 // Luminance = (299 R + 587 G + 114 B + 500) / 1000 in integers (Rec. 601), so a grey pixel keeps
 // its value. Colour values are used as stored: gAMA, iCCP and sRGB chunks are ignored.
-// Images wider or taller than kMaxPngSide pixels are refused before anything is allocated.
+// Size limits: images wider or taller than kMaxPngSide pixels, or with more than kMaxPngPixels
+// pixels in all, are refused from the IHDR chunk at the file's start, before anything is decoded
+// or allocated. Non-interlaced images are decoded one row at a time (peak memory: the two output
+// bytes per pixel and one row); interlaced ones need a full RGBA buffer (4 bytes per pixel more).
 #pragma once
 #include <cstdint>
 #include <span>
@@ -16,6 +19,7 @@
 namespace shapevo {
 
 inline constexpr int kMaxPngSide = 16384;
+inline constexpr long long kMaxPngPixels = 64LL * 1024 * 1024;  ///< 64 Mpixel (8192 x 8192)
 
 struct PngImage {
     int width = 0, height = 0;
@@ -24,7 +28,8 @@ struct PngImage {
 };
 
 /// Read a PNG. Throws InputError naming the file if it is missing, not a PNG, truncated,
-/// corrupt, without pixels or larger than kMaxPngSide on a side.
+/// corrupt, without pixels, larger than kMaxPngSide on a side or than kMaxPngPixels in all (the
+/// message names the size and the limits).
 PngImage readPng(const std::string& path);
 
 

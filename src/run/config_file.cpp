@@ -314,6 +314,12 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
                          std::string(e.description()));
     }
     for (const auto& o : overrides) applyOverride(root, o);
+    // A relative target.image given with --set was typed in the shell: take it from the current
+    // directory (not the config's), and record it absolute so that a resume finds the same file.
+    if (toml::table* t = root["target"].as_table())
+        if (const toml::node* n = t->get("image"); n && !n->source().path)
+            if (const auto v = n->value_exact<std::string>(); v && !v->empty() && !std::filesystem::path(*v).is_absolute())
+                t->insert_or_assign("image", std::filesystem::absolute(*v).lexically_normal().string());
 
     RunSettings r;
     r.configPath = path;
@@ -376,6 +382,35 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.number(target, "target", "avoid_min", pixels.rule.avoidMin, 0, 255);
     rd.number(target, "target", "avoid_max", pixels.rule.avoidMax, 0, 255);
     rd.number(target, "target", "alpha_threshold", pixels.rule.alphaThreshold, 0, 256);
+    // target.cover: a preset for the four ranges, so it is either it or them; alpha_threshold
+    // goes with both.
+    std::string cover;
+    rd.string(target, "target", "cover", cover);
+    if (rd.key(target, "target", "cover")) {
+        const TargetCover presets[] = {TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
+        const TargetCover* preset = nullptr;
+        for (const TargetCover& c : presets)
+            if (cover == targetCoverName(c)) preset = &c;
+        if (!preset)
+            rd.fail(*target->get("cover"), "target.cover must be \"dark\", \"light\" or \"opaque\", got \"" + shortened(cover) + "\"");
+        for (const char* k : {"hit_min", "hit_max", "avoid_min", "avoid_max"})
+            if (rd.key(target, "target", k))
+                rd.failKeys({"target.cover", "target.hit_min", "target.hit_max", "target.avoid_min", "target.avoid_max"}, "[target]",
+                            "target.cover and target." + std::string(k) +
+                                " both say which pixels to cover: give the preset (cover = \"dark\", \"light\" or "
+                                "\"opaque\") or the luminance ranges (hit_min, hit_max, avoid_min, avoid_max), not both");
+        pixels.rule = PixelRule::forCover(*preset, pixels.rule.alphaThreshold);
+    }
+    std::string fit = targetFitName(pixels.fit);
+    rd.string(target, "target", "fit", fit);
+    if (rd.key(target, "target", "fit")) {
+        bool known = false;
+        for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
+            if (fit == targetFitName(f)) pixels.fit = f, known = true;
+        if (!known)
+            rd.fail(*target->get("fit"),
+                    "target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"" + shortened(fit) + "\"");
+    }
     const toml::table* camera = rd.section("camera");
     if (!image.empty()) {
         if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))

@@ -63,6 +63,23 @@ void requireVisible(const RunSettings& s, const Grammar& g, const ImageScorer& s
                          " covers a single pixel of the picture; point the camera (or the shadow's ground rectangle) at "
                          "where the grammar builds");
 }
+/// "800x600 pixels", or how a picture of another size was fitted: "229x304 pixels fitted
+/// (contain) into 800x600 as 452x600 at (174, 0)".
+std::string imagePlacement(const ImageTarget& t, TargetFit fit) {
+    const auto wh = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
+    const TargetPlacement& p = t.placement;
+    if (t.pictureWidth == t.width && t.pictureHeight == t.height && p == TargetPlacement{0, 0, t.width, t.height})
+        return wh(t.width, t.height) + " pixels";
+    return wh(t.pictureWidth, t.pictureHeight) + " pixels fitted (" + targetFitName(fit) + ") into " + wh(t.width, t.height) +
+           " as " + wh(p.width, p.height) + " at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+/// For a shadow camera whose ground rectangle was extended to square pixels: the one used.
+std::string groundNote(const Camera& c) {
+    if (c.projection() != Projection::Shadow || !c.groundExtended()) return "";
+    return "; ground rectangle extended to the picture's aspect: [" + formatDouble(c.groundMin().x) + ", " +
+           formatDouble(c.groundMin().y) + "]..[" + formatDouble(c.groundMax().x) + ", " + formatDouble(c.groundMax().y) + "]";
+}
 }  // namespace
 
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
@@ -70,7 +87,8 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     requireFiniteModels(s, g);
     if (s.image) {
         scene->camera_ = Camera::compile(s.image->camera, s.configPath);
-        scene->image_ = loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height());
+        scene->image_ =
+            loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height(), s.image->fit);
         const ImageTarget& t = *scene->image_;
         auto scorer = std::make_unique<ImageScorer>(g, *scene->camera_, t, s.fitness);
         scorer->setMaxPrimitives(s.limits.maxPrimitives);
@@ -82,8 +100,8 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
                            : s.image->camera.projection == Projection::Orthographic ? "orthographic silhouette"
                                                                                       : "perspective silhouette";
         requireVisible(s, g, *scene->imageScorer_);
-        scene->description_ = s.image->png + " (" + std::to_string(t.width) + "x" + std::to_string(t.height) + " pixels, " +
-                              std::to_string(t.hitCount) + " to cover, " + kind + ")";
+        scene->description_ = s.image->png + " (" + imagePlacement(t, s.image->fit) + ", " + std::to_string(t.hitCount) +
+                              " to cover, " + kind + groundNote(*scene->camera_) + ")";
         return scene;
     }
     scene->volume_ = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);

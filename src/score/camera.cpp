@@ -46,11 +46,23 @@ Camera Camera::compile(const CameraSpec& s, const std::string& file, const std::
         if (!finite(s.groundMax)) fail("ground_max", "must be finite");
         if (!(s.groundMax.x > s.groundMin.x) || !(s.groundMax.y > s.groundMin.y))
             fail("ground_max", "the ground rectangle is empty: ground_max must exceed ground_min in both x and z");
+        // Square ground pixels: extend the shorter side about the centre to the picture's aspect.
+        glm::dvec2 lo = s.groundMin, hi = s.groundMax;
+        const double ground = (hi.x - lo.x) / (hi.y - lo.y), picture = W / H;
+        if (std::fabs(ground / picture - 1.0) > 1e-3) {
+            const glm::dvec2 centre = 0.5 * (lo + hi);
+            glm::dvec2 half = 0.5 * (hi - lo);
+            if (ground < picture) half.x = half.y * picture;
+            else half.y = half.x / picture;
+            lo = centre - half, hi = centre + half;
+            c.groundExtended_ = true;
+        }
+        c.groundMin_ = lo, c.groundMax_ = hi;
         // P' = P - L (P.y - g) / L.y on the ground; x <- P'.x, row <- P'.z.
-        const double sx = W / (s.groundMax.x - s.groundMin.x), sz = H / (s.groundMax.y - s.groundMin.y);
+        const double sx = W / (hi.x - lo.x), sz = H / (hi.y - lo.y);
         const double kx = L.x / L.y, kz = L.z / L.y;
-        setRow(c.rows_[0], sx * glm::dvec3(1.0, -kx, 0.0), sx * (kx * s.groundY - s.groundMin.x));
-        setRow(c.rows_[1], sz * glm::dvec3(0.0, -kz, 1.0), sz * (kz * s.groundY - s.groundMin.y));
+        setRow(c.rows_[0], sx * glm::dvec3(1.0, -kx, 0.0), sx * (kx * s.groundY - lo.x));
+        setRow(c.rows_[1], sz * glm::dvec3(0.0, -kz, 1.0), sz * (kz * s.groundY - lo.y));
         setRow(c.rows_[2], glm::dvec3(0.0), 1.0);
         c.clip_[0] = 0.0;
         c.clip_[1] = 1.0;

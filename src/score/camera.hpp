@@ -8,6 +8,11 @@
 //                  whose rays travel along `light` (pointing down, from the light to the ground);
 //                  the ground rectangle ground_min..ground_max (x, z) fills the picture: x grows
 //                  to the right, z grows downwards (row 0 = ground_min.z), as seen from above.
+//                  Ground pixels are square: when the rectangle's aspect differs from the
+//                  picture's (width / height) by more than 0.1 %, its shorter side is extended
+//                  about its centre to the picture's aspect, so everything the rectangle holds
+//                  stays in view and a picture fitted with its aspect kept keeps it on the ground
+//                  (groundMin()/groundMax() give the rectangle used, groundExtended() says so).
 // What is not seen: for perspective and orthographic cameras everything closer to the eye than
 // `near` along the view direction (there is no far plane); for shadows everything below the
 // ground. Primitives that cross that plane are cut by it (see silhouette_outline.hpp).
@@ -57,6 +62,12 @@ public:
     /// The visible side: clip . (P, 1) >= 0 (in front of the near plane / above the ground).
     const double (&clipPlane() const)[4] { return clip_; }
 
+    /// Shadow: the ground rectangle the picture shows (ground_min..ground_max, or that rectangle
+    /// extended to the picture's aspect), and whether it was extended.
+    glm::dvec2 groundMin() const { return groundMin_; }
+    glm::dvec2 groundMax() const { return groundMax_; }
+    bool groundExtended() const { return groundExtended_; }
+
     /// Pixel position of a world point (meaningful where clip >= 0).
     glm::dvec2 project(const glm::dvec3& p) const;
     bool visible(const glm::dvec3& p) const {
@@ -68,6 +79,8 @@ private:
     int width_ = 0, height_ = 0;
     double rows_[3][4] = {};
     double clip_[4] = {};
+    glm::dvec2 groundMin_{0.0}, groundMax_{0.0};
+    bool groundExtended_ = false;
 };
 
 }  // namespace shapevo

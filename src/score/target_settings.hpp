@@ -9,10 +9,12 @@
 
 namespace shapevo {
 
-/// An image target: a PNG whose pixels are classified by `rule`, seen through `camera`.
+/// An image target: a PNG whose pixels are classified by `rule` (target.cover or the explicit
+/// ranges) and fitted into `camera`'s frame by `fit`.
 struct ImageSceneSettings {
     std::string png;
     PixelRule rule;
+    TargetFit fit = TargetFit::Contain;
     CameraSpec camera;
 };
 

@@ -231,6 +231,18 @@ TEST_F(PngRead, ImagesWithoutPixelsOrTooLargeAreRefused) {
     expectBadPng(dir.file("headonly.png"), "truncated");
 }
 
+TEST_F(PngRead, A30000By30000ImageIsRefusedFromItsHeaderNamingTheLimits) {
+    // A valid 30000 x 1 file whose IHDR (CRC fixed) says 30000 x 30000: 2.7 GB of RGBA if decoded.
+    test::writeFile(dir.file("huge.png"), test::forgedHugePng(dir.file("scratch.png"), 30000, 30000));
+    expectBadPng(dir.file("huge.png"), "30000 x 30000 pixels, over the size limit of 16384 pixels on a side and 67108864");
+    // within the side limit but over the pixel count: 16384 x 4097 > 64 Mpixel
+    test::writeFile(dir.file("many.png"), test::pngHeaderOnly(kMaxPngSide, 4097));
+    expectBadPng(dir.file("many.png"), "16384 x 4097 pixels, over the size limit");
+    // exactly 64 Mpixel is within the limits: refused only for what it lacks (here, its data)
+    test::writeFile(dir.file("limit.png"), test::pngHeaderOnly(8192, 8192));
+    expectBadPng(dir.file("limit.png"), "truncated");
+}
+
 TEST(PngReadRegression, AHugeAncillaryChunkIsSkippedNotAllocated) {  // found by fuzz_png_reader
     // 45 bytes announcing a 2 GB iTXt chunk: libpng used to allocate and zero 2 GB for it.
     expectBadPng(test::sourcePath("tests/fuzz/regressions/fuzz_png_reader/itxt_length_2gb.png"), "truncated");

@@ -60,4 +60,21 @@ inline std::string pngHeaderOnly(std::uint32_t width, std::uint32_t height) {
     return std::string("\x89PNG\r\n\x1a\n", 8) + bigEndian(13) + body + bigEndian(crc32(body));
 }
 
+/// A complete, valid-looking PNG (IHDR, IDAT, IEND with good CRCs) that announces width x
+/// height pixels but holds the data of a width x 1 grey image: what a huge image's header looks
+/// like, for a few bytes. A reader must refuse it from the IHDR.
+inline std::string forgedHugePng(const std::string& scratchPath, std::uint32_t width, std::uint32_t height) {
+    PngSpec s;
+    s.width = int(width), s.height = 1;
+    s.bytes.assign(width, 0);
+    writeTestPng(scratchPath, s);
+    std::FILE* f = std::fopen(scratchPath.c_str(), "rb");
+    std::string bytes;
+    for (int c; (c = std::fgetc(f)) != EOF;) bytes.push_back(char(c));
+    std::fclose(f);
+    bytes.replace(20, 4, bigEndian(height));  // IHDR data starts at 16: width, then height
+    bytes.replace(29, 4, bigEndian(crc32(bytes.substr(12, 17))));
+    return bytes;
+}
+
 }  // namespace shapevo::test

@@ -81,17 +81,44 @@ TEST(ImageCamera, ShadowFollowsTheLightOntoTheGroundRectangle) {
     s.light = {1.0, -2.0, -0.5};
     s.groundY = -1.0;
     s.groundMin = {-10.0, 0.0};
-    s.groundMax = {10.0, 5.0};
+    s.groundMax = {10.0, 10.0};
     const Camera c = compile(s);
+    EXPECT_FALSE(c.groundExtended());
     // (0, 3, 2) is 4 above the ground: the ray travels 4 / 2 = 2 light lengths -> (2, -1, 1).
     const glm::dvec2 p = c.project({0.0, 3.0, 2.0});
     EXPECT_NEAR(p.x, (2.0 + 10.0) / 20.0 * 200.0, 1e-9);
-    EXPECT_NEAR(p.y, (1.0 - 0.0) / 5.0 * 100.0, 1e-9);
-    const glm::dvec2 g = c.project({-10.0, -1.0, 5.0});  // on the ground: its own position
+    EXPECT_NEAR(p.y, (1.0 - 0.0) / 10.0 * 100.0, 1e-9);
+    const glm::dvec2 g = c.project({-10.0, -1.0, 10.0});  // on the ground: its own position
     EXPECT_NEAR(g.x, 0.0, 1e-9);
     EXPECT_NEAR(g.y, 100.0, 1e-9);
     EXPECT_TRUE(c.visible({0.0, -1.0, 0.0}));
     EXPECT_FALSE(c.visible({0.0, -1.001, 0.0}));  // below the ground casts nothing
+}
+
+TEST(ImageCamera, ShadowGroundRectangleIsExtendedAboutItsCentreToSquarePixels) {
+    CameraSpec s;
+    s.projection = Projection::Shadow;
+    s.light = {0.0, -1.0, 0.0};
+    s.width = 200, s.height = 100;  // 2 : 1
+    s.groundMin = {-2.0, 1.0}, s.groundMax = {2.0, 5.0};  // 1 : 1 -> x is extended to -4..4
+    Camera c = compile(s);
+    EXPECT_TRUE(c.groundExtended());
+    EXPECT_EQ(c.groundMin(), glm::dvec2(-4.0, 1.0));
+    EXPECT_EQ(c.groundMax(), glm::dvec2(4.0, 5.0));
+    EXPECT_NEAR(c.project({-4.0, 0.0, 1.0}).x, 0.0, 1e-9);
+    EXPECT_NEAR(c.project({4.0, 0.0, 5.0}).x, 200.0, 1e-9);
+    EXPECT_NEAR(c.project({4.0, 0.0, 5.0}).y, 100.0, 1e-9);
+    const glm::dvec2 a = c.project({0.0, 0.0, 3.0}), b = c.project({1.0, 0.0, 4.0});
+    EXPECT_NEAR(b.x - a.x, b.y - a.y, 1e-9);  // one world unit is as many pixels across as down
+    s.width = 100, s.height = 300;  // 1 : 3 -> z is extended to 3 -+ 6
+    c = compile(s);
+    EXPECT_TRUE(c.groundExtended());
+    EXPECT_EQ(c.groundMin(), glm::dvec2(-2.0, -3.0));
+    EXPECT_EQ(c.groundMax(), glm::dvec2(2.0, 9.0));
+    s.width = 4000, s.height = 4001;  // within 0.1 %: kept as given
+    c = compile(s);
+    EXPECT_FALSE(c.groundExtended());
+    EXPECT_EQ(c.groundMin(), s.groundMin);
 }
 
 /// The "where" of the InputError that compiling `s` throws ("accepted" if none).

@@ -17,24 +17,24 @@ namespace {
 
 const std::string kReference = test::sourcePath("targets/shapegenetics/");
 
-/// A 70 x 3 grey+alpha picture (two words per row) with luminance x * 3 + y and alpha 0 on column 5.
+/// A 70 x 8 grey+alpha picture (two words per row) with luminance x * 3 + y and alpha 0 on column 5.
 void writeRamp(const std::string& path) {
     std::vector<std::uint8_t> rgba;
-    for (int y = 0; y < 3; ++y)
+    for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 70; ++x) {
             const auto v = std::uint8_t(x * 3 + y);
             rgba.insert(rgba.end(), {v, v, v, std::uint8_t(x == 5 ? 0 : 255)});
         }
-    writePngRgba(path, 70, 3, rgba);
+    writePngRgba(path, 70, 8, rgba);
 }
 
 TEST(ImageTarget, DefaultRuleMakesDarkPixelsHitLightOnesAvoidAndTransparentOnesDontCare) {
     test::TempDir dir;
     writeRamp(dir.file("ramp.png"));
-    const ImageTarget t = loadImageTarget(dir.file("ramp.png"), PixelRule{}, 70, 3);
+    const ImageTarget t = loadImageTarget(dir.file("ramp.png"), PixelRule{}, 70, 8);
     ASSERT_EQ(t.wordsPerRow(), 2);
     std::uint64_t hits = 0, avoids = 0;
-    for (int y = 0; y < 3; ++y)
+    for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 70; ++x) {
             const int v = x * 3 + y;
             const bool care = x != 5;
@@ -46,7 +46,7 @@ TEST(ImageTarget, DefaultRuleMakesDarkPixelsHitLightOnesAvoidAndTransparentOnesD
     EXPECT_EQ(t.hitCount, hits);
     EXPECT_EQ(t.avoidCount, avoids);
     // bits past the width stay clear
-    for (int y = 0; y < 3; ++y) EXPECT_EQ(t.hit[std::size_t(y) * 2 + 1] >> 6, 0u);
+    for (int y = 0; y < 8; ++y) EXPECT_EQ(t.hit[std::size_t(y) * 2 + 1] >> 6, 0u);
 }
 
 TEST(ImageTarget, CustomRangesLeaveTheGapAsDontCare) {
@@ -74,30 +74,30 @@ TEST(ImageTarget, HashDependsOnThePixels) {
     EXPECT_NE(a.hash, makeImageTarget(8, 2, lum, alpha, PixelRule{}).hash);
 }
 
-TEST(ImageTarget, OddSizedImageIsAnErrorNamingBothSizes) {
+TEST(ImageTarget, OddSizedImageWithExactFitIsAnErrorNamingBothSizes) {
     test::TempDir dir;
     writeRamp(dir.file("ramp.png"));
     try {
-        loadImageTarget(dir.file("ramp.png"), PixelRule{}, 800, 600);
+        loadImageTarget(dir.file("ramp.png"), PixelRule{}, 800, 600, TargetFit::Exact);
         FAIL() << "accepted";
     } catch (const InputError& e) {
         const std::string what = e.what();
         EXPECT_EQ(e.file(), dir.file("ramp.png"));
         EXPECT_NE(what.find("odd-sized"), std::string::npos) << what;
-        EXPECT_NE(what.find("70 x 3"), std::string::npos) << what;
+        EXPECT_NE(what.find("70 x 8"), std::string::npos) << what;
         EXPECT_NE(what.find("800 x 600"), std::string::npos) << what;
     }
 }
 
 TEST(ImageTarget, TargetWithoutHitPixelsIsAnError) {
     test::TempDir dir;
-    std::vector<std::uint8_t> white(4 * 4 * 4, 255);
-    writePngRgba(dir.file("white.png"), 4, 4, white);
-    EXPECT_THROW(loadImageTarget(dir.file("white.png"), PixelRule{}, 4, 4), InputError);
-    std::vector<std::uint8_t> clear(4 * 4 * 4, 0);  // black but fully transparent
-    writePngRgba(dir.file("clear.png"), 4, 4, clear);
+    std::vector<std::uint8_t> white(8 * 8 * 4, 255);
+    writePngRgba(dir.file("white.png"), 8, 8, white);
+    EXPECT_THROW(loadImageTarget(dir.file("white.png"), PixelRule{}, 8, 8), InputError);
+    std::vector<std::uint8_t> clear(8 * 8 * 4, 0);  // black but fully transparent
+    writePngRgba(dir.file("clear.png"), 8, 8, clear);
     try {
-        loadImageTarget(dir.file("clear.png"), PixelRule{}, 4, 4);
+        loadImageTarget(dir.file("clear.png"), PixelRule{}, 8, 8);
         FAIL() << "accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("no hit pixel"), std::string::npos) << e.what();

@@ -152,7 +152,8 @@ TEST(SilhouetteGeometry, SpheresFillTheirExactOutlineFromInside) {
             case Projection::Perspective: o = s.eye, d = f + ((x - 0.5 * w) / focal) * r - ((y - 0.5 * h) / focal) * up; break;
             case Projection::Orthographic: o = s.eye + ((x - 0.5 * w) / perUnit) * r - ((y - 0.5 * h) / perUnit) * up, d = f; break;
             case Projection::Shadow:
-                o = {s.groundMin.x + x / w * (s.groundMax.x - s.groundMin.x), s.groundY, s.groundMin.y + y / h * (s.groundMax.y - s.groundMin.y)};
+                o = {camera.groundMin().x + x / w * (camera.groundMax().x - camera.groundMin().x), s.groundY,
+                     camera.groundMin().y + y / h * (camera.groundMax().y - camera.groundMin().y)};  // the rectangle used
                 d = -s.light;
                 break;
             }

@@ -1,0 +1,101 @@
+// The [target] keys of an image target that fit it into the camera's frame and choose its pixels:
+// target.fit (contain by default, cover, stretch, exact) and target.cover (dark by default,
+// light, opaque), their errors with place, cover against the explicit luminance ranges, and a
+// relative target.image given with --set being taken from the current directory.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "base/input_error.hpp"
+#include "run/config_file.hpp"
+
+namespace shapevo {
+namespace {
+
+const std::string kImage = "[grammar]\nfile = \"g.grammar\"\n[target]\nimage = \"logo.png\"\n";
+
+RunSettings parse(const std::string& extra, const std::vector<std::string>& overrides = {}) {
+    return parseConfig(kImage + extra, "/configs/x.toml", overrides);
+}
+
+InputError errorOf(const std::string& extra, const std::vector<std::string>& overrides = {}) {
+    try {
+        parse(extra, overrides);
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "accepted:\n" << extra;
+    return InputError("", "", "");
+}
+
+void expectRule(const PixelRule& r, const PixelRule& want) {
+    EXPECT_EQ(r.hitMin, want.hitMin);
+    EXPECT_EQ(r.hitMax, want.hitMax);
+    EXPECT_EQ(r.avoidMin, want.avoidMin);
+    EXPECT_EQ(r.avoidMax, want.avoidMax);
+    EXPECT_EQ(r.alphaThreshold, want.alphaThreshold);
+    EXPECT_EQ(r.transparentAvoid, want.transparentAvoid);
+}
+
+TEST(ImageTargetKeys, FitDefaultsToContainAndCoverToDark) {
+    const RunSettings s = parse("");
+    ASSERT_TRUE(s.image);
+    EXPECT_EQ(s.image->fit, TargetFit::Contain);
+    expectRule(s.image->rule, PixelRule{});
+    expectRule(s.image->rule, PixelRule::forCover(TargetCover::Dark));
+    EXPECT_EQ(s.image->png, "/configs/logo.png");  // in the file: relative to the config
+}
+
+TEST(ImageTargetKeys, EveryFitIsAcceptedByNameAndAnotherNamesTheKey) {
+    for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
+        EXPECT_EQ(parse(std::string("fit = \"") + targetFitName(f) + "\"\n").image->fit, f);
+    const InputError e = errorOf("fit = \"fill\"\n");
+    EXPECT_EQ(e.file(), "/configs/x.toml");
+    EXPECT_EQ(e.where(), "5:7");
+    EXPECT_NE(e.message().find("target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"fill\""), std::string::npos)
+        << e.message();
+    const InputError set = errorOf("", {"target.fit=squash"});
+    EXPECT_EQ(set.file(), "--set");
+    EXPECT_NE(set.message().find("target.fit"), std::string::npos) << set.message();
+    EXPECT_EQ(parse("", {"target.fit=stretch"}).image->fit, TargetFit::Stretch);
+}
+
+TEST(ImageTargetKeys, CoverPresetsSetTheRangesAndKeepTheAlphaThreshold) {
+    expectRule(parse("cover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light));
+    expectRule(parse("cover = \"opaque\"\n").image->rule, PixelRule::forCover(TargetCover::Opaque));
+    expectRule(parse("cover = \"opaque\"\nalpha_threshold = 10\n").image->rule, PixelRule::forCover(TargetCover::Opaque, 10));
+    expectRule(parse("alpha_threshold = 10\ncover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light, 10));
+    expectRule(parse("cover = \"dark\"\n", {"target.cover=opaque"}).image->rule, PixelRule::forCover(TargetCover::Opaque));
+    const InputError e = errorOf("cover = \"alpha\"\n");
+    EXPECT_EQ(e.where(), "5:9");
+    EXPECT_NE(e.message().find("target.cover must be \"dark\", \"light\" or \"opaque\", got \"alpha\""), std::string::npos)
+        << e.message();
+}
+
+TEST(ImageTargetKeys, CoverAndAnExplicitLuminanceRangeTogetherAreAnErrorNamingBoth) {
+    const InputError e = errorOf("cover = \"light\"\nhit_max = 100\n");
+    EXPECT_EQ(e.where(), "6:11");  // the later of the two keys
+    EXPECT_NE(e.message().find("target.cover and target.hit_max both say which pixels to cover"), std::string::npos) << e.message();
+    const InputError set = errorOf("avoid_min = 200\n", {"target.cover=opaque"});
+    EXPECT_EQ(set.file(), "--set");
+    EXPECT_NE(set.message().find("target.avoid_min"), std::string::npos) << set.message();
+    // without cover the ranges work as before
+    const PixelRule r = parse("hit_max = 80\navoid_min = 200\n").image->rule;
+    EXPECT_EQ(r.hitMax, 80);
+    EXPECT_EQ(r.avoidMin, 200);
+}
+
+TEST(ImageTargetKeys, ARelativeImageGivenWithSetIsTakenFromTheCurrentDirectory) {
+    const RunSettings s = parse("", {"target.image=my logo.png"});
+    const std::string want = (std::filesystem::current_path() / "my logo.png").lexically_normal().string();
+    EXPECT_EQ(s.image->png, want);
+    // recorded absolute in the stored config, so a resume (which re-reads that text) finds it
+    EXPECT_NE(s.configText.find(want), std::string::npos) << s.configText;
+    EXPECT_EQ(parseConfig(s.configText, "/configs/x.toml").image->png, want);
+    EXPECT_EQ(parse("", {"target.image=/abs/logo.png"}).image->png, "/abs/logo.png");
+}
+
+}  // namespace
+}  // namespace shapevo
