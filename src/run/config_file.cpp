@@ -411,6 +411,12 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
             rd.fail(*target->get("fit"),
                     "target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"" + shortened(fit) + "\"");
     }
+    rd.number(target, "target", "scale", pixels.scale, 0.01, 1.0);
+    if (rd.key(target, "target", "scale") && pixels.scale < 1.0 && pixels.fit != TargetFit::Contain &&
+        pixels.fit != TargetFit::Stretch)
+        rd.failKeys({"target.scale", "target.fit"}, "[target]",
+                    "target.scale makes the picture take part of the frame, which only target.fit = \"contain\" or "
+                    "\"stretch\" do (\"" + std::string(targetFitName(pixels.fit)) + "\" takes the whole frame)");
     const toml::table* camera = rd.section("camera");
     if (!image.empty()) {
         if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))

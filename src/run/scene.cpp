@@ -88,7 +88,8 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     if (s.image) {
         scene->camera_ = Camera::compile(s.image->camera, s.configPath);
         scene->image_ =
-            loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height(), s.image->fit);
+            loadImageTarget(s.image->png, s.image->rule, scene->camera_->width(), scene->camera_->height(), s.image->fit,
+                            s.image->scale);
         const ImageTarget& t = *scene->image_;
         auto scorer = std::make_unique<ImageScorer>(g, *scene->camera_, t, s.fitness);
         scorer->setMaxPrimitives(s.limits.maxPrimitives);

@@ -3,6 +3,9 @@
 #include "score/image_target.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include <algorithm>
 
 #include "base/hash.hpp"
 #include "base/input_error.hpp"
@@ -127,6 +130,15 @@ TargetPlacement placeTarget(int pw, int ph, int fw, int fh, TargetFit fit) {
     return p;
 }
 
+TargetPlacement placeTarget(int pw, int ph, int fw, int fh, TargetFit fit, double scale) {
+    if (scale >= 1.0 || (fit != TargetFit::Contain && fit != TargetFit::Stretch) || (pw == fw && ph == fh))
+        return placeTarget(pw, ph, fw, fh, fit);
+    const int bw = std::max(1, int(std::lround(fw * scale))), bh = std::max(1, int(std::lround(fh * scale)));
+    TargetPlacement p = placeTarget(pw, ph, bw, bh, fit);
+    p.x += (fw - bw) / 2, p.y += (fh - bh) / 2;
+    return p;
+}
+
 ImageTarget makeImageTarget(int width, int height, const std::vector<std::uint8_t>& luminance,
                             const std::vector<std::uint8_t>& alpha, const PixelRule& rule) {
     ImageTarget t;
@@ -200,7 +212,8 @@ ImageTarget fitImageTarget(const ImageTarget& picture, int frameWidth, int frame
     return t;
 }
 
-ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int frameWidth, int frameHeight, TargetFit fit) {
+ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int frameWidth, int frameHeight, TargetFit fit,
+                            double scale) {
     const PngImage image = readPng(path);
     if (image.width < kMinTargetSide || image.height < kMinTargetSide)
         throw InputError(path, "",
@@ -219,7 +232,7 @@ ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int 
                          "no transparent pixel: target.cover = \"opaque\" covers the pixels with alpha >= " +
                              std::to_string(rule.alphaThreshold) + " and avoids the others, but every pixel is opaque; "
                              "use target.cover = \"dark\" or \"light\" for a picture without a transparent background");
-    ImageTarget t = fitImageTarget(picture, frameWidth, frameHeight, placeTarget(image.width, image.height, frameWidth, frameHeight, fit));
+    ImageTarget t = fitImageTarget(picture, frameWidth, frameHeight, placeTarget(image.width, image.height, frameWidth, frameHeight, fit, scale));
     if (t.hitCount == 0) {
         const std::string which = opaqueRule ? "no pixel has alpha >= " + std::to_string(rule.alphaThreshold)
                                              : "no pixel has luminance in " + range(rule.hitMin, rule.hitMax) +

@@ -15,6 +15,9 @@
 //   cover              aspect kept, as small as fills the frame, centred; the overflow is cut off;
 //   stretch            the whole frame, aspect not kept;
 //   exact              the picture must be the frame's size (an error otherwise).
+// contain and stretch may use a centred part of the frame only (target.scale, e.g. 0.6: the
+// picture takes at most 60% of the frame's width and height; the rest is don't care), so that a
+// logo is drawn at the size the scene's grammar can reach.
 // Resampling is an exact, deterministic area vote: a frame pixel takes the class (hit, avoid,
 // don't care) that covers most of its area in the picture, computed in integers; ties go to hit,
 // then avoid. A picture of the frame's size comes through unchanged whatever the fit.
@@ -64,6 +67,13 @@ struct TargetPlacement {
 /// (loadImageTarget checks the sizes).
 TargetPlacement placeTarget(int pictureWidth, int pictureHeight, int frameWidth, int frameHeight, TargetFit fit);
 
+/// The same within a box of `scale` (in (0, 1]) times the frame's width and height, rounded (at
+/// least 1 pixel), centred in the frame (config key target.scale: how much of the frame a picture
+/// may take). Only for contain and stretch (cover and exact take the whole frame); a picture of
+/// the frame's own size is placed on the whole frame whatever the scale: it was drawn for it.
+TargetPlacement placeTarget(int pictureWidth, int pictureHeight, int frameWidth, int frameHeight, TargetFit fit,
+                            double scale);
+
 const char* targetFitName(TargetFit fit);      ///< "contain", "cover", "stretch", "exact"
 const char* targetCoverName(TargetCover cover);  ///< "dark", "light", "opaque"
 
@@ -99,6 +109,6 @@ ImageTarget fitImageTarget(const ImageTarget& picture, int frameWidth, int frame
 /// target), if no pixel of the fitted target is a hit pixel (nothing to match), or, for the
 /// opaque preset (transparentAvoid with the full hit range), if no pixel is transparent.
 ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int frameWidth, int frameHeight,
-                            TargetFit fit = TargetFit::Contain);
+                            TargetFit fit = TargetFit::Contain, double scale = 1.0);
 
 }  // namespace shapevo

@@ -15,6 +15,7 @@ struct ImageSceneSettings {
     std::string png;
     PixelRule rule;
     TargetFit fit = TargetFit::Contain;
+    double scale = 1.0;  ///< target.scale: the share of the frame's width and height a fitted picture may take
     CameraSpec camera;
 };
 

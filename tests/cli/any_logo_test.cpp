@@ -5,11 +5,13 @@
 // a floor. A relative --set path is taken from the current directory and a resume finds the same
 // target; a 1 x 1 or 30000 x 30000 PNG is one clear message and exit 2, creating nothing.
 //
-// The floors were measured at seeds 1-5 with these settings: the worst IoUs were tree-logo +
-// disc 0.229, city-whale + bar 0.575, tree-logo + star 0.296 (seed 1, the one run here: 0.294,
-// 0.596, 0.345), against 0.15-0.18, 0.38-0.42 and 0.20-0.23 for the best of the initial
-// population (generation 1): each floor lies between the two, so a run that does not improve on
-// its random start fails, and one no better than the old code (exit 2, or IoU 0) certainly does.
+// The floors were measured at seeds 1-5 with these settings (tree-logo with its target.scale =
+// 0.45): the worst IoUs were tree-logo + disc 0.797, city-whale + bar 0.575, tree-logo + star 0.520
+// (seed 1, the one run here: 0.875, 0.596, 0.675), against 0.68-0.70, 0.38-0.42 and 0.47-0.51 for
+// the best of the initial population (generation 1, seeds 1-3). The disc and bar floors lie
+// between the two; the star's (0.55) lies above seed 3's 0.520, which stays near its start, and
+// well below seed 1's. A run that does not improve on its random start fails, and one no better
+// than the old code (exit 2, or IoU 0) certainly does.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -72,7 +74,7 @@ void expectIoUAbove(const char* config, const char* logo, Write write, const std
 TEST(AnyLogo, TreeLogoConfigGrowsATreeWhoseShadowIsATallDisc) {
     expectIoUAbove("tree-logo", "disc.png", [](const std::string& path) {
         writeLogo(path, 229, 304, [](int x, int y) { return std::hypot(x - 114, y - 152) < 100; }, kBlack, kWhite);
-    }, " --set ga.generations=25", 0.20);
+    }, " --set ga.generations=25", 0.75);
 }
 
 TEST(AnyLogo, CityWhaleConfigBuildsASkylineShapedLikeAWideBar) {
@@ -86,7 +88,7 @@ TEST(AnyLogo, TreeLogoConfigCoversTheOpaquePixelsOfAWhiteStarOnTransparency) {
         writeLogo(path, 256, 256, [](int x, int y) {
             return std::hypot(x - 128, y - 128) < 60 + 40 * std::cos(5 * std::atan2(y - 128.0, x - 128.0));
         }, kWhite, kClear);
-    }, " --set target.cover=opaque --set ga.generations=25", 0.26);
+    }, " --set target.cover=opaque --set ga.generations=25", 0.55);
 }
 
 TEST(AnyLogo, ARelativeLogoIsTakenFromTheCurrentDirectoryAndAResumeFindsTheSameTarget) {

@@ -62,6 +62,16 @@ TEST(ImageTargetKeys, EveryFitIsAcceptedByNameAndAnotherNamesTheKey) {
     EXPECT_EQ(parse("", {"target.fit=stretch"}).image->fit, TargetFit::Stretch);
 }
 
+TEST(ImageTargetKeys, ScaleIsAShareOfTheFrameForContainAndStretchOnly) {
+    EXPECT_EQ(parse("").image->scale, 1.0);
+    EXPECT_EQ(parse("scale = 0.6\n").image->scale, 0.6);
+    EXPECT_EQ(parse("scale = 0.5\nfit = \"stretch\"\n").image->scale, 0.5);
+    EXPECT_NE(errorOf("scale = 0\n").message().find("target.scale"), std::string::npos);
+    EXPECT_NE(errorOf("scale = 1.5\n").message().find("target.scale"), std::string::npos);
+    const InputError cover = errorOf("scale = 0.5\nfit = \"cover\"\n");
+    EXPECT_NE(cover.message().find("only target.fit = \"contain\" or \"stretch\""), std::string::npos) << cover.message();
+}
+
 TEST(ImageTargetKeys, CoverPresetsSetTheRangesAndKeepTheAlphaThreshold) {
     expectRule(parse("cover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light));
     expectRule(parse("cover = \"opaque\"\n").image->rule, PixelRule::forCover(TargetCover::Opaque));

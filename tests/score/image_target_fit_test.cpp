@@ -243,3 +243,20 @@ TEST(TargetCoverPreset, LoadExplainsAPictureThePresetFindsNothingIn) {
 
 }  // namespace
 }  // namespace shapevo
+
+namespace shapevo {
+namespace {
+
+// target.scale: contain and stretch within a centred box of the frame; a picture of the frame's
+// size, cover and exact are placed as without it.
+TEST(TargetScale, ContainAndStretchUseACentredPartOfTheFrame) {
+    EXPECT_EQ(placeTarget(229, 304, 800, 600, TargetFit::Contain, 0.5), (TargetPlacement{287, 150, 226, 300}));
+    EXPECT_EQ(placeTarget(400, 150, 800, 600, TargetFit::Stretch, 0.5), (TargetPlacement{200, 150, 400, 300}));
+    EXPECT_EQ(placeTarget(229, 304, 800, 600, TargetFit::Contain, 1.0), placeTarget(229, 304, 800, 600, TargetFit::Contain));
+    EXPECT_EQ(placeTarget(800, 600, 800, 600, TargetFit::Contain, 0.5), (TargetPlacement{0, 0, 800, 600}));
+    EXPECT_EQ(placeTarget(229, 304, 800, 600, TargetFit::Cover, 0.5), placeTarget(229, 304, 800, 600, TargetFit::Cover));
+    EXPECT_EQ(placeTarget(20, 20, 10, 10, TargetFit::Contain, 0.01), (TargetPlacement{4, 4, 1, 1}));
+}
+
+}  // namespace
+}  // namespace shapevo
