@@ -1,0 +1,151 @@
+// repairForVolume: analyseMesh, then (only for a mesh with open edges) CGAL: orient the welded
+// triangle soup (which also splits non-manifold edges so the soup becomes a polygon mesh), build
+// a Surface_mesh, stitch coincident borders, split vertices where holes touch, and triangulate
+// every remaining border cycle.
+#include "mesh/mesh_repair.hpp"
+
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "base/input_error.hpp"
+
+namespace shapevo {
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(4);
+    s << v;
+    return s.str();
+}
+
+/// Fills the holes of `welded` into `out` (mesh, counts). Leaves out.mesh empty if CGAL cannot
+/// make a polygon mesh of the soup at all.
+void fillHoles(const WeldedMesh& welded, MeshRepair& out) {
+    std::vector<Point> points;
+    points.reserve(welded.vertices.size());
+    for (const glm::vec3& v : welded.vertices) points.emplace_back(v.x, v.y, v.z);
+    std::vector<std::vector<std::size_t>> polygons;
+    polygons.reserve(welded.triangles.size());
+    for (const auto& t : welded.triangles) polygons.push_back({t[0], t[1], t[2]});
+    PMP::orient_polygon_soup(points, polygons);  // false only means points were duplicated
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return;
+
+    SurfaceMesh sm;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+    PMP::stitch_borders(sm);
+    // Holes that touch at a vertex would otherwise be one figure-8 border cycle, whose filling
+    // makes a non-manifold edge: give each hole its own copy of the pinch vertex.
+    PMP::duplicate_non_manifold_vertices(sm);
+    std::vector<SurfaceMesh::Halfedge_index> cycles;
+    PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
+    for (const SurfaceMesh::Halfedge_index h : cycles) {
+        std::vector<SurfaceMesh::Face_index> added;
+        try {
+            PMP::triangulate_hole(sm, h, std::back_inserter(added));
+        } catch (const std::exception&) {
+            added.clear();  // a CGAL precondition on a pathological loop: leave the hole
+        }
+        if (added.empty()) {
+            ++out.unfilledHoles;
+            continue;
+        }
+        ++out.filledHoles;
+        out.addedTriangles += added.size();
+        for (const SurfaceMesh::Face_index f : added) out.fillArea += PMP::face_area(f, sm);
+    }
+
+    Mesh& m = out.mesh;
+    m.vertices.reserve(sm.number_of_vertices());
+    for (const SurfaceMesh::Vertex_index v : sm.vertices()) {
+        const Point& p = sm.point(v);
+        m.vertices.emplace_back(float(p.x()), float(p.y()), float(p.z()));
+    }
+    for (const SurfaceMesh::Face_index f : sm.faces()) {
+        std::array<std::uint32_t, 3> tri{};
+        int k = 0;
+        for (const SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+            if (k < 3) tri[k++] = std::uint32_t(v.idx());
+        if (k == 3) m.triangles.push_back(tri);
+    }
+}
+
+}  // namespace
+
+MeshRepair repairForVolume(const Mesh& mesh, const std::string& path) {
+    MeshRepair r;
+    WeldedMesh welded;
+    r.found = analyseMesh(mesh, &welded);
+    if (r.found.closed()) {
+        r.mesh = mesh;
+        return r;
+    }
+    fillHoles(welded, r);
+    if (r.mesh.triangles.empty()) {  // CGAL could not take it: let OpenVDB try the soup as it is
+        r.mesh.vertices = welded.vertices;
+        r.mesh.triangles = welded.triangles;
+        r.unfilledHoles = r.found.holes;
+    }
+    if (r.fillArea > kMaxFillAreaFraction * r.found.surfaceArea)
+        throw InputError(path, "",
+                         "the inside of the mesh cannot be determined: it is mostly holes (" +
+                             groupedNumber(r.found.openEdges) + " open edges in " + groupedNumber(r.found.holes) +
+                             (r.found.holes == 1 ? " hole" : " holes") + " whose filling would have " + number(r.fillArea) +
+                             " units^2, against " + number(r.found.surfaceArea) +
+                             " units^2 of surface); a volume target needs a mesh that encloses its inside");
+    return r;
+}
+
+std::string groupedNumber(std::size_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+std::string describeRepair(const MeshRepair& r) {
+    const MeshDefects& d = r.found;
+    auto count = [](std::size_t n, const char* one, const char* many) {
+        return groupedNumber(n) + " " + (n == 1 ? one : many);
+    };
+    std::string s = count(d.triangles, "triangle", "triangles");
+    if (d.closed()) {
+        s += ", closed";
+    } else {
+        s += ", " + count(d.openEdges, "open edge", "open edges") + " in " + count(d.holes, "hole", "holes") + ": ";
+        if (r.unfilledHoles == 0)
+            s += "filled (";
+        else if (r.filledHoles == 0)
+            s += "not filled (";
+        else
+            s += "partly filled (" + count(r.unfilledHoles, "border cycle", "border cycles") + " left open, ";
+        s += count(r.addedTriangles, "triangle", "triangles") + " added)";
+    }
+    if (d.seamVertices) s += "; " + count(d.seamVertices, "duplicated vertex", "duplicated vertices") + " (seams)";
+    if (d.nonManifoldEdges) s += "; " + count(d.nonManifoldEdges, "non-manifold edge", "non-manifold edges");
+    if (d.duplicateTriangles) s += "; " + count(d.duplicateTriangles, "duplicated triangle", "duplicated triangles");
+    if (d.degenerateTriangles) s += "; " + count(d.degenerateTriangles, "degenerate triangle", "degenerate triangles");
+    if (d.components > 1) s += "; " + count(d.components, "piece", "pieces");
+    return s;
+}
+
+}  // namespace shapevo
