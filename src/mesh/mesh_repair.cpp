@@ -1,17 +1,18 @@
 // repairForVolume: analyseMesh, then (only for a mesh with open edges) CGAL: orient the welded
 // triangle soup (which also splits non-manifold edges so the soup becomes a polygon mesh), build
-// a Surface_mesh, stitch coincident borders, split vertices where holes touch, and triangulate
-// every remaining border cycle.
+// a Surface_mesh, stitch coincident borders, and triangulate every remaining border cycle as
+// polylines (CGAL's hole triangulation), a cycle through a vertex twice split into simple loops.
 #include "mesh/mesh_repair.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
@@ -36,6 +37,25 @@ std::string number(double v) {
     return s.str();
 }
 
+/// A border cycle that passes a vertex twice (holes touching at a vertex: a figure 8) as simple
+/// loops, each vertex once; loops of fewer than 3 vertices bound nothing and are dropped.
+std::vector<std::vector<std::uint32_t>> simpleLoops(const std::vector<std::uint32_t>& cycle) {
+    std::vector<std::vector<std::uint32_t>> loops;
+    std::vector<std::uint32_t> stack;
+    for (const std::uint32_t v : cycle) {
+        const auto seen = std::find(stack.begin(), stack.end(), v);
+        if (seen == stack.end()) {
+            stack.push_back(v);
+            continue;
+        }
+        loops.emplace_back(seen, stack.end());  // v ... back to v
+        stack.erase(seen + 1, stack.end());
+    }
+    loops.push_back(stack);
+    std::erase_if(loops, [](const std::vector<std::uint32_t>& l) { return l.size() < 3; });
+    return loops;
+}
+
 /// Fills the holes of `welded` into `out` (mesh, counts). Leaves out.mesh empty if CGAL cannot
 /// make a polygon mesh of the soup at all.
 void fillHoles(const WeldedMesh& welded, MeshRepair& out) {
@@ -51,26 +71,46 @@ void fillHoles(const WeldedMesh& welded, MeshRepair& out) {
     SurfaceMesh sm;
     PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
     PMP::stitch_borders(sm);
-    // Holes that touch at a vertex would otherwise be one figure-8 border cycle, whose filling
-    // makes a non-manifold edge: give each hole its own copy of the pinch vertex.
-    PMP::duplicate_non_manifold_vertices(sm);
+    sm.collect_garbage();  // stitching removes vertices: make the indices below contiguous again
     std::vector<SurfaceMesh::Halfedge_index> cycles;
     PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
-    for (const SurfaceMesh::Halfedge_index h : cycles) {
-        std::vector<SurfaceMesh::Face_index> added;
-        try {
-            PMP::triangulate_hole(sm, h, std::back_inserter(added));
-        } catch (const std::exception&) {
-            added.clear();  // a CGAL precondition on a pathological loop: leave the hole
+
+    // Orienting the soup gives a vertex where holes touch one copy per fan, so a figure-8 cycle
+    // passes two copies: name each border vertex by the first one at its position.
+    std::map<Point, std::uint32_t> firstAt;
+    std::vector<std::array<std::uint32_t, 3>> patches;
+    for (const SurfaceMesh::Halfedge_index start : cycles) {
+        std::vector<std::uint32_t> cycle;
+        SurfaceMesh::Halfedge_index h = start;
+        do {
+            const SurfaceMesh::Vertex_index v = sm.target(h);
+            cycle.push_back(firstAt.emplace(sm.point(v), std::uint32_t(v.idx())).first->second);
+            h = sm.next(h);
+        } while (h != start && cycle.size() <= sm.number_of_halfedges());
+        for (const std::vector<std::uint32_t>& loop : simpleLoops(cycle)) {
+            std::vector<Point> polyline;
+            for (std::uint32_t v : loop) polyline.push_back(sm.point(SurfaceMesh::Vertex_index(v)));
+            std::vector<CGAL::Triple<int, int, int>> patch;
+            try {
+                PMP::triangulate_hole_polyline(polyline, std::back_inserter(patch));
+            } catch (const std::exception&) {
+                patch.clear();  // a CGAL precondition on a pathological loop: leave the hole
+            }
+            if (patch.empty()) {
+                ++out.unfilledHoles;
+                continue;
+            }
+            ++out.filledHoles;
+            for (const auto& t : patch) {
+                const std::array<std::uint32_t, 3> tri{loop[std::size_t(t.first)], loop[std::size_t(t.second)],
+                                                       loop[std::size_t(t.third)]};
+                patches.push_back(tri);
+                out.fillArea += std::sqrt(CGAL::squared_area(polyline[std::size_t(t.first)], polyline[std::size_t(t.second)],
+                                                             polyline[std::size_t(t.third)]));
+            }
         }
-        if (added.empty()) {
-            ++out.unfilledHoles;
-            continue;
-        }
-        ++out.filledHoles;
-        out.addedTriangles += added.size();
-        for (const SurfaceMesh::Face_index f : added) out.fillArea += PMP::face_area(f, sm);
     }
+    out.addedTriangles = patches.size();
 
     Mesh& m = out.mesh;
     m.vertices.reserve(sm.number_of_vertices());
@@ -85,6 +125,7 @@ void fillHoles(const WeldedMesh& welded, MeshRepair& out) {
             if (k < 3) tri[k++] = std::uint32_t(v.idx());
         if (k == 3) m.triangles.push_back(tri);
     }
+    m.triangles.insert(m.triangles.end(), patches.begin(), patches.end());
 }
 
 }  // namespace

@@ -94,7 +94,11 @@ TEST(MeshRepair, HolesTouchingAtAVertexAreCountedApartAndClosed) {
     EXPECT_EQ(r.found.openEdges, 7u);
     EXPECT_EQ(r.found.holes, 2u);
     const MeshDefects after = analyseMesh(r.mesh);
+    EXPECT_EQ(r.filledHoles, 2u);  // one figure-8 border cycle, split at the shared vertex
+    EXPECT_EQ(r.addedTriangles, 3u);
     EXPECT_TRUE(after.closed()) << after.openEdges << " open edges left";
+    EXPECT_EQ(after.nonManifoldEdges, 0u);
+    EXPECT_NEAR(after.surfaceArea, 24.0, 1e-4);
 }
 
 TEST(MeshRepair, AnOpenSheetIsRefusedAsMostlyHoles) {
