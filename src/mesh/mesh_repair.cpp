@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 #include <vector>
 
@@ -42,14 +43,18 @@ std::string number(double v) {
 std::vector<std::vector<std::uint32_t>> simpleLoops(const std::vector<std::uint32_t>& cycle) {
     std::vector<std::vector<std::uint32_t>> loops;
     std::vector<std::uint32_t> stack;
+    std::unordered_map<std::uint32_t, std::size_t> onStack;  // vertex -> its place in `stack`
     for (const std::uint32_t v : cycle) {
-        const auto seen = std::find(stack.begin(), stack.end(), v);
-        if (seen == stack.end()) {
+        const auto seen = onStack.find(v);
+        if (seen == onStack.end()) {
+            onStack.emplace(v, stack.size());
             stack.push_back(v);
             continue;
         }
-        loops.emplace_back(seen, stack.end());  // v ... back to v
-        stack.erase(seen + 1, stack.end());
+        const auto from = stack.begin() + std::ptrdiff_t(seen->second);
+        loops.emplace_back(from, stack.end());  // v ... back to v
+        for (auto it = from + 1; it != stack.end(); ++it) onStack.erase(*it);
+        stack.erase(from + 1, stack.end());
     }
     loops.push_back(stack);
     std::erase_if(loops, [](const std::vector<std::uint32_t>& l) { return l.size() < 3; });
