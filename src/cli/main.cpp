@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <span>
 
 #include <CLI/CLI.hpp>
 
@@ -362,26 +364,27 @@ int main(int argc, char** argv) {
                 std::cout << "\n";
             }
         } else if (*target) {
+            // --image: a picture through an image config's camera; otherwise a volume.
             constexpr std::array<std::string_view, 1> kImageFormats{"png"};
+            requireOutputFormat(vdbOut, imageConfig.empty() ? std::span<const std::string_view>(kTargetFormats) : kImageFormats, "-o");
+            refuseExisting(vdbOut);
+            std::optional<RunSettings> imageSettings;
             if (!imageConfig.empty()) {
-                requireOutputFormat(vdbOut, kImageFormats, "-o");
-                refuseExisting(vdbOut);
-                const RunSettings s = loadConfig(imageConfig, {});
-                if (!s.image)
+                imageSettings = loadConfig(imageConfig, {});
+                if (!imageSettings->image)
                     throw InputError(imageConfig, "", "has no image target and camera ([target] image = \"FILE.png\" and a "
                                                       "[camera] section); --image draws through an image config's camera");
-                const Camera camera = Camera::compile(s.image->camera, imageConfig);
-                const Mesh mesh = readMesh(meshPath);
+            }
+            const Mesh mesh = readMesh(meshPath);
+            if (imageSettings) {
+                const Camera camera = Camera::compile(imageSettings->image->camera, imageConfig);
                 const std::uint64_t covered =
-                    writeMeshImageTarget(mesh, camera, s.image->rule, meshPath, imageConfig + " [target]", vdbOut);
+                    writeMeshImageTarget(mesh, camera, imageSettings->image->rule, meshPath, imageConfig + " [target]", vdbOut);
                 std::cout << "mesh: " << groupedNumber(mesh.triangles.size()) << " triangles; "
                           << (camera.projection() == Projection::Shadow ? "shadow" : "silhouette") << " covers "
                           << groupedNumber(covered) << " of " << camera.width() << " x " << camera.height() << " pixels\n"
                           << "wrote " << vdbOut << "\n";
             } else {
-                requireOutputFormat(vdbOut, kTargetFormats, "-o");
-                refuseExisting(vdbOut);
-                const Mesh mesh = readMesh(meshPath);
                 const MeshRepair repaired = repairForVolume(mesh, meshPath);
                 std::cout << "mesh: " << describeRepair(repaired) << std::endl;
                 const TargetVdbStats stats = writeTargetVdb(repaired.mesh, voxelSize, meshPath, vdbOut);
