@@ -5,12 +5,14 @@
 // stderr (cli/log_router.hpp). Output file names are checked (extension, existence), and a new
 // run's memory estimate, before anything is read or created.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <span>
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +27,7 @@
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_repair.hpp"
 #include "report/model_writer.hpp"
 #include "report/render/contact_sheet.hpp"
 #include "report/render/model_picture.hpp"
@@ -35,6 +38,8 @@
 #include "run/model_export.hpp"
 #include "run/run_job.hpp"
 #include "run/scene.hpp"
+#include "score/camera.hpp"
+#include "score/mesh_image_target.hpp"
 #include "score/vdb_target_file.hpp"
 #include "search/evaluator.hpp"
 
@@ -172,12 +177,19 @@ int main(int argc, char** argv) {
         ->capture_default_str();
 
     // target
-    auto* target = app.add_subcommand("target", "Make a volume target: closed mesh (OBJ/PLY/STL) -> OpenVDB level set");
-    std::string meshPath, vdbOut;
+    auto* target = app.add_subcommand("target", "Make a target from a mesh (OBJ/PLY/STL): a volume (OpenVDB level set of its "
+                                                "inside; seams, small holes and non-manifold edges are repaired and reported) "
+                                                "or, with --image, a picture of its silhouette or shadow");
+    std::string meshPath, vdbOut, imageConfig;
     double voxelSize = 0.1;
-    target->add_option("mesh", meshPath, "closed triangle mesh")->required();
-    target->add_option("-o,--output", vdbOut, "output .vdb (must not exist)")->required();
-    target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
+    target->add_option("mesh", meshPath, "triangle mesh; for a volume its inside must be determinable (holes filled, "
+                                         "at most half its surface)")->required();
+    target->add_option("-o,--output", vdbOut, "output .vdb, or .png with --image (must not exist)")->required();
+    auto* voxelOpt = target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
+    target->add_option("--image", imageConfig, "draw the mesh through the camera of this image config ([target] image and "
+                                               "[camera]) into a PNG of the camera's size that its pixel rule reads as hit "
+                                               "where the mesh is")
+        ->excludes(voxelOpt);
 
     // translate
     auto* translate = app.add_subcommand("translate", "Print what a CastleMaker rule file (.rule) compiles into, in the shapevo "
@@ -405,13 +417,34 @@ int main(int argc, char** argv) {
                           << "x" << sheet->height() << " pixels)\n";
             }
         } else if (*target) {
-            requireOutputFormat(vdbOut, kTargetFormats, "-o");
+            // --image: a picture through an image config's camera; otherwise a volume.
+            constexpr std::array<std::string_view, 1> kImageFormats{"png"};
+            requireOutputFormat(vdbOut, imageConfig.empty() ? std::span<const std::string_view>(kTargetFormats) : kImageFormats, "-o");
             refuseExisting(vdbOut);
+            std::optional<RunSettings> imageSettings;
+            if (!imageConfig.empty()) {
+                imageSettings = loadConfig(imageConfig, {});
+                if (!imageSettings->image)
+                    throw InputError(imageConfig, "", "has no image target and camera ([target] image = \"FILE.png\" and a "
+                                                      "[camera] section); --image draws through an image config's camera");
+            }
             const Mesh mesh = readMesh(meshPath);
-            requireClosed(mesh, meshPath);
-            writeTargetVdb(mesh, voxelSize, meshPath, vdbOut);
-            std::cout << "wrote " << vdbOut << " (" << mesh.triangles.size() << " triangles, voxel size " << voxelSize
-                      << ")\n";
+            if (imageSettings) {
+                const Camera camera = Camera::compile(imageSettings->image->camera, imageConfig);
+                const std::uint64_t covered =
+                    writeMeshImageTarget(mesh, camera, imageSettings->image->rule, meshPath, imageConfig + " [target]", vdbOut);
+                std::cout << "mesh: " << groupedNumber(mesh.triangles.size()) << " triangles; "
+                          << (camera.projection() == Projection::Shadow ? "shadow" : "silhouette") << " covers "
+                          << groupedNumber(covered) << " of " << camera.width() << " x " << camera.height() << " pixels\n"
+                          << "wrote " << vdbOut << "\n";
+            } else {
+                const MeshRepair repaired = repairForVolume(mesh, meshPath);
+                std::cout << "mesh: " << describeRepair(repaired) << std::endl;
+                const TargetVdbStats stats = writeTargetVdb(repaired.mesh, voxelSize, meshPath, vdbOut);
+                std::cout << "inside: volume " << stats.insideVolume << " (model units^3), "
+                          << groupedNumber(stats.insideVoxels) << " voxels of " << voxelSize << "\n"
+                          << "wrote " << vdbOut << "\n";
+            }
         } else if (*translate) {
             if (!isRuleFile(translatePath)) throw InputError(translatePath, "", "not a CastleMaker rule file (expected a .rule file)");
             std::cout << translateRuleFile(translatePath, parseAttrOptions(translateAttrs));

@@ -43,8 +43,8 @@ std::string number(double v) {
 
 }  // namespace
 
-void writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath, const std::string& outPath,
-                    bool overwrite) {
+TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath,
+                              const std::string& outPath, bool overwrite) {
     initOpenVdb();
     if (!(voxelSize > 0.0) || !std::isfinite(voxelSize))
         throw InputError(sourcePath, "", "voxel size must be a positive number, got " + number(voxelSize));
@@ -82,6 +82,16 @@ void writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourc
         *xform, points, triangles, float(openvdb::LEVEL_SET_HALF_WIDTH));
     if (!grid || grid->activeVoxelCount() == 0)
         throw InputError(sourcePath, "", "the level set is empty at voxel size " + number(voxelSize));
+    // Every stored value (leaf voxels, and tiles: the interior's inactive negative tiles count as
+    // many voxels as they cover); the unstored background is outside.
+    TargetVdbStats stats;
+    for (auto it = grid->cbeginValueAll(); it; ++it)
+        if (*it <= 0.0f) stats.insideVoxels += it.getVoxelCount();
+    stats.insideVolume = double(stats.insideVoxels) * voxelSize * voxelSize * voxelSize;
+    if (stats.insideVoxels == 0)
+        throw InputError(sourcePath, "", "the inside of the mesh comes out empty at voxel size " + number(voxelSize) +
+                                             ": no voxel centre is enclosed (an open surface, or a mesh thinner than a "
+                                             "voxel; try a smaller --voxel-size)");
     grid->setName("target");
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
     grid->insertMeta("voxel_size", openvdb::DoubleMetadata(voxelSize));
@@ -102,6 +112,7 @@ void writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourc
             }
         },
         overwrite ? Replace::Always : Replace::Never);
+    return stats;
 }
 
 namespace {

@@ -1,6 +1,7 @@
 // Volume target files: turning a closed mesh into an OpenVDB level-set file with shapevo's
 // metadata, and loading one or more such files into the dense bit grid the scorer uses.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,13 @@ struct GridOverride {
     double voxelSize = 0.0;
 };
 
+/// What writeTargetVdb made: voxels whose centre the level set puts inside (value <= 0; the
+/// voxels loadVolumeTarget sets from this file alone), and their volume in model units^3.
+struct TargetVdbStats {
+    std::uint64_t insideVoxels = 0;
+    double insideVolume = 0.0;
+};
+
 /// Converts `mesh` to a narrow-band level set (FloatGrid named "target", grid class level set,
 /// 3 voxels half width) and writes it to `outPath` with metadata voxel_size (double),
 /// bounds_min / bounds_max (Vec3d, the mesh's world bounds), source (`sourcePath`) and
@@ -30,8 +38,10 @@ struct GridOverride {
 /// same directory and then renamed (or hard-linked, when not overwriting) into place.
 /// @throw InputError if `outPath` exists and `overwrite` is false, if voxelSize is not a
 ///        positive finite number (or is so small the grid would be absurd), if the mesh has no
-///        triangles, if the level set comes out empty, or if the file cannot be written.
-void writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath, const std::string& outPath,
+///        triangles, if the level set comes out empty or has no inside voxel (an open surface
+///        whose inside OpenVDB's flood fill cannot find, or a mesh thinner than a voxel), or if
+///        the file cannot be written. Nothing is written when it throws.
+TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath, const std::string& outPath,
                     bool overwrite = false);
 
 /// Reads each file's first FloatGrid and bakes all of them into one dense VolumeTarget.

@@ -124,11 +124,11 @@ TEST(BadInput, ExistingOutputFolderIsNeverOverwritten) {
 TEST(BadInput, MeshProblemsAreNamedForTheTargetCommand) {
     TempDir dir;
     writeFile(dir.file("empty.obj"), "# nothing here\n");
-    writeFile(dir.file("open.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\n");
+    writeFile(dir.file("open.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");  // a lone triangle: no inside
     writeFile(dir.file("garbage.obj"), "v 0 0 zero\n");
     expectInputError(runShapevo("target " + dir.file("missing.obj") + " -o " + dir.file("a.vdb")), dir.file("missing.obj"));
     expectInputError(runShapevo("target " + dir.file("empty.obj") + " -o " + dir.file("b.vdb")), dir.file("empty.obj"));
-    expectInputError(runShapevo("target " + dir.file("open.obj") + " -o " + dir.file("c.vdb")), "not closed");
+    expectInputError(runShapevo("target " + dir.file("open.obj") + " -o " + dir.file("c.vdb")), "cannot be determined");
     expectInputError(runShapevo("target " + dir.file("garbage.obj") + " -o " + dir.file("d.vdb")), dir.file("garbage.obj") + ":1");
     for (const char* f : {"a.vdb", "b.vdb", "c.vdb", "d.vdb"}) EXPECT_FALSE(std::filesystem::exists(dir.file(f)));
 }
