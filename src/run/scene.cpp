@@ -154,6 +154,19 @@ Evaluation Scene::evaluate(const Chromosome& c) const {
     return e;
 }
 
+double Scene::iou(const Chromosome& c) const {
+    if (image_) {
+        ImageScorer::Workspace ws(*camera_);
+        SilhouetteCounts n;
+        imageScorer_->fitness(c, ws, &n);
+        return silhouetteIoU(n, image_->hitCount);
+    }
+    VolumeScorer::Workspace ws(volume_->grid);
+    VoxelCounts n;
+    volumeScorer_->fitness(c, ws, &n);
+    return voxelIoU(n, volume_->fillCount);
+}
+
 void Scene::exportBest(const Chromosome& best, const std::string& format, const std::string& path) const {
     if (image_) {
         if (format != "png") throw InputError(path, "", "an image target's run exports obj, ply, glb or png, not " + format);
