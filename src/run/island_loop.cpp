@@ -94,7 +94,8 @@ public:
         if (!known_ || !(best == model_)) {
             const auto start = Clock::now();
             const Scorer::Anomalies before = scene.scorer().anomalies();
-            iou_ = scene.iou(best);
+            if (!workspace_) workspace_ = scene.scorer().makeWorkspace();
+            iou_ = scene.iou(best, *workspace_);
             const Scorer::Anomalies after = scene.scorer().anomalies();
             added_.nonFinite += after.nonFinite - before.nonFinite;
             added_.truncated += after.truncated - before.truncated;
@@ -109,6 +110,7 @@ public:
 
 private:
     Chromosome model_;
+    std::unique_ptr<ScoreWorkspace> workspace_;
     double iou_ = 0, seconds_ = 0;
     bool known_ = false;
     Scorer::Anomalies added_;

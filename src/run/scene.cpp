@@ -154,16 +154,14 @@ Evaluation Scene::evaluate(const Chromosome& c) const {
     return e;
 }
 
-double Scene::iou(const Chromosome& c) const {
+double Scene::iou(const Chromosome& c, ScoreWorkspace& workspace) const {
     if (image_) {
-        ImageScorer::Workspace ws(*camera_);
         SilhouetteCounts n;
-        imageScorer_->fitness(c, ws, &n);
+        imageScorer_->fitness(c, static_cast<ImageScorer::Workspace&>(workspace), &n);
         return silhouetteIoU(n, image_->hitCount);
     }
-    VolumeScorer::Workspace ws(volume_->grid);
     VoxelCounts n;
-    volumeScorer_->fitness(c, ws, &n);
+    volumeScorer_->fitness(c, static_cast<VolumeScorer::Workspace&>(workspace), &n);
     return voxelIoU(n, volume_->fillCount);
 }
 
