@@ -18,7 +18,8 @@
 namespace shapevo {
 
 /// Layout version written to every checkpoint file's schema_version attribute.
-inline constexpr std::uint32_t kCheckpointSchemaVersion = 2;  ///< 2: XXH3-64 checksums (1: FNV-like)
+/// 3: the curve has an iou column (2: six curve columns; 1: FNV-like checksums, before XXH3-64).
+inline constexpr std::uint32_t kCheckpointSchemaVersion = 3;
 
 // --- single files ---------------------------------------------------------------------------
 

@@ -49,7 +49,7 @@ std::vector<std::uint8_t> encodeCurve(const std::vector<GenerationStats>& curve)
         if (double(row.evaluations) > kMaxExactInteger)
             throw std::invalid_argument("curve: " + std::to_string(row.evaluations) +
                                         " evaluations cannot be stored exactly as f64");
-        for (double v : {double(row.generation), row.seconds, double(row.evaluations), row.best, row.mean, row.std})
+        for (double v : {double(row.generation), row.seconds, double(row.evaluations), row.best, row.mean, row.std, row.iou})
             le::append(out, v);
     }
     return out;
@@ -59,7 +59,8 @@ std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, co
                                          const std::string& where) {
     constexpr std::size_t kRowBytes = kCurveWidth * 8;
     if (bytes.size() % kRowBytes != 0)
-        throw InputError(path, where, count(bytes.size(), "bytes is not a whole number of 6-column f64 rows"));
+        throw InputError(path, where, std::to_string(bytes.size()) + " bytes is not a whole number of " +
+                                          std::to_string(kCurveWidth) + "-column f64 rows");
     std::vector<GenerationStats> curve(bytes.size() / kRowBytes);
     for (std::size_t i = 0; i < curve.size(); ++i) {
         const std::uint8_t* p = bytes.data() + i * kRowBytes;
@@ -69,7 +70,7 @@ std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, co
             throw InputError(path, where, "row " + std::to_string(i) + ": generation is not a whole number in [0, 2^32)");
         if (!wholeInRange(v[2], kMaxExactInteger))
             throw InputError(path, where, "row " + std::to_string(i) + ": evaluations is not a whole number in [0, 2^53]");
-        curve[i] = {std::uint32_t(v[0]), v[1], std::uint64_t(v[2]), v[3], v[4], v[5]};
+        curve[i] = {std::uint32_t(v[0]), v[1], std::uint64_t(v[2]), v[3], v[4], v[5], v[6]};
     }
     return curve;
 }

@@ -22,8 +22,8 @@ inline constexpr const char* kGeneCounts = "/population/gene_counts";
 inline constexpr const char* kFitness = "/population/fitness";
 inline constexpr const char* kRng = "/rng/state";
 inline constexpr const char* kCurve = "/curve";
-inline constexpr const char* kCurveColumns = "generation,seconds,evaluations,best,mean,std";
-inline constexpr std::size_t kCurveWidth = 6;
+inline constexpr const char* kCurveColumns = "generation,seconds,evaluations,best,mean,std,iou";
+inline constexpr std::size_t kCurveWidth = 7;  ///< schema 3 (schema 2 had 6 columns, without iou)
 }  // namespace island_layout
 
 /// Borrowed raw bytes of one island's datasets (little endian) plus its root attributes.
@@ -37,7 +37,7 @@ struct IslandBytesView {
     std::span<const std::uint8_t> geneCounts;  ///< u32 x individuals
     std::span<const std::uint8_t> fitness;     ///< f64 x individuals
     std::span<const std::uint8_t> rng;         ///< u64 x 4
-    std::span<const std::uint8_t> curve;       ///< f64 x rows x 6
+    std::span<const std::uint8_t> curve;       ///< f64 x rows x 7
 };
 
 /// Owned raw bytes of one island's datasets, as encodeIsland makes them.
@@ -61,7 +61,7 @@ IslandBytes encodeIsland(const IslandState& s);
 IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
                          const std::string& path);
 
-/// A curve as rows of 6 little-endian f64 (generation, seconds, evaluations, best, mean, std).
+/// A curve as rows of 7 little-endian f64 (generation, seconds, evaluations, best, mean, std, iou).
 std::vector<std::uint8_t> encodeCurve(const std::vector<GenerationStats>& curve);
 /// Throws InputError(path, where, ...) unless `bytes` is whole rows whose generation and
 /// evaluations columns are non-negative integers that fit their types.

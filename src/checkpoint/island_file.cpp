@@ -2,7 +2,7 @@
 // format (README, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
 //
 //   /                         root group, attributes:
-//       schema_version        u32   format version of this layout (2)
+//       schema_version        u32   format version of this layout (3)
 //       run_id                string  the run this island belongs to (as in run.h5)
 //       seed                  u64   the run's seed (as in run.h5)
 //       ranks                 i32   islands in the run (as in run.h5)
@@ -16,9 +16,9 @@
 //   /population/gene_counts   u32 [N]      genes in each chromosome
 //   /population/fitness       f64 [N]      fitness of each individual
 //   /rng/state                u64 [4]      the island's xoshiro256** state
-//   /curve                    f64 [G x 6]  this island's fitness curve, one row per generation,
+//   /curve                    f64 [G x 7]  this island's fitness curve, one row per generation,
 //                                          chunked and extendible (G unlimited); attribute
-//       columns               string "generation,seconds,evaluations,best,mean,std"
+//       columns               string "generation,seconds,evaluations,best,mean,std,iou"
 //
 // Every dataset has an attribute "xxh3_64" (u64): XXH3-64 of its raw little-endian bytes; the
 // root attribute attributes_xxh3_64 covers every other attribute (hdf5_file.hpp).

@@ -2,7 +2,7 @@
 // The names below are a stable public format (README, `h5ls -r`, `h5dump -H`).
 //
 //   /                     root group, attributes:
-//       schema_version    u32     format version of the checkpoint layout (2)
+//       schema_version    u32     format version of the checkpoint layout (3)
 //       run_id            string  32 random hex digits made when the run started: with seed,
 //                                 config and inputs the run's identity
 //       seed              u64     the run's seed
@@ -18,9 +18,9 @@
 //   /inputs/text          string  one line per input file when the run started:
 //                                 "<role> <xxh3-64 hex> <absolute path>" (role: config, grammar,
 //                                 mesh, target)
-//   /curve                f64 [G x 6]  the global fitness curve (best/mean/std over all
+//   /curve                f64 [G x 7]  the global fitness curve (best/mean/std over all
 //                                      islands), chunked and extendible; attribute
-//       columns           string  "generation,seconds,evaluations,best,mean,std"
+//       columns           string  "generation,seconds,evaluations,best,mean,std,iou"
 //
 // Strings are fixed-length, null-padded UTF-8 (h5dump prints them as text; an empty string is
 // stored as one NUL). Every dataset has an "xxh3_64" (u64) attribute over its raw bytes.

@@ -1,184 +1,179 @@
-// Curve plot: one layout (data ranges, axes, pixel mapping) drawn twice, as SVG text and as pixels.
+// Curve plot: the data is sorted into series and axes once (Layout), then drawn by one function
+// onto either painter, so the SVG and the PNG show the same picture.
 #include "report/curve_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "base/atomic_write.hpp"
+#include "report/cairo_painter.hpp"
 #include "report/plot_axes.hpp"
-#include "image/png_writer.hpp"
-#include "image/rgba_canvas.hpp"
+#include "report/svg_painter.hpp"
 
 namespace shapevo {
 
 namespace {
 
-constexpr Rgba kBest{213, 94, 0, 255}, kMean{0, 114, 178, 255}, kBand{0, 114, 178, 64};
-constexpr Rgba kAxis{0, 0, 0, 255}, kGrid{225, 225, 225, 255}, kWhite{255, 255, 255, 255};
+constexpr PlotColour kBest{213, 94, 0}, kMean{0, 114, 178}, kBand{0, 114, 178, 0.25}, kIoU{0, 158, 115};
+constexpr PlotColour kInk{0, 0, 0}, kGrid{225, 225, 225}, kMinorGrid{242, 242, 242}, kMuted{110, 110, 110};
+constexpr double kLeft = 78, kRight = kCurvePlotWidth - 72, kTop = 66, kBottom = kCurvePlotHeight - 58;
+constexpr double kFont = 12;
 
-/// The finite data and where it goes on the page.
+/// The finite data, one x per row (clamped to the axis), and the axes.
 struct Layout {
-    std::vector<double> gen, best;            // points with a finite best
-    std::vector<double> meanGen, mean, std;   // points with finite mean and std
-    PlotAxis x, y;
-    double left = 70, right = kCurvePlotWidth - 30, top = 40, bottom = kCurvePlotHeight - 50;
-    double px(double v) const { return x.map(v, left, right); }
-    double py(double v) const { return y.map(v, bottom, top); }
+    std::vector<double> x, best, xMean, mean, std, xIoU, iou;
+    bool generations = false;  ///< the x axis counts generations, not seconds
+    LogAxis xAxis;
+    PlotAxis yAxis;
+    double px(double v) const { return xAxis.map(v, kLeft, kRight); }
+    double py(double v) const { return yAxis.map(v, kBottom, kTop); }
+    double pIoU(double v) const { return kBottom + std::clamp(v, 0.0, 1.0) * (kTop - kBottom); }
 };
 
-Layout layout(const std::vector<GenerationStats>& curve) {
+Layout layout(const std::vector<GenerationStats>& curve, CurveTimeAxis wanted) {
     Layout l;
-    double gLo = std::numeric_limits<double>::infinity(), gHi = -gLo, yLo = gLo, yHi = -gLo;
-    for (const GenerationStats& s : curve) {
-        const double g = s.generation;
-        if (std::isfinite(s.best)) {
-            l.gen.push_back(g), l.best.push_back(s.best);
-            gLo = std::min(gLo, g), gHi = std::max(gHi, g), yLo = std::min(yLo, s.best), yHi = std::max(yHi, s.best);
+    auto positiveMin = [&](bool byGeneration) {
+        double m = std::numeric_limits<double>::infinity();
+        for (const GenerationStats& s : curve) {
+            const double v = byGeneration ? double(s.generation) : s.seconds;
+            if (std::isfinite(v) && v > 0) m = std::min(m, v);
         }
-        if (std::isfinite(s.mean) && std::isfinite(s.std)) {
-            const double sd = std::fabs(s.std);
-            l.meanGen.push_back(g), l.mean.push_back(s.mean), l.std.push_back(sd);
-            gLo = std::min(gLo, g), gHi = std::max(gHi, g);
+        return m;
+    };
+    l.generations = wanted == CurveTimeAxis::Generations || !std::isfinite(positiveMin(false));
+    const double floor = positiveMin(l.generations);  // zero times sit at the first positive one
+    double xLo = std::numeric_limits<double>::infinity(), xHi = -xLo, yLo = xLo, yHi = -xLo;
+    for (const GenerationStats& s : curve) {
+        double x = l.generations ? double(s.generation) : s.seconds;
+        if (!std::isfinite(x) || !std::isfinite(floor)) continue;
+        x = std::max(x, floor);
+        bool used = false;
+        if (std::isfinite(s.best)) {
+            l.x.push_back(x), l.best.push_back(s.best), used = true;
+            yLo = std::min(yLo, s.best), yHi = std::max(yHi, s.best);
+        }
+        const double sd = std::fabs(s.std);
+        if (std::isfinite(s.mean) && std::isfinite(sd) && std::isfinite(s.mean - sd) && std::isfinite(s.mean + sd)) {
+            l.xMean.push_back(x), l.mean.push_back(s.mean), l.std.push_back(sd), used = true;
             yLo = std::min(yLo, s.mean - sd), yHi = std::max(yHi, s.mean + sd);
         }
+        if (std::isfinite(s.iou)) l.xIoU.push_back(x), l.iou.push_back(s.iou), used = true;
+        if (used) xLo = std::min(xLo, x), xHi = std::max(xHi, x);
     }
-    l.x = niceAxis(gLo, gHi, 8, true);
-    l.y = niceAxis(yLo, yHi, 6, false);
+    l.xAxis = logAxis(xLo, xHi);
+    l.yAxis = niceAxis(yLo, yHi, 6, false);
     return l;
 }
 
-std::string num(double v) {
-    char s[32];
-    std::snprintf(s, sizeof s, "%.2f", v);
-    return s;
-}
-std::string colour(Rgba c) {
-    char s[16];
-    std::snprintf(s, sizeof s, "#%02x%02x%02x", c[0], c[1], c[2]);
-    return s;
-}
-std::string points(const Layout& l, const std::vector<double>& xs, const std::vector<double>& ys, double sign,
-                   const std::vector<double>* offsets) {
-    std::string out;
-    for (std::size_t i = 0; i < xs.size(); ++i)
-        out += num(l.px(xs[i])) + "," + num(l.py(ys[i] + (offsets ? sign * (*offsets)[i] : 0.0))) + " ";
+/// Page points of a series, leaving out points within half a pixel of the last one kept (a long
+/// run has more generations than the page has pixels); the last point is always kept.
+PlotPainter::Points pagePoints(const std::vector<double>& xs, const std::vector<double>& ys, const Layout& l,
+                               double (Layout::*toY)(double) const) {
+    PlotPainter::Points out;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        const std::pair<double, double> p{l.px(xs[i]), (l.*toY)(ys[i])};
+        const bool last = i + 1 == xs.size();
+        if (!out.empty() && !last && std::fabs(p.first - out.back().first) < 0.5 && std::fabs(p.second - out.back().second) < 0.5)
+            continue;
+        out.push_back(p);
+    }
     return out;
 }
 
-std::string svg(const Layout& l) {
-    std::string s = R"(<?xml version="1.0" encoding="UTF-8"?>)" "\n";
-    s += R"(<svg xmlns="http://www.w3.org/2000/svg" width=")" + std::to_string(kCurvePlotWidth) + R"(" height=")" +
-         std::to_string(kCurvePlotHeight) + R"(" viewBox="0 0 )" + std::to_string(kCurvePlotWidth) + " " +
-         std::to_string(kCurvePlotHeight) + R"(" font-family="sans-serif" font-size="12">)" "\n";
-    s += "<title>shapevo fitness curve</title>\n";
-    s += R"(<rect width="100%" height="100%" fill="white"/>)" "\n";
-    s += R"(<g stroke=")" + colour(kGrid) + R"(" stroke-width="1">)" "\n";
-    for (double t : l.x.ticks)
-        s += R"(<line x1=")" + num(l.px(t)) + R"(" y1=")" + num(l.top) + R"(" x2=")" + num(l.px(t)) + R"(" y2=")" + num(l.bottom) + "\"/>\n";
-    for (double t : l.y.ticks)
-        s += R"(<line x1=")" + num(l.left) + R"(" y1=")" + num(l.py(t)) + R"(" x2=")" + num(l.right) + R"(" y2=")" + num(l.py(t)) + "\"/>\n";
-    s += "</g>\n";
+void series(PlotPainter& p, const PlotPainter::Points& pts, PlotColour c, double width, bool dashed, const std::string& name) {
+    p.polyline(pts, c, width, dashed, name);
+    if (pts.size() == 1) p.circle(pts[0].first, pts[0].second, 3, c);  // one point draws no line
+}
+
+/// `title` shortened with "..." until it fits `width` pixels.
+std::string fitted(PlotPainter& p, std::string title, double width, double size) {
+    if (p.textWidth(title, size, true) <= width) return title;
+    while (!title.empty() && p.textWidth(title + "...", size, true) > width) title.pop_back();
+    return title + "...";
+}
+
+void draw(PlotPainter& p, const Layout& l, const CurvePlotLabels& labels) {
+    const bool withIoU = !l.iou.empty();
+    // grid
+    for (std::size_t i = 0; i < l.xAxis.ticks.size(); ++i) {
+        const double x = l.px(l.xAxis.ticks[i]);
+        p.line(x, kTop, x, kBottom, l.xAxis.labelled[i] ? kGrid : kMinorGrid);
+    }
+    for (double t : l.yAxis.ticks) p.line(kLeft, l.py(t), kRight, l.py(t), kGrid);
+    // data: band, mean, best, IoU
     if (!l.mean.empty()) {
-        std::vector<double> revGen(l.meanGen.rbegin(), l.meanGen.rend()), revMean(l.mean.rbegin(), l.mean.rend()),
-            revStd(l.std.rbegin(), l.std.rend());
-        s += R"(<polygon class="band" fill=")" + colour(kBand) + R"(" fill-opacity="0.25" stroke="none" points=")" +
-             points(l, l.meanGen, l.mean, 1, &l.std) + points(l, revGen, revMean, -1, &revStd) + "\"/>\n";
-        s += R"(<polyline class="mean" fill="none" stroke=")" + colour(kMean) + R"(" stroke-width="1.5" stroke-dasharray="6 3" points=")" +
-             points(l, l.meanGen, l.mean, 0, nullptr) + "\"/>\n";
+        std::vector<double> upper(l.mean.size()), lower(l.mean.size());
+        for (std::size_t i = 0; i < l.mean.size(); ++i) upper[i] = l.mean[i] + l.std[i], lower[i] = l.mean[i] - l.std[i];
+        PlotPainter::Points band = pagePoints(l.xMean, upper, l, &Layout::py);
+        const PlotPainter::Points back = pagePoints(l.xMean, lower, l, &Layout::py);
+        band.insert(band.end(), back.rbegin(), back.rend());
+        p.polygon(band, kBand, "band");
+        series(p, pagePoints(l.xMean, l.mean, l, &Layout::py), kMean, 1.5, true, "mean");
     }
-    if (!l.best.empty())
-        s += R"(<polyline class="best" fill="none" stroke=")" + colour(kBest) + R"(" stroke-width="2" points=")" +
-             points(l, l.gen, l.best, 0, nullptr) + "\"/>\n";
-    if (l.best.size() == 1)  // a single point draws no line
-        s += R"(<circle cx=")" + num(l.px(l.gen[0])) + R"(" cy=")" + num(l.py(l.best[0])) + R"(" r="3" fill=")" + colour(kBest) + "\"/>\n";
-    // axes, ticks and labels
-    s += R"(<g stroke="black" stroke-width="1"><line x1=")" + num(l.left) + R"(" y1=")" + num(l.bottom) + R"(" x2=")" +
-         num(l.right) + R"(" y2=")" + num(l.bottom) + R"("/><line x1=")" + num(l.left) + R"(" y1=")" + num(l.top) +
-         R"(" x2=")" + num(l.left) + R"(" y2=")" + num(l.bottom) + "\"/></g>\n";
-    for (double t : l.x.ticks)
-        s += R"(<line x1=")" + num(l.px(t)) + R"(" y1=")" + num(l.bottom) + R"(" x2=")" + num(l.px(t)) + R"(" y2=")" +
-             num(l.bottom + 5) + R"(" stroke="black"/><text x=")" + num(l.px(t)) + R"(" y=")" + num(l.bottom + 18) +
-             R"(" text-anchor="middle">)" + tickLabel(t, l.x.step) + "</text>\n";
-    for (double t : l.y.ticks)
-        s += R"(<line x1=")" + num(l.left - 5) + R"(" y1=")" + num(l.py(t)) + R"(" x2=")" + num(l.left) + R"(" y2=")" +
-             num(l.py(t)) + R"(" stroke="black"/><text x=")" + num(l.left - 8) + R"(" y=")" + num(l.py(t) + 4) +
-             R"(" text-anchor="end">)" + tickLabel(t, l.y.step) + "</text>\n";
-    s += R"(<text x=")" + num((l.left + l.right) / 2) + R"(" y=")" + num(kCurvePlotHeight - 12.0) +
-         R"(" text-anchor="middle">generation</text>)" "\n";
-    s += R"x(<text transform="translate(16 )x" + num((l.top + l.bottom) / 2) +
-         R"x() rotate(-90)" text-anchor="middle">fitness</text>)x" "\n";
-    s += R"(<text x=")" + num(l.left) + R"(" y="24" font-size="14">shapevo fitness curve</text>)" "\n";
-    // legend, top right
-    const double lx = l.right - 150, ly = 18;
-    s += R"(<line x1=")" + num(lx) + R"(" y1=")" + num(ly) + R"(" x2=")" + num(lx + 20) + R"(" y2=")" + num(ly) +
-         R"(" stroke=")" + colour(kBest) + R"(" stroke-width="2"/><text x=")" + num(lx + 25) + R"(" y=")" + num(ly + 4) + "\">best</text>\n";
-    s += R"(<rect x=")" + num(lx + 65) + R"(" y=")" + num(ly - 5) + R"(" width="20" height="10" fill=")" + colour(kBand) +
-         R"(" fill-opacity="0.25"/><line x1=")" + num(lx + 65) + R"(" y1=")" + num(ly) + R"(" x2=")" + num(lx + 85) +
-         R"(" y2=")" + num(ly) + R"(" stroke=")" + colour(kMean) + R"(" stroke-dasharray="6 3"/><text x=")" + num(lx + 90) +
-         R"(" y=")" + num(ly + 4) + "\">mean &#177; std</text>\n";
-    if (l.best.empty() && l.mean.empty())
-        s += R"(<text x=")" + num((l.left + l.right) / 2) + R"(" y=")" + num((l.top + l.bottom) / 2) +
-             R"(" text-anchor="middle" fill="gray">no data</text>)" "\n";
-    return s + "</svg>\n";
-}
-
-void polyline(RgbaCanvas& c, const Layout& l, const std::vector<double>& xs, const std::vector<double>& ys, Rgba colour,
-              int thickness) {
-    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
-        c.line(l.px(xs[i]), l.py(ys[i]), l.px(xs[i + 1]), l.py(ys[i + 1]), colour, thickness);
-    if (xs.size() == 1) c.rect(int(l.px(xs[0])) - 2, int(l.py(ys[0])) - 2, int(l.px(xs[0])) + 2, int(l.py(ys[0])) + 2, colour);
-}
-
-/// The band between mean - std and mean + std, each pixel column blended once.
-void band(RgbaCanvas& c, const Layout& l) {
-    for (std::size_t i = 0; i + 1 < l.meanGen.size(); ++i) {
-        const double x0 = l.px(l.meanGen[i]), x1 = l.px(l.meanGen[i + 1]);
-        if (!(x1 > x0)) continue;
-        const int last = i + 2 == l.meanGen.size() ? int(std::floor(x1)) : int(std::ceil(x1)) - 1;
-        for (int x = int(std::ceil(x0)); x <= last; ++x) {
-            const double t = (x - x0) / (x1 - x0);
-            const double m = l.mean[i] + (l.mean[i + 1] - l.mean[i]) * t, sd = l.std[i] + (l.std[i + 1] - l.std[i]) * t;
-            c.span(x, int(std::lround(l.py(m + sd))), int(std::lround(l.py(m - sd))), kBand);
+    series(p, pagePoints(l.x, l.best, l, &Layout::py), kBest, 2, false, "best");
+    if (withIoU) series(p, pagePoints(l.xIoU, l.iou, l, &Layout::pIoU), kIoU, 1.5, false, "iou");
+    // axes with ticks and numbers
+    p.line(kLeft, kBottom, kRight, kBottom, kInk);
+    p.line(kLeft, kTop, kLeft, kBottom, kInk);
+    for (std::size_t i = 0; i < l.xAxis.ticks.size(); ++i) {
+        const double x = l.px(l.xAxis.ticks[i]);
+        p.line(x, kBottom, x, kBottom + (l.xAxis.labelled[i] ? 5 : 3), kInk);
+        if (l.xAxis.labelled[i])
+            p.text(x, kBottom + 18, logTickLabel(l.xAxis.ticks[i]), {kFont, TextAnchor::Middle});
+    }
+    for (double t : l.yAxis.ticks) {
+        p.line(kLeft - 5, l.py(t), kLeft, l.py(t), kInk);
+        p.text(kLeft - 8, l.py(t) + 4, tickLabel(t, l.yAxis.step), {kFont, TextAnchor::End});
+    }
+    PlotText axisLabel{13, TextAnchor::Middle};
+    p.text((kLeft + kRight) / 2, kCurvePlotHeight - 16, l.generations ? "generation (log scale)" : "seconds (log scale)", axisLabel);
+    axisLabel.vertical = true;
+    p.text(20, (kTop + kBottom) / 2, "fitness", axisLabel);
+    if (withIoU) {
+        p.line(kRight, kTop, kRight, kBottom, kIoU);
+        for (int k = 0; k <= 5; ++k) {
+            const double v = k / 5.0, y = l.pIoU(v);
+            p.line(kRight, y, kRight + 5, y, kIoU);
+            p.text(kRight + 8, y + 4, tickLabel(v, 0.2), {kFont, TextAnchor::Start, false, false, kIoU});
         }
+        axisLabel.colour = kIoU;
+        p.text(kCurvePlotWidth - 22, (kTop + kBottom) / 2, labels.iouName + " of the best", axisLabel);
     }
-}
-
-RgbaCanvas raster(const Layout& l) {
-    RgbaCanvas c(kCurvePlotWidth, kCurvePlotHeight, kWhite);
-    for (double t : l.x.ticks) c.line(l.px(t), l.top, l.px(t), l.bottom, kGrid);
-    for (double t : l.y.ticks) c.line(l.left, l.py(t), l.right, l.py(t), kGrid);
-    band(c, l);
-    polyline(c, l, l.meanGen, l.mean, kMean, 1);
-    polyline(c, l, l.gen, l.best, kBest, 2);
-    c.line(l.left, l.bottom, l.right, l.bottom, kAxis);
-    c.line(l.left, l.top, l.left, l.bottom, kAxis);
-    constexpr int scale = 2;
-    for (double t : l.x.ticks) {
-        c.line(l.px(t), l.bottom, l.px(t), l.bottom + 5, kAxis);
-        const std::string label = tickLabel(t, l.x.step);
-        c.text(int(l.px(t)) - RgbaCanvas::textWidth(label, scale) / 2, int(l.bottom) + 9, label, kAxis, scale);
+    // title and legend
+    p.text(kLeft, 26, fitted(p, labels.title, kCurvePlotWidth - kLeft - 10, 15), {15, TextAnchor::Start, true});
+    double x = kLeft;
+    const double y = 48;
+    auto entry = [&](const std::string& text) {
+        p.text(x + 28, y + 4, text, {kFont});
+        x += 28 + p.textWidth(text, kFont, false) + 24;
+    };
+    p.line(x, y, x + 22, y, kBest, 2);
+    entry("best fitness");
+    p.rect(x, y - 6, 22, 12, kBand);
+    p.line(x, y, x + 22, y, kMean, 1.5, true);
+    entry("mean \u00b1 std of the population");
+    if (withIoU) {
+        p.line(x, y, x + 22, y, kIoU, 1.5);
+        entry(labels.iouName + " of the best (right axis)");
     }
-    for (double t : l.y.ticks) {
-        c.line(l.left - 5, l.py(t), l.left, l.py(t), kAxis);
-        const std::string label = tickLabel(t, l.y.step);
-        c.text(int(l.left) - 8 - RgbaCanvas::textWidth(label, scale), int(l.py(t)) - RgbaCanvas::textHeight(scale) / 2,
-               label, kAxis, scale);
-    }
-    return c;
+    if (l.best.empty() && l.mean.empty() && l.iou.empty())
+        p.text((kLeft + kRight) / 2, (kTop + kBottom) / 2, "no data", {14, TextAnchor::Middle, false, false, kMuted});
 }
 
 }  // namespace
 
-void writeCurveSvg(const std::vector<GenerationStats>& curve, const std::string& path) {
-    const std::string text = svg(layout(curve));
+void writeCurveSvg(const std::vector<GenerationStats>& curve, const CurvePlotLabels& labels, const std::string& path) {
+    SvgPainter svg(kCurvePlotWidth, kCurvePlotHeight, labels.title);
+    draw(svg, layout(curve, labels.timeAxis), labels);
+    const std::string text = svg.document();
     writeStreamAtomically(path, [&](std::ostream& out) { out << text; });
 }
 
-void writeCurvePng(const std::vector<GenerationStats>& curve, const std::string& path) {
-    const RgbaCanvas c = raster(layout(curve));
-    writePngRgba(path, c.width(), c.height(), c.pixels());
+void writeCurvePng(const std::vector<GenerationStats>& curve, const CurvePlotLabels& labels, const std::string& path) {
+    CairoPainter png(kCurvePlotWidth, kCurvePlotHeight);
+    draw(png, layout(curve, labels.timeAxis), labels);
+    png.writePng(path);
 }
 
 }  // namespace shapevo

@@ -2,6 +2,7 @@
 #include "report/run_report.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -36,12 +37,13 @@ std::string formatDouble(double v) {
 }
 
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path) {
-    std::string text = "generation,seconds,evaluations,best,mean,std\n";
+    std::string text = "generation,seconds,evaluations,best,mean,std,iou\n";
     for (const auto& s : curve) {
         char secs[32];
         std::snprintf(secs, sizeof secs, "%.6f", s.seconds);
         text += std::to_string(s.generation) + "," + secs + "," + std::to_string(s.evaluations) + "," +
-                formatDouble(s.best) + "," + formatDouble(s.mean) + "," + formatDouble(s.std) + "\n";
+                formatDouble(s.best) + "," + formatDouble(s.mean) + "," + formatDouble(s.std) + "," +
+                (std::isfinite(s.iou) ? formatDouble(s.iou) : std::string()) + "\n";
     }
     writeText(path, text);
 }
@@ -64,6 +66,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"islands\": " + std::to_string(s.islands) + ",\n";
     t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
     t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
+    t += "  \"iou_seconds\": " + formatDouble(s.iouSeconds) + ",\n";
     t += "  \"non_finite_models\": " + std::to_string(s.nonFiniteModels) + ",\n";
     t += "  \"truncated_models\": " + std::to_string(s.truncatedModels) + ",\n";
     if (!s.changedInputs.empty()) {

@@ -24,12 +24,14 @@ struct RunSummary {
     int threads = 0;   ///< evaluation threads per island
     int islands = 1;   ///< MPI ranks
     double migrationSeconds = 0, checkpointSeconds = 0;  ///< slowest rank's time in each
+    double iouSeconds = 0;  ///< slowest rank's time scoring its best model again for the curve's IoU
     std::vector<std::string> changedInputs;  ///< inputs accepted with --allow-changed-inputs on resume
     std::uint64_t nonFiniteModels = 0;  ///< evaluations with a non-finite or absurd coordinate (worst fitness)
     std::uint64_t truncatedModels = 0;  ///< evaluations that reached genome.max_primitives
 };
 
-/// curve.csv: generation,seconds,evaluations,best,mean,std (one row per generation).
+/// curve.csv: generation,seconds,evaluations,best,mean,std,iou (one row per generation; iou, the
+/// best model's voxel or silhouette IoU, is empty where it was not measured).
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path);
 void writeSummaryJson(const RunSummary& s, const std::string& path);
 /// Doubles in reports: shortest text that reads back to the same value.

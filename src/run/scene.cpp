@@ -173,6 +173,17 @@ Evaluation Scene::evaluate(const Chromosome& c) const {
     return e;
 }
 
+double Scene::iou(const Chromosome& c, ScoreWorkspace& workspace) const {
+    if (image_) {
+        SilhouetteCounts n;
+        imageScorer_->fitness(c, static_cast<ImageScorer::Workspace&>(workspace), &n);
+        return silhouetteIoU(n, image_->hitCount);
+    }
+    VoxelCounts n;
+    volumeScorer_->fitness(c, static_cast<VolumeScorer::Workspace&>(workspace), &n);
+    return voxelIoU(n, volume_->fillCount);
+}
+
 void Scene::exportBest(const Chromosome& best, const std::string& format, const std::string& path) const {
     if (image_) {
         if (format != "png") throw InputError(path, "", "an image target's run exports obj, ply, glb or png, not " + format);

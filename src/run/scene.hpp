@@ -52,6 +52,11 @@ public:
     void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const;
     /// Score `c` (valid for the scene's grammar) with the run's scorer, and count what it covers.
     Evaluation evaluate(const Chromosome& c) const;
+    /// Voxel or silhouette IoU of `c` (Evaluation::iou), from one scoring pass: the progress line
+    /// and the curve's iou column. `workspace` is one that scorer().makeWorkspace() made (kept
+    /// between calls, it saves allocating the raster or voxel rows each time). Like every
+    /// scoring, it adds to scorer().anomalies().
+    double iou(const Chromosome& c, ScoreWorkspace& workspace) const;
 
 private:
     Scene() = default;

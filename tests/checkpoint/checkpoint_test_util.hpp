@@ -3,6 +3,7 @@
 #pragma once
 #include <hdf5.h>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -40,7 +41,8 @@ inline IslandState makeIsland(int rank, std::size_t individuals = 24, std::size_
     }
     for (std::size_t r = 0; r < rows; ++r)
         s.curve.push_back({std::uint32_t(r + 1), 0.1 * double(r) + 1.0 / 3.0, (r + 1) * 200ULL, 0.9 - 1.0 / double(r + 7),
-                           0.5 + std::sqrt(double(r)), 1.0 / double(r + 3)});
+                           0.5 + std::sqrt(double(r)), 1.0 / double(r + 3),
+                           r == 1 ? std::numeric_limits<double>::quiet_NaN() : 1.0 / double(r + 2)});  // iou; one not measured
     rng.next();
     s.rng = rng.state();
     return s;
@@ -63,7 +65,7 @@ inline RunMetadata makeRun(int ranks, std::uint32_t generation = 5, const std::s
     m.configText = "[run]\nname = \"spaceship-test\"\n\n[ga]\npopulation = 24\n";
     m.grammarPath = sourcePath("grammars/spaceship.grammar");
     m.grammarText = spaceship().source;
-    for (std::uint32_t r = 1; r <= generation; ++r) m.curve.push_back({r, r * 0.5, r * 48ULL, 0.1 * r, 0.05 * r, 0.01});
+    for (std::uint32_t r = 1; r <= generation; ++r) m.curve.push_back({r, r * 0.5, r * 48ULL, 0.1 * r, 0.05 * r, 0.01, 0.02 * r});
     return m;
 }
 

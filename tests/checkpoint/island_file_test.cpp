@@ -25,6 +25,7 @@ void expectSameCurve(const std::vector<GenerationStats>& a, const std::vector<Ge
         EXPECT_EQ(bits(a[i].best), bits(b[i].best)) << "row " << i;
         EXPECT_EQ(bits(a[i].mean), bits(b[i].mean)) << "row " << i;
         EXPECT_EQ(bits(a[i].std), bits(b[i].std)) << "row " << i;
+        EXPECT_EQ(bits(a[i].iou), bits(b[i].iou)) << "row " << i;
     }
 }
 

@@ -1,5 +1,5 @@
-// A checkpoint of another schema (1: FNV-like checksums, before XXH3-64) is refused with a message
-// naming both versions, for run.h5 and for island files alike.
+// A checkpoint of another schema (1: FNV-like checksums, before XXH3-64; 2: a curve without its iou
+// column) is refused with a message naming both versions, for run.h5 and for island files alike.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -13,13 +13,13 @@
 namespace shapevo {
 namespace {
 
-void expectRefusedNamingBothVersions(const std::function<void()>& read) {
+void expectRefusedNamingBothVersions(const std::function<void()>& read, int old = 1) {
     try {
         read();
-        FAIL() << "a schema 1 file was accepted";
+        FAIL() << "a schema " << old << " file was accepted";
     } catch (const InputError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("schema 1"), std::string::npos) << what;
+        EXPECT_NE(what.find("schema " + std::to_string(old)), std::string::npos) << what;
         EXPECT_NE(what.find("reads " + std::to_string(kCheckpointSchemaVersion)), std::string::npos) << what;
     }
 }
@@ -36,6 +36,16 @@ TEST(CheckpointSchema, AnIslandFileOfSchemaOneIsRefusedNamingBothVersions) {
     writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0));
     test::setRootU32Attribute(dir.file("island-0000.h5"), "schema_version", 1);
     expectRefusedNamingBothVersions([&] { readIslandFile(dir.file("island-0000.h5"), test::spaceship(), test::kLimits); });
+}
+
+TEST(CheckpointSchema, ASchemaTwoCheckpointWithoutCurveIoUIsRefusedNamingBothVersions) {
+    test::TempDir dir;
+    writeRunMetadata(dir.file("run.h5"), test::makeRun(2));
+    test::setRootU32Attribute(dir.file("run.h5"), "schema_version", 2);
+    expectRefusedNamingBothVersions([&] { readRunMetadata(dir.file("run.h5")); }, 2);
+    writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0));
+    test::setRootU32Attribute(dir.file("island-0000.h5"), "schema_version", 2);
+    expectRefusedNamingBothVersions([&] { readIslandFile(dir.file("island-0000.h5"), test::spaceship(), test::kLimits); }, 2);
 }
 
 }  // namespace

@@ -29,8 +29,13 @@ TEST(Run, WritesEveryOutputFile) {
     for (const char* key : {"\"seed\"", "\"generations\": 8", "\"evaluations\": 278", "\"wall_seconds\"", "\"best_fitness\"", "\"voxel_iou\""})
         EXPECT_NE(summary.find(key), std::string::npos) << key << " in " << summary;
     const std::string curve = readFile(dir.file("run/curve.csv"));
-    EXPECT_EQ(curve.rfind("generation,seconds,evaluations,best,mean,std\n", 0), 0u);
+    EXPECT_EQ(curve.rfind("generation,seconds,evaluations,best,mean,std,iou\n", 0), 0u);
     EXPECT_EQ(std::count(curve.begin(), curve.end(), '\n'), 9);
+    // the last row's iou is the IoU of the model summary.json reports
+    const std::string last = curve.substr(curve.rfind('\n', curve.size() - 2) + 1);
+    const std::string iou = last.substr(last.rfind(',') + 1, last.size() - last.rfind(',') - 2);
+    ASSERT_FALSE(iou.empty()) << last;
+    EXPECT_NE(summary.find("\"voxel_iou\": " + iou + ","), std::string::npos) << iou << " in " << summary;
 }
 
 TEST(Run, ProgressLinePerGeneration) {
@@ -40,6 +45,8 @@ TEST(Run, ProgressLinePerGeneration) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* g : {"gen 1/3", "gen 2/3", "gen 3/3"}) EXPECT_NE(r.output.find(g), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("evals/s"), std::string::npos);
+    EXPECT_NE(r.output.find("gen 3/3  best "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("  IoU "), std::string::npos) << "the best model's IoU next to its fitness: " << r.output;
     EXPECT_NE(r.output.find("ETA"), std::string::npos);
 }
 
