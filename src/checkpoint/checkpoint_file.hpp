@@ -20,6 +20,8 @@ namespace shapevo {
 /// Layout version written to every checkpoint file's schema_version attribute.
 /// 3: the curve has an iou column (2: six curve columns; 1: FNV-like checksums, before XXH3-64).
 inline constexpr std::uint32_t kCheckpointSchemaVersion = 3;
+/// The oldest layout still read: schema 2 files resume, their curve rows without an IoU (NaN).
+inline constexpr std::uint32_t kOldestReadableSchemaVersion = 2;
 
 // --- single files ---------------------------------------------------------------------------
 

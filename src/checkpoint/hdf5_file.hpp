@@ -64,10 +64,13 @@ private:
 
 class H5Reader {
 public:
-    /// Open `path` read-only, check that its root attribute schema_version is `schema` (else
-    /// "checkpoint schema N is not supported (this shapevo reads M)"), then the attribute
-    /// checksum. Throws InputError if it is missing, not an HDF5 file, of another schema or altered.
-    H5Reader(std::string path, std::uint32_t schema);
+    /// Open `path` read-only, check that its root attribute schema_version is in
+    /// [oldest, newest] (else "checkpoint schema N is not supported (this shapevo reads M)" or
+    /// "reads O to M"), then the attribute checksum. Throws InputError if it is missing, not an
+    /// HDF5 file, of another schema or altered.
+    H5Reader(std::string path, std::uint32_t oldest, std::uint32_t newest);
+    /// The file's schema_version.
+    std::uint32_t schema() const { return schema_; }
     const std::string& path() const { return path_; }
     std::uint64_t fileSize() const { return fileSize_; }
     /// Raw bytes of dataset `name` (absolute path), which must have exactly type `type`, rank
@@ -89,6 +92,7 @@ private:
     void verifyAttributes() const;
     std::string path_;
     std::uint64_t fileSize_ = 0;
+    std::uint32_t schema_ = 0;
     Handle file_;
 };
 

@@ -40,7 +40,7 @@ std::string unpad(std::string s) {
 
 }  // namespace
 
-H5Reader::H5Reader(std::string path, std::uint32_t schema) : path_(std::move(path)) {
+H5Reader::H5Reader(std::string path, std::uint32_t oldest, std::uint32_t newest) : path_(std::move(path)) {
     silenceErrorPrinting();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path_, ec)) throw InputError(path_, "", "no such file");
@@ -49,9 +49,10 @@ H5Reader::H5Reader(std::string path, std::uint32_t schema) : path_(std::move(pat
     file_ = fileHandle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
     if (!file_.valid()) throw InputError(path_, "", "not a readable HDF5 file: " + takeErrorMessage());
     const std::uint32_t stored = u32("/", "schema_version");
-    if (stored != schema)
+    if (stored < oldest || stored > newest)
         fail("/@schema_version", "checkpoint schema " + std::to_string(stored) + " is not supported (this shapevo reads " +
-                                     std::to_string(schema) + ")");
+                                     (oldest == newest ? "" : std::to_string(oldest) + " to ") + std::to_string(newest) + ")");
+    schema_ = stored;
     verifyAttributes();
 }
 

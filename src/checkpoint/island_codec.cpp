@@ -3,6 +3,8 @@
 // is allocated, so lying counts cannot make the reader allocate more than the bytes it was given.
 #include "checkpoint/island_codec.hpp"
 
+#include <limits>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -56,16 +58,18 @@ std::vector<std::uint8_t> encodeCurve(const std::vector<GenerationStats>& curve)
 }
 
 std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, const std::string& path,
-                                         const std::string& where) {
-    constexpr std::size_t kRowBytes = kCurveWidth * 8;
+                                         const std::string& where, std::size_t width) {
+    if (width != kCurveWidth && width != kCurveWidthSchema2) throw std::invalid_argument("decodeCurve: bad width");
+    const std::size_t kRowBytes = width * 8;
     if (bytes.size() % kRowBytes != 0)
         throw InputError(path, where, std::to_string(bytes.size()) + " bytes is not a whole number of " +
-                                          std::to_string(kCurveWidth) + "-column f64 rows");
+                                          std::to_string(width) + "-column f64 rows");
     std::vector<GenerationStats> curve(bytes.size() / kRowBytes);
     for (std::size_t i = 0; i < curve.size(); ++i) {
         const std::uint8_t* p = bytes.data() + i * kRowBytes;
         double v[kCurveWidth];
-        for (std::size_t k = 0; k < kCurveWidth; ++k) v[k] = le::load<double>(p + 8 * k);
+        v[kCurveWidth - 1] = std::numeric_limits<double>::quiet_NaN();  // schema 2: no iou column
+        for (std::size_t k = 0; k < width; ++k) v[k] = le::load<double>(p + 8 * k);
         if (!wholeInRange(v[0], 4294967295.0))
             throw InputError(path, where, "row " + std::to_string(i) + ": generation is not a whole number in [0, 2^32)");
         if (!wholeInRange(v[2], kMaxExactInteger))
@@ -159,7 +163,7 @@ IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const Genom
         if (!problem.empty()) throw InputError(path, kGenes, "individual " + std::to_string(i) + ": " + problem);
         s.population.fitness[i] = le::load<double>(v.fitness.data() + 8 * i);
     }
-    s.curve = decodeCurve(v.curve, path, kCurve);
+    s.curve = decodeCurve(v.curve, path, kCurve, v.curveWidth);
     return s;
 }
 

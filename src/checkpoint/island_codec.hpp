@@ -24,6 +24,8 @@ inline constexpr const char* kRng = "/rng/state";
 inline constexpr const char* kCurve = "/curve";
 inline constexpr const char* kCurveColumns = "generation,seconds,evaluations,best,mean,std,iou";
 inline constexpr std::size_t kCurveWidth = 7;  ///< schema 3 (schema 2 had 6 columns, without iou)
+inline constexpr const char* kCurveColumnsSchema2 = "generation,seconds,evaluations,best,mean,std";
+inline constexpr std::size_t kCurveWidthSchema2 = 6;
 }  // namespace island_layout
 
 /// Borrowed raw bytes of one island's datasets (little endian) plus its root attributes.
@@ -37,7 +39,8 @@ struct IslandBytesView {
     std::span<const std::uint8_t> geneCounts;  ///< u32 x individuals
     std::span<const std::uint8_t> fitness;     ///< f64 x individuals
     std::span<const std::uint8_t> rng;         ///< u64 x 4
-    std::span<const std::uint8_t> curve;       ///< f64 x rows x 7
+    std::span<const std::uint8_t> curve;       ///< f64 x rows x curveWidth
+    std::size_t curveWidth = island_layout::kCurveWidth;  ///< 7, or 6 in a schema 2 file (no iou)
 };
 
 /// Owned raw bytes of one island's datasets, as encodeIsland makes them.
@@ -47,8 +50,9 @@ struct IslandBytes {
     std::uint64_t evaluations = 0;
     std::uint64_t individuals = 0;
     std::vector<std::uint8_t> genes, offsets, geneCounts, fitness, rng, curve;
+    std::size_t curveWidth = island_layout::kCurveWidth;
     IslandBytesView view() const {
-        return {rank, generation, evaluations, individuals, genes, offsets, geneCounts, fitness, rng, curve};
+        return {rank, generation, evaluations, individuals, genes, offsets, geneCounts, fitness, rng, curve, curveWidth};
     }
 };
 
@@ -64,8 +68,9 @@ IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const Genom
 /// A curve as rows of 7 little-endian f64 (generation, seconds, evaluations, best, mean, std, iou).
 std::vector<std::uint8_t> encodeCurve(const std::vector<GenerationStats>& curve);
 /// Throws InputError(path, where, ...) unless `bytes` is whole rows whose generation and
-/// evaluations columns are non-negative integers that fit their types.
+/// evaluations columns are non-negative integers that fit their types. `width` is the row's
+/// column count: kCurveWidth, or kCurveWidthSchema2 for a schema 2 file (its iou is NaN).
 std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, const std::string& path,
-                                         const std::string& where);
+                                         const std::string& where, std::size_t width = island_layout::kCurveWidth);
 
 }  // namespace shapevo

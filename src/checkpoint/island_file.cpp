@@ -68,7 +68,8 @@ void writeIslandFile(const std::string& path, const IslandState& s) {
 
 IslandState readIslandFile(const std::string& path, const Grammar& g, const GenomeLimits& limits) {
     using namespace island_layout;
-    const h5::H5Reader r(path, kCheckpointSchemaVersion);
+    const h5::H5Reader r(path, kOldestReadableSchemaVersion, kCheckpointSchemaVersion);
+    const bool schema2 = r.schema() == 2;  // its curve has no iou column
     IslandBytes b;
     b.rank = r.i32("/", "rank");
     b.generation = r.u32("/", "generation");
@@ -79,9 +80,11 @@ IslandState readIslandFile(const std::string& path, const Grammar& g, const Geno
     b.geneCounts = r.dataset(kGeneCounts, H5T_STD_U32LE, 1);
     b.fitness = r.dataset(kFitness, H5T_IEEE_F64LE, 1);
     b.rng = r.dataset(kRng, H5T_STD_U64LE, 1);
-    b.curve = r.dataset(kCurve, H5T_IEEE_F64LE, 2, kCurveWidth);
-    if (r.string(kCurve, "columns") != kCurveColumns)
-        throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + kCurveColumns + "\"");
+    b.curveWidth = schema2 ? kCurveWidthSchema2 : kCurveWidth;
+    b.curve = r.dataset(kCurve, H5T_IEEE_F64LE, 2, b.curveWidth);
+    const char* columns = schema2 ? kCurveColumnsSchema2 : kCurveColumns;
+    if (r.string(kCurve, "columns") != columns)
+        throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + columns + "\"");
     IslandState s = decodeIsland(b.view(), g, limits, path);
     s.runId = r.string("/", "run_id");
     s.seed = r.u64("/", "seed");

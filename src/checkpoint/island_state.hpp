@@ -36,7 +36,7 @@ struct InputFile {
 /// inputs are the run's identity: fixed when it starts, the same in every checkpoint.
 struct RunMetadata {
     std::string runId;                     ///< 32 random hex digits, made when the run starts
-    std::uint32_t schemaVersion = 2;
+    std::uint32_t schemaVersion = 3;
     std::uint64_t seed = 0;
     std::uint32_t generation = 0;          ///< generations completed by every island
     std::int32_t ranks = 1;                ///< number of islands

@@ -70,9 +70,10 @@ void writeRunMetadata(const std::string& path, const RunMetadata& m) {
 
 RunMetadata readRunMetadata(const std::string& path) {
     using namespace island_layout;
-    const h5::H5Reader r(path, kCheckpointSchemaVersion);
+    const h5::H5Reader r(path, kOldestReadableSchemaVersion, kCheckpointSchemaVersion);
     RunMetadata m;
-    m.schemaVersion = kCheckpointSchemaVersion;
+    m.schemaVersion = r.schema();
+    const bool schema2 = r.schema() == 2;  // its curve has no iou column
     m.runId = r.string("/", "run_id");
     m.seed = r.u64("/", "seed");
     m.generation = r.u32("/", "generation");
@@ -88,9 +89,11 @@ RunMetadata readRunMetadata(const std::string& path) {
     m.grammarText = r.text("/grammar/text");
     m.grammarPath = r.string("/grammar/text", "path");
     m.inputs = parseInputs(r.text("/inputs/text"), path);
-    m.curve = decodeCurve(r.dataset(kCurve, H5T_IEEE_F64LE, 2, kCurveWidth), path, kCurve);
-    if (r.string(kCurve, "columns") != kCurveColumns)
-        throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + kCurveColumns + "\"");
+    const std::size_t width = schema2 ? kCurveWidthSchema2 : kCurveWidth;
+    m.curve = decodeCurve(r.dataset(kCurve, H5T_IEEE_F64LE, 2, width), path, kCurve, width);
+    const char* columns = schema2 ? kCurveColumnsSchema2 : kCurveColumns;
+    if (r.string(kCurve, "columns") != columns)
+        throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + columns + "\"");
     return m;
 }
 
