@@ -164,10 +164,14 @@ int main(int argc, char** argv) {
         ->capture_default_str();
 
     // target
-    auto* target = app.add_subcommand("target", "Make a volume target: closed mesh (OBJ/PLY/STL) -> OpenVDB level set");
+    auto* target = app.add_subcommand("target", "Make a volume target: closed mesh (OBJ, PLY, STL, OFF, glTF/GLB, FBX, 3MF, "
+                                                "DAE, 3DS or any other format Assimp reads) -> OpenVDB level set");
     std::string meshPath, vdbOut;
     double voxelSize = 0.1;
-    target->add_option("mesh", meshPath, "closed triangle mesh")->required();
+    target->add_option("mesh", meshPath, "closed triangle mesh, format by extension: .obj, .ply, .stl (read by shapevo) or "
+                                         ".off, .gltf, .glb, .fbx, .3mf, .dae, .3ds, .x, .blend, ... (read by Assimp; an "
+                                         "unknown extension's error lists them all); a scene's meshes are merged in world space")
+        ->required();
     target->add_option("-o,--output", vdbOut, "output .vdb (must not exist)")->required();
     target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
 
@@ -354,6 +358,7 @@ int main(int argc, char** argv) {
             requireOutputFormat(vdbOut, kTargetFormats, "-o");
             refuseExisting(vdbOut);
             const Mesh mesh = readMesh(meshPath);
+            for (const std::string& w : mesh.warnings) std::cerr << "shapevo: warning: " << w << "\n";
             requireClosed(mesh, meshPath);
             writeTargetVdb(mesh, voxelSize, meshPath, vdbOut);
             std::cout << "wrote " << vdbOut << " (" << mesh.triangles.size() << " triangles, voxel size " << voxelSize
