@@ -122,7 +122,9 @@ Mesh decode(const std::string& bytes, const std::string& path, const std::string
             if (c == '\n' || c == '\r' || c == '\t') c = ' ';
         while (!text.empty() && text.back() == ' ') text.pop_back();
         text = shortened(text, 300);
-        if (text.find("bad_alloc") != std::string::npos) text = "out of memory (" + text + ")";
+        if (text.find("bad_alloc") != std::string::npos)
+            text = "Assimp ran out of the memory shapevo allows an import of this file (" + text +
+                   "); the file announces more data than it can hold, or is very large";
         if (text.empty()) text = "Assimp gave no reason";
         throw InputError(path, "", "cannot read " + format + " mesh: " + text);
     }

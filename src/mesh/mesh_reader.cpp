@@ -68,7 +68,7 @@ std::string unknownExtensionMessage(const std::string& ext) {
     std::string all;
     for (const std::string& e : more) all += " " + e;
     return "unknown mesh extension '" + ext + "': shapevo reads .obj, .ply and .stl itself and " +
-           std::to_string(more.size()) + " formats through Assimp (" + examples + ", ...; all:" + all + ")";
+           std::to_string(more.size()) + " more extensions through Assimp (" + examples + ", ...; all:" + all + ")";
 }
 
 /// The checks every reader's result gets, whatever the format.
