@@ -183,6 +183,37 @@ TEST(MeshImportErrors, OffAnnouncingABillionVerticesStaysInsideTheMemoryLimit) {
     expectInputError([&] { readMesh(path); }, {path + ": cannot read OFF mesh"});
 }
 
+// Inputs on which Assimp 5.2.5 itself crashes or hangs (found by fuzzing; the same bytes are in
+// tests/fuzz/regressions/fuzz_mesh_import/): the sandbox turns each into one InputError.
+
+TEST(MeshImportErrors, DirectXFaceIndexOutOfRangeCrashesAssimpNotShapevo) {
+    TempDir dir;  // Assimp's X importer dies of SIGBUS on the index 44 of an 8-vertex mesh
+    const std::string path = writeFile(dir, "cube.x",
+                                       "xof 0302txt 0064\nMesh cube {\n 8;\n -1;-1;-1;,\n 1;-1;-1;,\n -1;1;-1;,\n"
+                                       " 1;1;-1;,\n -1;-1;1;,\n 1;-1;1;,\n -1;1;1;,\n 1;1;1;;\n 6;\n 4;0,4,6,2;,\n"
+                                       " 4;1,3,7,5;,\n 4;0,1,5,44;0,2,3,1;,\n 4;4,5,7,6;;\n}\n");
+    expectInputError([&] { readMesh(path); }, {path + ": cannot read X mesh: Assimp could not import it: it crashed"});
+}
+
+TEST(MeshImportErrors, ThreeMfWithABadZipChecksumAbortsAssimpNotShapevo) {
+    TempDir dir;  // an ai_assert in Assimp's zip reader calls abort() on a CRC mismatch
+    std::string bytes = test::to3mf(cubeMesh(1.0f));
+    const std::size_t at = bytes.find("<vertex x=\"-1\"");
+    ASSERT_NE(at, std::string::npos);
+    bytes[at + 12] = '2';  // the stored CRC no longer matches the data
+    const std::string path = writeFile(dir, "bad-crc.3mf", bytes);
+    expectInputError([&] { readMesh(path); }, {path + ": cannot read 3MF mesh: Assimp could not import it: it crashed"});
+}
+
+TEST(MeshImportErrors, SmdWithUnterminatedNodesHangsAssimpUntilTheTimeLimit) {
+    TempDir dir;  // Assimp's SMD importer loops for ever on this 47-byte file (no newline at its end)
+    const std::string path = writeFile(dir, "hang.smd", "vMrsion 1\nnodes\n0 \"root\" d1\nen\x02\nskele\xc4on\ntime 0");
+    MeshReadLimits limits;
+    limits.seconds = 0.5;
+    limits.secondsPerMiB = 0;
+    expectInputError([&] { readMesh(path, limits); }, {path + ": cannot read SMD mesh", "still running after 0.5 s"});
+}
+
 TEST(MeshImportErrors, RandomBytesGiveOneMessageForEveryFormat) {
     TempDir dir;
     std::mt19937 random(14);
