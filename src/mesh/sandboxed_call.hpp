@@ -11,7 +11,7 @@ namespace shapevo::meshio {
 
 struct SandboxLimits {
     std::uint64_t memoryBytes = 1ull << 30;  ///< address space the child may add to what it inherits
-    double seconds = 20.0;                   ///< wall-clock time before the child is killed
+    double seconds = 10.0;                   ///< wall-clock time before the child is killed
     std::uint64_t maxOutputBytes = 1ull << 30;  ///< the child is killed if it writes more
 };
 
