@@ -177,13 +177,17 @@ int main(int argc, char** argv) {
         ->capture_default_str();
 
     // target
-    auto* target = app.add_subcommand("target", "Make a target from a mesh (OBJ/PLY/STL): a volume (OpenVDB level set of its "
+    auto* target = app.add_subcommand("target", "Make a target from a mesh (OBJ, PLY, STL, OFF, glTF/GLB, FBX, 3MF, DAE, 3DS or any other "
+                                                "format Assimp reads): a volume (OpenVDB level set of its "
                                                 "inside; seams, small holes and non-manifold edges are repaired and reported) "
                                                 "or, with --image, a picture of its silhouette or shadow");
     std::string meshPath, vdbOut, imageConfig;
     double voxelSize = 0.1;
-    target->add_option("mesh", meshPath, "triangle mesh; for a volume its inside must be determinable (holes filled, "
-                                         "at most half its surface)")->required();
+    target->add_option("mesh", meshPath, "triangle mesh, format by extension: .obj, .ply, .stl (read by shapevo) or .off, "
+                                         ".gltf, .glb, .fbx, .3mf, .dae, .3ds, .x, .blend, ... (read by Assimp; an unknown "
+                                         "extension's error lists them all; a scene's meshes are merged in world space); for "
+                                         "a volume its inside must be determinable (holes filled, at most half its surface)")
+        ->required();
     target->add_option("-o,--output", vdbOut, "output .vdb, or .png with --image (must not exist)")->required();
     auto* voxelOpt = target->add_option("--voxel-size", voxelSize, "voxel edge length in model units")->capture_default_str();
     target->add_option("--image", imageConfig, "draw the mesh through the camera of this image config ([target] image and "
@@ -429,6 +433,7 @@ int main(int argc, char** argv) {
                                                       "[camera] section); --image draws through an image config's camera");
             }
             const Mesh mesh = readMesh(meshPath);
+            for (const std::string& w : mesh.warnings) std::cerr << "shapevo: warning: " << w << "\n";
             if (imageSettings) {
                 const Camera camera = Camera::compile(imageSettings->image->camera, imageConfig);
                 const std::uint64_t covered =

@@ -1,4 +1,4 @@
-// Mesh: an indexed triangle mesh as read from OBJ/PLY/STL (input to target making) and as the
+// Mesh: an indexed triangle mesh as read from a mesh file (mesh/mesh_reader.hpp; input to target making) and as the
 // writers (report/model_writer.hpp, mesh/glb_writer.hpp) export it. An exported model may also
 // carry how its triangles look: a list of materials (a name and a colour) and one material per
 // triangle. Both lists are empty for meshes read from files and for models whose grammar sets no
@@ -45,6 +45,10 @@ struct Mesh {
     /// Empty when no material has a texture; otherwise one UV coordinate per vertex (those of
     /// untextured triangles are 0).
     std::vector<glm::vec2> uvs;
+    /// What the reader read past (e.g. a stray PLY header line), one message each, starting
+    /// with the file's path and the place ("cube.ply: line 3: skipped ..."). Empty for meshes
+    /// that were not read from a file; the writers ignore it.
+    std::vector<std::string> warnings;
 };
 
 }  // namespace shapevo

@@ -5,9 +5,11 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "base/input_error.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_reader.hpp"
 
 namespace shapevo::meshio {
 
@@ -15,6 +17,13 @@ namespace shapevo::meshio {
 Mesh parseObj(std::string_view data, const std::string& path);
 Mesh parsePly(std::string_view data, const std::string& path);
 Mesh parseStl(std::string_view data, const std::string& path);
+
+/// Reads `path` (of `fileBytes` bytes) with Assimp in a sandboxed child process (mesh/assimp_reader.cpp).
+Mesh importWithAssimp(const std::string& path, std::uint64_t fileBytes, const MeshReadLimits& limits);
+/// True if Assimp has an importer for `extension` (lower case, with the dot).
+bool assimpReads(const std::string& extension);
+/// Assimp's extensions but .obj, .ply and .stl (lower case, with the dot, sorted).
+std::vector<std::string> assimpExtensionList();
 
 /// Parses all of `token` as a decimal floating-point number; throws InputError at `where`.
 double parseDouble(std::string_view token, const std::string& path, const std::string& where);

@@ -1,9 +1,12 @@
-// Mesh file input: picks the parser by extension, enforces "at least one triangle", and
-// checks closedness (every edge shared by exactly two triangles) for volume targets.
+// Mesh file input: refuses missing, non-regular, empty and oversized files, picks the reader by
+// extension (ours for OBJ/PLY/STL, Assimp for the rest), runs the same checks on every result
+// (finite coordinates, indices in range, at least one triangle), and checks closedness (every
+// edge shared by exactly two triangles) for volume targets.
 #include "mesh/mesh_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -23,14 +26,65 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-std::string readWholeFile(const std::string& path) {
+std::string sizeText(std::uint64_t bytes) {
+    std::ostringstream s;
+    s.precision(3);
+    if (bytes >= (1ull << 30)) s << double(bytes) / double(1ull << 30) << " GiB";
+    else if (bytes >= (1ull << 20)) s << double(bytes) / double(1ull << 20) << " MiB";
+    else s << bytes << " bytes";
+    return s.str();
+}
+
+/// Refuses what is no regular file, is empty or is too large; returns the size.
+std::uint64_t checkedFileSize(const std::string& path, const MeshReadLimits& limits) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "cannot open mesh: is a directory");
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw InputError(path, "", "cannot open mesh file: no such file");
+    if (std::filesystem::is_directory(status)) throw InputError(path, "", "cannot open mesh: is a directory");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(path, "", "cannot open mesh: not a regular file (a device, pipe or socket)");
+    const std::uint64_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(path, "", "cannot open mesh file: " + ec.message());
+    if (size == 0) throw InputError(path, "", "mesh file is empty");
+    if (size > limits.maxFileBytes)
+        throw InputError(path, "", "mesh file is " + sizeText(size) + ", over shapevo's limit of " +
+                                       sizeText(limits.maxFileBytes) + " for mesh files");
+    return size;
+}
+
+std::string readWholeFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot open mesh file");
     std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw InputError(path, "", "error while reading mesh file");
     return data;
+}
+
+std::string unknownExtensionMessage(const std::string& ext) {
+    const std::vector<std::string> more = assimpMeshExtensions();
+    std::string examples;
+    for (const char* e : {".off", ".gltf", ".glb", ".fbx", ".3mf", ".dae", ".3ds"})
+        if (std::find(more.begin(), more.end(), e) != more.end()) examples += std::string(examples.empty() ? "" : ", ") + e;
+    std::string all;
+    for (const std::string& e : more) all += " " + e;
+    return "unknown mesh extension '" + ext + "': shapevo reads .obj, .ply and .stl itself and " +
+           std::to_string(more.size()) + " more extensions through Assimp (" + examples + ", ...; all:" + all + ")";
+}
+
+/// The checks every reader's result gets, whatever the format.
+void checkMesh(const Mesh& mesh, const std::string& path) {
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const glm::vec3& p = mesh.vertices[v];
+        if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)))  // it throws, naming the vertex
+            meshio::finitePoint(p.x, p.y, p.z, path, "vertex " + std::to_string(v));
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (std::uint32_t i : mesh.triangles[t])
+            if (i >= mesh.vertices.size())
+                throw InputError(path, "triangle " + std::to_string(t),
+                                 "vertex index " + std::to_string(i) + " out of range (" +
+                                     std::to_string(mesh.vertices.size()) + " vertices)");
+    if (mesh.triangles.empty()) throw InputError(path, "", "mesh has no triangles");
 }
 
 std::string formatPoint(const glm::vec3& p) {
@@ -42,18 +96,25 @@ std::string formatPoint(const glm::vec3& p) {
 
 }  // namespace
 
-Mesh readMesh(const std::string& path) {
+Mesh readMesh(const std::string& path, const MeshReadLimits& limits) {
     const std::string ext = lowerExtension(path);
-    if (ext != ".obj" && ext != ".ply" && ext != ".stl")
-        throw InputError(path, "",
-                         "unknown mesh extension '" + ext + "' (expected .obj, .ply or .stl)");
-    const std::string data = readWholeFile(path);
-    Mesh mesh = ext == ".obj"   ? meshio::parseObj(data, path)
-                : ext == ".ply" ? meshio::parsePly(data, path)
-                                : meshio::parseStl(data, path);
-    if (mesh.triangles.empty()) throw InputError(path, "", "mesh has no triangles");
+    const bool own = ext == ".obj" || ext == ".ply" || ext == ".stl";
+    if (!own && !meshio::assimpReads(ext)) throw InputError(path, "", unknownExtensionMessage(ext));
+    const std::uint64_t size = checkedFileSize(path, limits);
+    Mesh mesh;
+    if (own) {
+        const std::string data = readWholeFile(path);
+        mesh = ext == ".obj"   ? meshio::parseObj(data, path)
+               : ext == ".ply" ? meshio::parsePly(data, path)
+                               : meshio::parseStl(data, path);
+    } else {
+        mesh = meshio::importWithAssimp(path, size, limits);
+    }
+    checkMesh(mesh, path);
     return mesh;
 }
+
+std::vector<std::string> assimpMeshExtensions() { return meshio::assimpExtensionList(); }
 
 void requireClosed(const Mesh& mesh, const std::string& path) {
     // Canonical id per distinct position, so seams with duplicated vertices still count as shared.

@@ -1,6 +1,8 @@
 // PLY parser (ascii and binary_little_endian): reads x/y/z of the `vertex` element and the
 // `vertex_indices` (or `vertex_index`) list of the `face` element; skips every other element
-// and property. Polygons are fan-triangulated.
+// and property. Polygons are fan-triangulated. A header line that starts with no PLY keyword
+// (Blender 2.4x writes "Created by Blender 2.49 - www.blender.org, source file: ..." without
+// `comment`) is skipped with a warning in Mesh::warnings (the first kMaxHeaderWarnings, then a count).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -13,6 +15,8 @@
 namespace shapevo::meshio {
 
 namespace {
+
+constexpr std::size_t kMaxHeaderWarnings = 5;
 
 enum class Type { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
@@ -149,9 +153,12 @@ Mesh parsePly(std::string_view data, const std::string& path) {
     if (nextLine(rest) != "ply") throw InputError(path, "1", "not a PLY file (first line must be 'ply')");
     bool binary = false, sawFormat = false, sawEnd = false;
     std::vector<Element> elements;
+    std::vector<std::string> warnings;
+    std::size_t skipped = 0;
     while (!rest.empty() && !sawEnd) {
         const std::string where = std::to_string(++lineNo);
-        Tokens tokens(nextLine(rest));
+        const std::string_view line = nextLine(rest);
+        Tokens tokens(line);
         const std::string_view keyword = tokens.next();
         if (keyword == "format") {
             const std::string_view format = tokens.next();
@@ -182,9 +189,14 @@ Mesh parsePly(std::string_view data, const std::string& path) {
         } else if (keyword == "end_header") {
             sawEnd = true;
         } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
-            throw InputError(path, where, "unknown PLY header keyword '" + std::string(keyword) + "'");
+            if (++skipped <= kMaxHeaderWarnings)
+                warnings.push_back(path + ": line " + where + ": skipped the header line '" + shortened(line, 100) +
+                                   "' (not a PLY keyword; a comment needs 'comment' before it)");
         }
     }
+    if (skipped > kMaxHeaderWarnings)
+        warnings.push_back(path + ": skipped " + std::to_string(skipped - kMaxHeaderWarnings) +
+                           " more header lines that start with no PLY keyword");
     if (!sawFormat) throw InputError(path, "", "PLY header has no format line");
     if (!sawEnd) throw InputError(path, "", "PLY header has no end_header line");
 
@@ -210,6 +222,7 @@ Mesh parsePly(std::string_view data, const std::string& path) {
     else body = std::make_unique<AsciiBody>(rest, lineNo + 1, path);
 
     Mesh mesh;
+    mesh.warnings = std::move(warnings);
     mesh.vertices.reserve(std::min(vertexCount, data.size()));
     std::vector<std::uint32_t> polygon;
     for (const Element& e : elements) {

@@ -188,8 +188,8 @@ TEST(MeshReaderErrors, MissingFileNamesThePath) {
 
 TEST(MeshReaderErrors, UnknownExtensionIsRejected) {
     TempDir dir;
-    const std::string path = writeFile(dir, "cube.off", "OFF\n");
-    expectInputError([&] { readMesh(path); }, {path, ".off"});
+    const std::string path = writeFile(dir, "cube.xyz", "OFF\n");
+    expectInputError([&] { readMesh(path); }, {path, ".xyz"});
 }
 
 TEST(MeshReaderErrors, ObjMalformedNumberNamesFileAndLine) {
