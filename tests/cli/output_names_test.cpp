@@ -80,7 +80,7 @@ TEST_F(OutputExtension, SampleNeedsAMeshExtensionAndAGenomeFileExtension) {
     TempDir dir;
     const std::string grammar = sourcePath("grammars/spaceship.grammar");
     expectRefused("sample " + grammar + " -o " + dir.file("x.foo"),
-                  dir.file("x.foo") + ": unknown output extension '.foo'; -o takes a .obj, .ply or .glb file", dir.file("x.foo"));
+                  dir.file("x.foo") + ": unknown output extension '.foo'; -o takes a .obj, .ply, .glb or .png file", dir.file("x.foo"));
     expectRefused("sample " + grammar + " -o " + dir.file("noext"), dir.file("noext") + ": has no file extension", dir.file("noext"));
     expectRefused("sample " + grammar + " -o " + dir.file("m.obj") + " --genome " + dir.file("m.gen"),
                   dir.file("m.gen") + ": unknown output extension '.gen'; --genome takes a .genome file", dir.file("m.obj"));
