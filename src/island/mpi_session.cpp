@@ -1,6 +1,7 @@
 // MpiSession: MPI_Init_thread(FUNNELED) when launched by a launcher; thin collective wrappers.
 #include "island/mpi_session.hpp"
 
+#include <chrono>
 #include <cstdlib>
 
 #include <mpi.h>
@@ -12,6 +13,13 @@ bool launchedByMpi() {
         if (std::getenv(v)) return true;
     return false;
 }
+
+namespace {
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
+WaitTimer::WaitTimer(const MpiSession& mpi) : mpi_(mpi), start_(now()) {}
+WaitTimer::~WaitTimer() { mpi_.addWaited(now() - start_); }
 
 MpiSession::MpiSession(int& argc, char**& argv) {
     if (!launchedByMpi()) return;
@@ -28,6 +36,7 @@ MpiSession::~MpiSession() {
 
 bool MpiSession::allTrue(bool ok) const {
     if (!active_) return ok;
+    WaitTimer wait(*this);
     int in = ok ? 1 : 0, out = 0;
     MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     return out == 1;
@@ -35,21 +44,27 @@ bool MpiSession::allTrue(bool ok) const {
 
 bool MpiSession::anyTrue(bool flag) const {
     if (!active_) return flag;
+    WaitTimer wait(*this);
     int in = flag ? 1 : 0, out = 0;
     MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     return out == 1;
 }
 
 void MpiSession::sum(std::vector<double>& values) const {
-    if (active_) MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    if (!active_) return;
+    WaitTimer wait(*this);
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
 
 void MpiSession::max(std::vector<double>& values) const {
-    if (active_) MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    if (!active_) return;
+    WaitTimer wait(*this);
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
 }
 
 std::pair<double, int> MpiSession::maxLoc(double value) const {
     if (!active_) return {value, 0};
+    WaitTimer wait(*this);
     struct {
         double value;
         int rank;
@@ -60,6 +75,7 @@ std::pair<double, int> MpiSession::maxLoc(double value) const {
 
 std::vector<std::uint32_t> MpiSession::transfer(const std::vector<std::uint32_t>& words, int from, int to) const {
     if (!active_ || from == to) return words;
+    WaitTimer wait(*this);
     constexpr int kTag = 71;
     if (rank_ == from) {
         MPI_Send(words.data(), int(words.size()), MPI_UINT32_T, to, kTag, MPI_COMM_WORLD);
@@ -77,6 +93,7 @@ std::vector<std::uint32_t> MpiSession::transfer(const std::vector<std::uint32_t>
 
 bool MpiSession::fromRoot(bool flag) const {
     if (!active_) return flag;
+    WaitTimer wait(*this);
     int v = flag ? 1 : 0;
     MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
     return v == 1;
@@ -84,6 +101,7 @@ bool MpiSession::fromRoot(bool flag) const {
 
 std::string MpiSession::broadcast(const std::string& s) const {
     if (!active_) return s;
+    WaitTimer wait(*this);
     unsigned long long n = s.size();
     MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
     std::string out = rank_ == 0 ? s : std::string(n, '\0');

@@ -1,6 +1,7 @@
 // MpiSession: MPI for the lifetime of the program, only when launched by mpirun/srun. A plain
 // `shapevo run` (one island) never initialises MPI, so it starts fast and needs no launcher.
-// The collective helpers below work in both cases (with one rank they are trivial).
+// The collective helpers below work in both cases (with one rank they are trivial). Every
+// blocking call adds its time to waitedSeconds(): the time this rank spent waiting for others.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -34,12 +35,30 @@ public:
     bool fromRoot(bool flag) const;
     /// Broadcast a string from rank 0.
     std::string broadcast(const std::string& s) const;
+    /// Seconds this rank has spent in blocking calls with other ranks (collectives, blocking
+    /// receives): the helpers above add theirs, other island code adds its own with addWaited.
+    double waitedSeconds() const { return waited_; }
+    void addWaited(double seconds) const { waited_ += seconds; }
     /// End every rank now (MPI_Abort) when MPI is active; otherwise exit.
     [[noreturn]] void abort(int code) const;
 
 private:
     bool active_ = false;
     int rank_ = 0, size_ = 1;
+    mutable double waited_ = 0;
+};
+
+/// Adds the time from its construction to its destruction to a session's waited seconds.
+class WaitTimer {
+public:
+    explicit WaitTimer(const MpiSession& mpi);
+    ~WaitTimer();
+    WaitTimer(const WaitTimer&) = delete;
+    WaitTimer& operator=(const WaitTimer&) = delete;
+
+private:
+    const MpiSession& mpi_;
+    double start_;
 };
 
 /// True if the environment says a launcher (mpirun, srun) started this process.

@@ -105,6 +105,7 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
     const int right = (mpi_.rank() + 1) % mpi_.size(), left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
     packIndividuals(pop, bestIndices(pop, settings_.count), outgoing_);
     if (!settings_.async) {
+        WaitTimer wait(mpi_);  // the exchange waits for the slower neighbour
         int sendCount = int(outgoing_.size()), recvCount = 0;
         MPI_Sendrecv(&sendCount, 1, MPI_INT, right, kMigrationTag, &recvCount, 1, MPI_INT, left, kMigrationTag,
                      MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -145,6 +146,7 @@ void RingMigration::finish() {
     // non-blocking barrier only once its own sends are done, so nobody waits on a receiver that
     // has stopped listening.
     const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
+    WaitTimer wait(mpi_);
     MPI_Request barrier = MPI_REQUEST_NULL;
     bool inBarrier = false;
     for (;;) {

@@ -67,6 +67,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"migration_seconds\": " + formatDouble(s.migrationSeconds) + ",\n";
     t += "  \"checkpoint_seconds\": " + formatDouble(s.checkpointSeconds) + ",\n";
     t += "  \"iou_seconds\": " + formatDouble(s.iouSeconds) + ",\n";
+    t += "  \"wait_share_max\": " + formatDouble(s.waitShareMax) + ",\n";
+    t += "  \"wait_share_mean\": " + formatDouble(s.waitShareMean) + ",\n";
     t += "  \"non_finite_models\": " + std::to_string(s.nonFiniteModels) + ",\n";
     t += "  \"truncated_models\": " + std::to_string(s.truncatedModels) + ",\n";
     if (!s.changedInputs.empty()) {

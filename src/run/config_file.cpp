@@ -505,6 +505,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     const toml::table* migration = rd.section("migration");
     rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
     rd.number(migration, "migration", "count", r.migration.count, 0, 1e7);
+    rd.number(migration, "migration", "meeting_interval", r.migration.meetingInterval, 0, 1e9);
     std::string mode = "sync";
     rd.string(migration, "migration", "mode", mode);
     if (mode != "sync" && mode != "async")

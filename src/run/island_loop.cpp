@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <ostream>
+#include <thread>
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/run_identity.hpp"
@@ -17,8 +18,11 @@
 #include "report/model_writer.hpp"
 #include "report/render/model_picture.hpp"
 #include "report/run_report.hpp"
+#include "island/async_control.hpp"
+#include "island/island_meeting.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
+#include "run/progress_line.hpp"
 #include "search/search_methods.hpp"
 
 namespace shapevo {
@@ -26,14 +30,6 @@ namespace shapevo {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string humanSeconds(double s) {
-    char b[32];
-    if (s < 100) std::snprintf(b, sizeof b, "%.2fs", s);
-    else if (s < 6000) std::snprintf(b, sizeof b, "%dm%02ds", int(s) / 60, int(s) % 60);
-    else std::snprintf(b, sizeof b, "%dh%02dm", int(s) / 3600, int(s) / 60 % 60);
-    return b;
-}
 
 /// Island r's seed: r = 0 keeps the run's seed, so a one-rank MPI run equals a plain run.
 std::uint64_t islandSeed(std::uint64_t seed, int rank) { return seed + 0x9e3779b97f4a7c15ULL * std::uint64_t(rank); }
@@ -153,11 +149,18 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     result.folder = folder;
     std::string stopReason;  ///< empty while running
     bool bySignal = false;
-    // After each generation: migrate, agree on global statistics and on stopping, checkpoint.
     double migrationSeconds = 0, checkpointSeconds = 0;  // this rank's time in each, for the summary
-    auto lastCheckpoint = Clock::now(), lastProgress = Clock::now();
+    auto lastCheckpoint = Clock::now();
     auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-    auto afterGeneration = [&]() -> bool {
+    const double waitedBefore = mpi.waitedSeconds();
+    auto waitShare = [&] { return (mpi.waitedSeconds() - waitedBefore) / std::max(1e-9, since(start)); };
+    ProgressLine progress(log, s.ga.generations, s.wallTime);
+    const bool showProgress = root && !options.quiet;
+    const int islands = mpi.active() ? mpi.size() : 1;
+
+    // Every rank's own part of a generation: migration, its figures, its own curve row.
+    IslandRow lastRow;
+    auto ownGeneration = [&] {
         const auto migrationStart = Clock::now();
         migration.afterGeneration(ga.population(), ga.generation());
         migrationSeconds += since(migrationStart);
@@ -165,90 +168,192 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         local.seconds = elapsed();
         local.iou = bestIoU.of(scene, ga.population().individuals[ga.population().best()]);
         localCurve.push_back(local);
-        double sum = 0, squares = 0;
-        for (double f : ga.population().fitness) sum += f, squares += f * f;
-        std::vector<double> sums{sum, squares, double(ga.population().size()), double(ga.evaluations())};
-        mpi.sum(sums);
-        const int signal = stopSignalReceived();
-        // rank 0's clock decides time-based checkpoints; the flag travels with the other maxima
-        const bool timeForCheckpoint = root && s.checkpoint.seconds > 0 && since(lastCheckpoint) >= s.checkpoint.seconds;
-        std::vector<double> maxima{local.best, double(signal), s.wallTime > 0 && local.seconds >= s.wallTime ? 1.0 : 0.0,
-                                   timeForCheckpoint ? 1.0 : 0.0};
-        mpi.max(maxima);
-        // the global best's IoU: from the island(s) holding it (the larger IoU among equal bests)
-        std::vector<double> iouOfBest{local.best == maxima[0] ? local.iou : -1.0};
-        mpi.max(iouOfBest);
-        GenerationStats global;
-        global.generation = ga.generation();
-        global.seconds = local.seconds;
-        global.evaluations = std::uint64_t(sums[3]);
-        global.best = maxima[0];
-        global.mean = sums[0] / sums[2];
-        global.std = std::sqrt(std::max(0.0, sums[1] / sums[2] - global.mean * global.mean));
-        global.iou = iouOfBest[0] >= 0 ? iouOfBest[0] : std::numeric_limits<double>::quiet_NaN();
-        meta.curve.push_back(global);
-        meta.generation = ga.generation();
-        meta.wallSeconds = global.seconds;
-        if (maxima[1] > 0) stopReason = signalName(int(maxima[1])), bySignal = true;
-        else if (maxima[2] > 0) stopReason = "the wall-time budget";
-        else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
-        else if (ga.generation() >= s.ga.generations) stopReason = "done";
-        // Progress: every one of the first 20 generations, then at most one line a second, and
-        // always the last one, so hour-long runs stay readable.
-        if (root && !options.quiet && (global.generation <= 20 || since(lastProgress) >= 1.0 || !stopReason.empty())) {
-            lastProgress = Clock::now();
-            const double rate = global.seconds > wallBefore ? double(global.evaluations) / global.seconds : 0;
-            const double perGeneration = global.seconds / std::max(1u, global.generation);
-            double eta = perGeneration * double(s.ga.generations > global.generation ? s.ga.generations - global.generation : 0);
-            if (s.wallTime > 0) eta = std::min(eta, std::max(0.0, s.wallTime - global.seconds));
-            char line[220];
-            std::snprintf(line, sizeof line, "gen %*u/%u  best %.5f  IoU %.4f  mean %.5f  %.0f evals/s  elapsed %s  ETA %s\n",
-                          int(std::to_string(s.ga.generations).size()), global.generation, s.ga.generations, global.best,
-                          global.iou, global.mean, rate, humanSeconds(global.seconds).c_str(), humanSeconds(eta).c_str());
-            log << line << std::flush;
+        lastRow = islandRow(local, ga.population().fitness);
+    };
+    auto checkpointNow = [&] {  // collective
+        const auto checkpointStart = Clock::now();
+        IslandState island;
+        island.runId = meta.runId;
+        island.seed = meta.seed;
+        island.ranks = meta.ranks;
+        island.rank = mpi.rank();
+        island.generation = ga.generation();
+        island.evaluations = ga.evaluations();
+        island.rng = ga.rng().state();
+        island.population = ga.population();
+        island.curve = localCurve;
+        const std::string failed = writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
+        if (!failed.empty())  // every rank sees the failure: stop now rather than lose more work
+            throw RunFailure{root ? "checkpoint at generation " + std::to_string(meta.generation) +
+                                        " could not be written: " + failed + "; the run stops; " +
+                                        newestCompleteCheckpoint(folder, meta.runId)
+                                  : std::string()};
+        checkpointSeconds += since(checkpointStart);
+        lastCheckpoint = Clock::now();
+    };
+    auto timeForCheckpoint = [&] { return root && s.checkpoint.seconds > 0 && since(lastCheckpoint) >= s.checkpoint.seconds; };
+    auto intervalCheckpoint = [&] { return s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0; };
+
+    // Sync mode (and any one-island run): the islands meet every `meetEvery` generations, when a
+    // checkpoint is due by generation count and at the last generation (island/island_meeting.hpp).
+    const std::uint32_t meetEvery = islands < 2 ? 1 : s.migration.meetingEvery();
+    std::vector<IslandRow> sinceMeeting;
+    auto syncTurn = [&]() -> bool {
+        sinceMeeting.push_back(lastRow);
+        const std::uint32_t g = ga.generation();
+        const bool byCount = intervalCheckpoint();
+        if (g % meetEvery != 0 && !byCount && g < s.ga.generations) return false;
+        MeetingInput in;
+        in.rows.swap(sinceMeeting);
+        in.signal = stopSignalReceived();
+        in.wallTimeSpent = s.wallTime > 0 && elapsed() >= s.wallTime;
+        in.checkpointDue = timeForCheckpoint();  // rank 0's clock decides time-based checkpoints
+        in.waitShare = waitShare();
+        const MeetingResult m = meet(mpi, in);
+        bool targetReached = false;
+        for (const GenerationStats& row : m.rows) {
+            meta.curve.push_back(row);
+            targetReached = targetReached || (s.targetFitness && row.best >= *s.targetFitness);
         }
-        const bool due = (s.checkpoint.interval > 0 && ga.generation() % s.checkpoint.interval == 0) || maxima[3] > 0;
-        if (due || !stopReason.empty()) {
-            const auto checkpointStart = Clock::now();
-            IslandState island;
-            island.runId = meta.runId;
-            island.seed = meta.seed;
-            island.ranks = meta.ranks;
-            island.rank = mpi.rank();
-            island.generation = ga.generation();
-            island.evaluations = ga.evaluations();
-            island.rng = ga.rng().state();
-            island.population = ga.population();
-            island.curve = localCurve;
-            const std::string failed = writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
-            if (!failed.empty())  // every rank sees the failure: stop now rather than lose more work
-                throw RunFailure{root ? "checkpoint at generation " + std::to_string(meta.generation) +
-                                            " could not be written: " + failed + "; the run stops; " +
-                                            newestCompleteCheckpoint(folder, meta.runId)
-                                      : std::string()};
-            checkpointSeconds += since(checkpointStart);
-            lastCheckpoint = Clock::now();
-        }
+        meta.generation = g;
+        meta.wallSeconds = m.rows.back().seconds;
+        if (m.signal > 0) stopReason = signalName(m.signal), bySignal = true;
+        else if (m.wallTimeSpent) stopReason = "the wall-time budget";
+        else if (targetReached) stopReason = "reaching the target fitness";
+        else if (g >= s.ga.generations) stopReason = "done";
+        if (showProgress)
+            for (std::size_t i = 0; i < m.rows.size(); ++i) {
+                const bool last = i + 1 == m.rows.size();
+                if (!progress.due(m.rows[i].generation, last && !stopReason.empty()) || (!last && m.rows[i].generation > 20)) continue;
+                ProgressFigures f;
+                f.row = m.rows[i];
+                f.runSecondsBefore = wallBefore;
+                f.waitShareMean = m.waitShareMean, f.waitShareMax = m.waitShareMax;
+                f.islands = f.islandsHeard = islands;
+                progress.print(f);
+            }
+        if (byCount || m.checkpointDue || !stopReason.empty()) checkpointNow();
         return !stopReason.empty();
+    };
+
+    // Async mode: nobody waits; rank 0 hears the others' newest figures and gives the orders
+    // (island/async_control.hpp). `idle`: this island has done its generations and waits for
+    // the others (the end of the run).
+    AsyncControl control(mpi, 0.2);
+    bool toldFinished = false, toldSignal = false;
+    auto asyncTurn = [&](bool idle) -> bool {
+        const int signal = stopSignalReceived();
+        const bool finished = ga.generation() >= s.ga.generations;
+        IslandStatus own;
+        own.generation = ga.generation();
+        own.seconds = lastRow.stats.seconds;
+        own.best = lastRow.stats.best;
+        own.iou = std::isnan(lastRow.stats.iou) ? -1.0 : lastRow.stats.iou;
+        own.fitnessSum = lastRow.fitnessSum, own.fitnessSquares = lastRow.fitnessSquares;
+        own.individuals = lastRow.individuals;
+        own.evaluations = double(ga.evaluations());
+        own.waitShare = waitShare();
+        own.signal = signal;
+        own.finished = finished ? 1 : 0;
+        std::optional<AsyncOrder> order;
+        if (!root) {
+            control.report(own, (signal && !toldSignal) || (finished && !toldFinished));
+            toldSignal = toldSignal || signal, toldFinished = toldFinished || finished;
+            order = control.poll();
+        } else {
+            control.collect(own);
+            GenerationStats global;
+            global.generation = ga.generation();
+            global.seconds = elapsed();
+            double sum = 0, squares = 0, count = 0, evaluations = 0, waitSum = 0, waitMax = 0, oldest = 0, iou = -1;
+            int heard = 0, anySignal = 0;
+            bool allFinished = true;
+            global.best = -std::numeric_limits<double>::infinity();
+            for (int r = 0; r < islands; ++r) {
+                const double age = control.ageSeconds(r);
+                if (age < 0) {
+                    allFinished = false;
+                    continue;
+                }
+                const IslandStatus& k = control.newest(r);
+                ++heard;
+                oldest = std::max(oldest, age);
+                sum += k.fitnessSum, squares += k.fitnessSquares, count += k.individuals, evaluations += k.evaluations;
+                waitSum += k.waitShare, waitMax = std::max(waitMax, k.waitShare);
+                anySignal = std::max(anySignal, int(k.signal));
+                allFinished = allFinished && k.finished > 0;
+                if (k.best > global.best) global.best = k.best, iou = k.iou;
+                else if (k.best == global.best) iou = std::max(iou, k.iou);
+            }
+            global.mean = sum / count;
+            global.std = std::sqrt(std::max(0.0, squares / count - global.mean * global.mean));
+            global.evaluations = std::uint64_t(evaluations);
+            global.iou = iou >= 0 ? iou : std::numeric_limits<double>::quiet_NaN();
+            if (!idle) meta.curve.push_back(global);  // one row per rank-0 generation
+            meta.generation = ga.generation();
+            meta.wallSeconds = global.seconds;
+            if (anySignal > 0) stopReason = signalName(anySignal), bySignal = true;
+            else if (s.wallTime > 0 && global.seconds >= s.wallTime) stopReason = "the wall-time budget";
+            else if (s.targetFitness && global.best >= *s.targetFitness) stopReason = "reaching the target fitness";
+            else if (allFinished) stopReason = "done";
+            if (!stopReason.empty()) order = AsyncOrder{AsyncOrder::Stop, anySignal, meta.generation};
+            else if ((!idle && intervalCheckpoint()) || timeForCheckpoint())
+                order = AsyncOrder{AsyncOrder::Checkpoint, 0, meta.generation};
+            if (order) control.order(*order);
+            if (showProgress && progress.due(idle ? ~0u : global.generation, !stopReason.empty())) {
+                ProgressFigures f;
+                f.row = global;
+                f.runSecondsBefore = wallBefore;
+                f.waitShareMean = waitSum / std::max(1, heard), f.waitShareMax = waitMax;
+                f.islands = islands, f.islandsHeard = heard;
+                f.oldestAgeSeconds = oldest;
+                progress.print(f);
+            }
+        }
+        if (!order) return false;
+        if (order->kind == AsyncOrder::Stop && !root) {
+            bySignal = order->signal > 0;
+            stopReason = bySignal ? signalName(order->signal) : "the order of rank 0";
+        }
+        meta.generation = order->generation;  // every rank names the checkpoint after rank 0's generation
+        checkpointNow();
+        return order->kind == AsyncOrder::Stop;
+    };
+    const bool async = s.migration.async && islands > 1;
+    auto afterGeneration = [&]() -> bool {
+        ownGeneration();
+        return async ? asyncTurn(false) : syncTurn();
     };
 
     bool stop = false;
     if (restored) {
         ga.restore(restored->population, restored->rng, restored->generation, restored->evaluations);
-        if (ga.generation() >= s.ga.generations) {
+        // in async mode the islands may stand at different generations: complete only when all are
+        if (mpi.allTrue(ga.generation() >= s.ga.generations)) {
             if (root) log << "shapevo: " << folder << " is complete at generation " << ga.generation()
                           << "; pass --generations N to continue it\n";
             result.evaluations = ga.evaluations();
             return result;
         }
+        // its figures until its next generation (async mode's statuses to rank 0)
+        lastRow = islandRow(localCurve.empty() ? ga.stats() : localCurve.back(), ga.population().fitness);
     } else {
         ga.initialize(evaluator);
         stop = afterGeneration();
     }
     while (!stop) {
-        ga.step(evaluator);
-        stop = afterGeneration();
+        if (ga.generation() < s.ga.generations) {
+            ga.step(evaluator);
+            stop = afterGeneration();
+        } else {  // async only: done with its generations, waiting for the others (the run's end)
+            {
+                WaitTimer wait(mpi);
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            stop = asyncTurn(true);
+        }
     }
+    control.finish();
     migration.finish();
 
     // The best individual of all islands goes to rank 0, which writes the outputs.
@@ -266,8 +371,11 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
                                double(anomalies.nonFinite - anomaliesBefore.nonFinite - ofIoU.nonFinite),
                                double(anomalies.truncated - anomaliesBefore.truncated - ofIoU.truncated)};
     mpi.sum(totals);
-    std::vector<double> overhead{migrationSeconds, checkpointSeconds, bestIoU.seconds()};
+    const double ownWait = waitShare();
+    std::vector<double> overhead{migrationSeconds, checkpointSeconds, bestIoU.seconds(), ownWait};
     mpi.max(overhead);  // the slowest rank's share is what the run waited for
+    std::vector<double> waitSum{ownWait};
+    mpi.sum(waitSum);
     result.bestFitness = bestFitness;
     result.evaluations = std::uint64_t(totals[0]);
     result.wallSeconds = elapsed();
@@ -322,6 +430,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.migrationSeconds = overhead[0];
         sum.checkpointSeconds = overhead[1];
         sum.iouSeconds = overhead[2];
+        sum.waitShareMax = overhead[3];
+        sum.waitShareMean = waitSum[0] / islands;
         writeSummaryJson(sum, folder + "/summary.json");
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];

@@ -4,8 +4,13 @@
 
 #include <mpi.h>
 
+#include <chrono>
+#include <thread>
+
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
+#include "island/async_control.hpp"
+#include "island/island_meeting.hpp"
 #include "island/ring_migration.hpp"
 
 namespace shapevo {
@@ -86,6 +91,67 @@ TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
     EXPECT_EQ(migration.rejected(), 0u);
     // everything that arrived was a valid chromosome of the sender (checked on arrival)
     SUCCEED() << "received " << migration.received();
+}
+
+TEST_F(TwoRanks, AMeetingGivesEveryRankTheSameRowsAndCountsItsWaiting) {
+    MeetingInput in;
+    for (std::uint32_t g = 1; g <= 3; ++g) {
+        GenerationStats s;
+        s.generation = g;
+        s.best = 0.1 * g + 0.01 * mpi.rank();  // rank 1 holds every best
+        s.iou = 0.5 + 0.1 * mpi.rank();
+        s.evaluations = 10 * g;
+        in.rows.push_back(islandRow(s, {s.best, 0.0}));
+    }
+    in.signal = mpi.rank() == 1 ? 10 : 0;
+    in.checkpointDue = mpi.rank() == 0;
+    const double waitedBefore = mpi.waitedSeconds();
+    if (mpi.rank() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));  // rank 1 waits
+    const MeetingResult m = meet(mpi, in);
+    ASSERT_EQ(m.rows.size(), 3u);
+    for (std::uint32_t g = 1; g <= 3; ++g) {
+        EXPECT_EQ(m.rows[g - 1].generation, g);
+        EXPECT_DOUBLE_EQ(m.rows[g - 1].best, 0.1 * g + 0.01 * (mpi.size() - 1));
+        EXPECT_EQ(m.rows[g - 1].evaluations, 10u * g * std::uint32_t(mpi.size()));
+    }
+    EXPECT_DOUBLE_EQ(m.rows[0].iou, 0.5 + 0.1 * (mpi.size() - 1));
+    EXPECT_EQ(m.signal, 10);
+    EXPECT_TRUE(m.checkpointDue);
+    if (mpi.rank() == 1) {
+        EXPECT_GT(mpi.waitedSeconds() - waitedBefore, 0.1);
+    }
+}
+
+TEST_F(TwoRanks, AsyncStatusesReachRankZeroAndOrdersReachEveryRankWithoutWaiting) {
+    AsyncControl control(mpi, 0.0);
+    IslandStatus own;
+    own.generation = 5 + mpi.rank();
+    own.best = 0.25 * (mpi.rank() + 1);
+    own.finished = 1;
+    if (mpi.rank() != 0) {
+        const auto start = std::chrono::steady_clock::now();
+        control.report(own, true);
+        std::optional<AsyncOrder> order;
+        for (int k = 0; k < 20000 && !order; ++k) {
+            order = control.poll();  // never blocks
+            if (!order) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        ASSERT_TRUE(order.has_value());
+        EXPECT_EQ(order->kind, AsyncOrder::Stop);
+        EXPECT_EQ(order->signal, 15);
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 4.0);
+    } else {
+        for (int k = 0; k < 20000 && !control.heardFromAll(); ++k) {
+            control.collect(own);
+            if (!control.heardFromAll()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        ASSERT_TRUE(control.heardFromAll());
+        EXPECT_EQ(control.newest(1).generation, 6.0);
+        EXPECT_EQ(control.newest(1).best, 0.5);
+        EXPECT_GE(control.ageSeconds(1), 0.0);
+        control.order(AsyncOrder{AsyncOrder::Stop, 15});
+    }
+    control.finish();
 }
 
 TEST(Migration, CorruptMessagesAreRefused) {
