@@ -4,6 +4,9 @@
 
 #include <mpi.h>
 
+#include <chrono>
+#include <thread>
+
 namespace shapevo {
 
 namespace {
@@ -145,6 +148,7 @@ void AsyncControl::finish() {
             MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
             if (done) break;
         }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));  // leave the core to the others
     }
     for (Pending* p : pending_) delete p;
     pending_.clear();

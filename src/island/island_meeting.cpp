@@ -8,6 +8,8 @@
 
 #include <mpi.h>
 
+#include "island/polite_wait.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -103,13 +105,14 @@ MeetingResult decodeMeeting(const std::vector<double>& record, const MeetingInpu
 MeetingResult meet(const MpiSession& mpi, const MeetingInput& in) {
     std::vector<double> record = encodeMeeting(in);
     if (mpi.active() && mpi.size() > 1) {
-        WaitTimer wait(mpi);
         MPI_Datatype type;
         MPI_Type_contiguous(int(record.size()), MPI_DOUBLE, &type);
         MPI_Type_commit(&type);
         MPI_Op op;
         MPI_Op_create(&combineRecords, 1, &op);
-        MPI_Allreduce(MPI_IN_PLACE, record.data(), 1, type, op, MPI_COMM_WORLD);
+        MPI_Request request;
+        MPI_Iallreduce(MPI_IN_PLACE, record.data(), 1, type, op, MPI_COMM_WORLD, &request);
+        politeWait(mpi, request);
         MPI_Op_free(&op);
         MPI_Type_free(&type);
     }

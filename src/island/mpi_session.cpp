@@ -1,10 +1,15 @@
-// MpiSession: MPI_Init_thread(FUNNELED) when launched by a launcher; thin collective wrappers.
+// MpiSession: MPI_Init_thread(FUNNELED) when launched by a launcher; thin collective wrappers,
+// non-blocking calls completed by politeWait (no busy core while waiting).
 #include "island/mpi_session.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #include <mpi.h>
+
+#include "island/polite_wait.hpp"
 
 namespace shapevo {
 
@@ -36,52 +41,64 @@ MpiSession::~MpiSession() {
 
 bool MpiSession::allTrue(bool ok) const {
     if (!active_) return ok;
-    WaitTimer wait(*this);
     int in = ok ? 1 : 0, out = 0;
-    MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Iallreduce(&in, &out, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     return out == 1;
 }
 
 bool MpiSession::anyTrue(bool flag) const {
     if (!active_) return flag;
-    WaitTimer wait(*this);
     int in = flag ? 1 : 0, out = 0;
-    MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Iallreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     return out == 1;
 }
 
 void MpiSession::sum(std::vector<double>& values) const {
     if (!active_) return;
-    WaitTimer wait(*this);
-    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Iallreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
 }
 
 void MpiSession::max(std::vector<double>& values) const {
     if (!active_) return;
-    WaitTimer wait(*this);
-    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Iallreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
 }
 
 std::pair<double, int> MpiSession::maxLoc(double value) const {
     if (!active_) return {value, 0};
-    WaitTimer wait(*this);
     struct {
         double value;
         int rank;
     } in{value, rank_}, out{};
-    MPI_Allreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MAXLOC, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Iallreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MAXLOC, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     return {out.value, out.rank};
 }
 
 std::vector<std::uint32_t> MpiSession::transfer(const std::vector<std::uint32_t>& words, int from, int to) const {
     if (!active_ || from == to) return words;
-    WaitTimer wait(*this);
     constexpr int kTag = 71;
     if (rank_ == from) {
-        MPI_Send(words.data(), int(words.size()), MPI_UINT32_T, to, kTag, MPI_COMM_WORLD);
+        MPI_Request r;
+        MPI_Isend(words.data(), int(words.size()), MPI_UINT32_T, to, kTag, MPI_COMM_WORLD, &r);
+        politeWait(*this, r);
     } else if (rank_ == to) {
+        WaitTimer wait(*this);
         MPI_Status status;
-        MPI_Probe(from, kTag, MPI_COMM_WORLD, &status);
+        int arrived = 0;
+        for (auto pause = std::chrono::microseconds(20);; pause = std::min(pause * 2, std::chrono::microseconds(1000))) {
+            MPI_Iprobe(from, kTag, MPI_COMM_WORLD, &arrived, &status);
+            if (arrived) break;
+            std::this_thread::sleep_for(pause);
+        }
         int count = 0;
         MPI_Get_count(&status, MPI_UINT32_T, &count);
         std::vector<std::uint32_t> out(static_cast<std::size_t>(count));
@@ -93,19 +110,22 @@ std::vector<std::uint32_t> MpiSession::transfer(const std::vector<std::uint32_t>
 
 bool MpiSession::fromRoot(bool flag) const {
     if (!active_) return flag;
-    WaitTimer wait(*this);
     int v = flag ? 1 : 0;
-    MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Ibcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     return v == 1;
 }
 
 std::string MpiSession::broadcast(const std::string& s) const {
     if (!active_) return s;
-    WaitTimer wait(*this);
     unsigned long long n = s.size();
-    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    MPI_Request r;
+    MPI_Ibcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     std::string out = rank_ == 0 ? s : std::string(n, '\0');
-    MPI_Bcast(out.data(), int(n), MPI_CHAR, 0, MPI_COMM_WORLD);
+    MPI_Ibcast(out.data(), int(n), MPI_CHAR, 0, MPI_COMM_WORLD, &r);
+    politeWait(*this, r);
     return out;
 }
 

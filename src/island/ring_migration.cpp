@@ -1,4 +1,5 @@
-// Ring migration: packing, validation, sync exchange with MPI_Sendrecv, async with Isend/Iprobe.
+// Ring migration: packing, validation, sync exchange with Isend/Irecv completed by politeWait,
+// async with Isend/Iprobe.
 #include "island/ring_migration.hpp"
 
 #include <algorithm>
@@ -9,7 +10,11 @@
 
 #include <mpi.h>
 
+#include <chrono>
+#include <thread>
+
 #include "genome/validate.hpp"
+#include "island/polite_wait.hpp"
 
 namespace shapevo {
 
@@ -105,13 +110,16 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
     const int right = (mpi_.rank() + 1) % mpi_.size(), left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
     packIndividuals(pop, bestIndices(pop, settings_.count), outgoing_);
     if (!settings_.async) {
-        WaitTimer wait(mpi_);  // the exchange waits for the slower neighbour
+        // the exchange waits for the slower neighbour (politely: no busy core)
         int sendCount = int(outgoing_.size()), recvCount = 0;
-        MPI_Sendrecv(&sendCount, 1, MPI_INT, right, kMigrationTag, &recvCount, 1, MPI_INT, left, kMigrationTag,
-                     MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Request send, receive;
+        MPI_Irecv(&recvCount, 1, MPI_INT, left, kMigrationTag, MPI_COMM_WORLD, &receive);
+        MPI_Isend(&sendCount, 1, MPI_INT, right, kMigrationTag, MPI_COMM_WORLD, &send);
+        politeWaitBoth(mpi_, send, receive);
         incoming_.resize(std::size_t(recvCount));
-        MPI_Sendrecv(outgoing_.data(), sendCount, MPI_UINT32_T, right, kMigrationTag, incoming_.data(), recvCount,
-                     MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Irecv(incoming_.data(), recvCount, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, &receive);
+        MPI_Isend(outgoing_.data(), sendCount, MPI_UINT32_T, right, kMigrationTag, MPI_COMM_WORLD, &send);
+        politeWaitBoth(mpi_, send, receive);
         integrate(pop, incoming_);
         return;
     }
@@ -176,6 +184,7 @@ void RingMigration::finish() {
             MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
             if (done) break;
         }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));  // leave the core to the others
     }
     for (PendingSend* p : pending_) delete p;
     pending_.clear();

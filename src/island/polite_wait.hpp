@@ -1,0 +1,18 @@
+// politeWait: complete a non-blocking MPI request without keeping a core busy. OpenMPI's blocking
+// calls poll in a loop; with more ranks than cores (4 islands on a 2-core laptop, an
+// oversubscribed node) a waiting rank then takes the core from the very rank it waits for, and
+// lock-step runs collapse. Here the wait tests the request, then sleeps between tests, from
+// 20 microseconds doubling up to 1 millisecond, so the cost is at most ~1 ms of latency.
+// Promise: returns only when the request is complete; adds its time to the session's waiting.
+#pragma once
+#include <mpi.h>
+
+#include "island/mpi_session.hpp"
+
+namespace shapevo {
+
+void politeWait(const MpiSession& mpi, MPI_Request& request);
+/// Both requests (a send and a receive of one exchange).
+void politeWaitBoth(const MpiSession& mpi, MPI_Request& a, MPI_Request& b);
+
+}  // namespace shapevo
