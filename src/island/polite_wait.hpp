@@ -1,8 +1,10 @@
 // politeWait: complete a non-blocking MPI request without keeping a core busy. OpenMPI's blocking
 // calls poll in a loop; with more ranks than cores (4 islands on a 2-core laptop, an
 // oversubscribed node) a waiting rank then takes the core from the very rank it waits for, and
-// lock-step runs collapse. Here the wait tests the request, then sleeps between tests, from
-// 20 microseconds doubling up to 1 millisecond, so the cost is at most ~1 ms of latency.
+// lock-step runs collapse. Here the wait tests the request in a loop for up to 100
+// microseconds (yielding the core between tests; a non-blocking collective progresses only inside
+// MPI calls), then sleeps between tests, from 20 microseconds doubling up to 250: a short wait
+// costs what MPI's own does, a long one leaves the core to the others.
 // Promise: returns only when the request is complete; adds its time to the session's waiting.
 #pragma once
 #include <mpi.h>

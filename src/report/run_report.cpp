@@ -69,6 +69,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"iou_seconds\": " + formatDouble(s.iouSeconds) + ",\n";
     t += "  \"wait_share_max\": " + formatDouble(s.waitShareMax) + ",\n";
     t += "  \"wait_share_mean\": " + formatDouble(s.waitShareMean) + ",\n";
+    t += "  \"wait_share_outside_checkpoints_max\": " + formatDouble(s.waitShareOutsideCheckpointsMax) + ",\n";
+    t += "  \"wait_share_outside_checkpoints_mean\": " + formatDouble(s.waitShareOutsideCheckpointsMean) + ",\n";
     t += "  \"non_finite_models\": " + std::to_string(s.nonFiniteModels) + ",\n";
     t += "  \"truncated_models\": " + std::to_string(s.truncatedModels) + ",\n";
     if (!s.changedInputs.empty()) {

@@ -27,6 +27,7 @@ struct RunSummary {
     /// Each rank's time in blocking calls with other ranks over its wall time: the slowest
     /// rank's share and the mean over ranks (0 with one island).
     double waitShareMax = 0, waitShareMean = 0;
+    double waitShareOutsideCheckpointsMax = 0, waitShareOutsideCheckpointsMean = 0;  ///< the same without checkpoints
     double iouSeconds = 0;  ///< slowest rank's time scoring its best model again for the curve's IoU
     std::vector<std::string> changedInputs;  ///< inputs accepted with --allow-changed-inputs on resume
     std::uint64_t nonFiniteModels = 0;  ///< evaluations with a non-finite or absurd coordinate (worst fitness)

@@ -150,6 +150,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     std::string stopReason;  ///< empty while running
     bool bySignal = false;
     double migrationSeconds = 0, checkpointSeconds = 0;  // this rank's time in each, for the summary
+    double checkpointWaited = 0;                         // the part of its waiting spent in checkpoints
     auto lastCheckpoint = Clock::now();
     auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     const double waitedBefore = mpi.waitedSeconds();
@@ -172,6 +173,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     };
     auto checkpointNow = [&] {  // collective
         const auto checkpointStart = Clock::now();
+        const double waitedBefore = mpi.waitedSeconds();
         IslandState island;
         island.runId = meta.runId;
         island.seed = meta.seed;
@@ -189,6 +191,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
                                         newestCompleteCheckpoint(folder, meta.runId)
                                   : std::string()};
         checkpointSeconds += since(checkpointStart);
+        checkpointWaited += mpi.waitedSeconds() - waitedBefore;
         lastCheckpoint = Clock::now();
     };
     auto timeForCheckpoint = [&] { return root && s.checkpoint.seconds > 0 && since(lastCheckpoint) >= s.checkpoint.seconds; };
@@ -432,6 +435,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.iouSeconds = overhead[2];
         sum.waitShareMax = overhead[3];
         sum.waitShareMean = waitSum[0] / islands;
+        sum.waitShareOutsideCheckpointsMax = overhead[4];
+        sum.waitShareOutsideCheckpointsMean = waitSum[1] / islands;
         writeSummaryJson(sum, folder + "/summary.json");
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];
