@@ -1,5 +1,7 @@
 // islandLoop: the generations of one island (this rank) with migration, global statistics,
-// agreed stopping, checkpoints and the final outputs; shared by `run` and `resume`.
+// agreed stopping, checkpoints and the final outputs; shared by `run` and `resume`. Promises: a
+// seeded sync run repeats byte for byte and resumes exactly, however often the islands meet;
+// in async mode no rank waits for another except in a checkpoint and at the end.
 #pragma once
 #include <exception>
 #include <iosfwd>

@@ -3,7 +3,9 @@
 // a different rank count on resume is refused, and SIGUSR1 checkpoints and exits 0.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <csignal>
 #include <filesystem>
 #include <sstream>
@@ -69,6 +71,52 @@ TEST(Islands, AsyncMigrationCompletesUnderOversubscription) {
                                      " --set migration.interval=1 --set run.threads=1 --out " + dir.file("r") + kSmall);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file("r/summary.json")));
+}
+
+TEST(Islands, SyncRunsDoNotDependOnThreadsOrOnHowOftenTheIslandsMeet) {
+    TempDir dir;
+    const std::string base = "run " + config() + " --seed 3 --set ga.generations=25" + kSmall;
+    ASSERT_EQ(runShapevoMpi(2, base + " --set run.threads=1 --out " + dir.file("a")).exitCode, 0);
+    ASSERT_EQ(runShapevoMpi(2, base + " --set run.threads=2 --set migration.meeting_interval=1 --out " + dir.file("b")).exitCode, 0);
+    ASSERT_EQ(runShapevoMpi(2, base + " --set migration.meeting_interval=7 --out " + dir.file("c")).exitCode, 0);
+    const std::string curve = curveWithoutTime(readFile(dir.file("a/curve.csv")));
+    EXPECT_EQ(std::count(curve.begin(), curve.end(), '\n'), 26);  // header + a row per generation
+    for (const char* other : {"b", "c"}) {
+        EXPECT_EQ(curve, curveWithoutTime(readFile(dir.file(std::string(other) + "/curve.csv")))) << other;
+        EXPECT_EQ(readFile(dir.file("a/best.genome")), readFile(dir.file(std::string(other) + "/best.genome"))) << other;
+    }
+}
+
+TEST(Islands, SummaryAndProgressLineGiveTheWaiting) {
+    TempDir dir;
+    const auto r = runShapevoMpi(2, "run " + config() + " --set ga.generations=30 --set run.threads=1 --out " + dir.file("r") +
+                                        " --set ga.population=30 --set ga.elitism=4");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("% (max "), std::string::npos) << r.output;
+    const std::string summary = readFile(dir.file("r/summary.json"));
+    for (const char* key : {"\"wait_share_max\": ", "\"wait_share_mean\": ", "\"wait_share_outside_checkpoints_max\": "}) {
+        const auto at = summary.find(key);
+        ASSERT_NE(at, std::string::npos) << key << summary;
+        const double share = std::stod(summary.substr(at + std::strlen(key)));
+        EXPECT_GE(share, 0.0) << key;
+        EXPECT_LT(share, 1.0) << key;
+    }
+}
+
+TEST(Islands, AsyncRunShowsTheAgeOfItsFiguresCheckpointsAndResumes) {
+    TempDir dir;
+    const auto r = runShapevoMpi(2, "run " + config() + " --set ga.generations=40 --set migration.mode=async"
+                                     " --set run.threads=1 --set checkpoint.interval=10 --out " + dir.file("r") +
+                                     " --set ga.population=30 --set ga.elitism=4");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("islands, oldest figures "), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("r/checkpoint-000040/island-0001.h5")));
+    const auto more = runShapevoMpi(2, "resume " + dir.file("r") + " --generations 60 -q");
+    ASSERT_EQ(more.exitCode, 0) << more.output;
+    EXPECT_NE(readFile(dir.file("r/summary.json")).find("\"generations\": 60"), std::string::npos);
+    const auto inspect = runShapevo("inspect " + dir.file("r"));
+    ASSERT_EQ(inspect.exitCode, 0) << inspect.output;
+    EXPECT_NE(inspect.output.find("generation   60"), std::string::npos) << inspect.output;
 }
 
 TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {

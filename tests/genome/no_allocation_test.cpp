@@ -16,7 +16,15 @@
 #include "score/image_scorer.hpp"
 #include "score/volume_scorer.hpp"
 
-#if !defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer (gcc says __SANITIZE_ADDRESS__, clang __has_feature) owns operator new.
+#if defined(__SANITIZE_ADDRESS__)
+#define SHAPEVO_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SHAPEVO_TEST_ASAN 1
+#endif
+#endif
+#if !defined(SHAPEVO_TEST_ASAN)
 namespace {
 std::atomic<long> gAllocations{0};
 }
