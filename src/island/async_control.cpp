@@ -4,8 +4,7 @@
 
 #include <mpi.h>
 
-#include <chrono>
-#include <thread>
+#include "island/drain.hpp"
 
 namespace shapevo {
 
@@ -15,39 +14,15 @@ constexpr int kStatusLength = int(sizeof(IslandStatus) / sizeof(double));
 static_assert(sizeof(IslandStatus) == kStatusLength * sizeof(double), "IslandStatus is a row of doubles");
 }  // namespace
 
-struct AsyncControl::Pending {
-    MPI_Request request = MPI_REQUEST_NULL;
-    std::vector<double> values;
-};
-
 AsyncControl::AsyncControl(const MpiSession& mpi, double cadenceSeconds)
     : mpi_(mpi), cadence_(cadenceSeconds), known_(std::size_t(mpi.size())), heard_(std::size_t(mpi.size())),
       heardAny_(std::size_t(mpi.size()), false) {}
-
-AsyncControl::~AsyncControl() {
-    for (Pending* p : pending_) delete p;
-}
-
-void AsyncControl::retireSent() {
-    while (!pending_.empty()) {
-        int done = 0;
-        MPI_Test(&pending_.front()->request, &done, MPI_STATUS_IGNORE);
-        if (!done) break;
-        delete pending_.front();
-        pending_.pop_front();
-    }
-}
 
 void AsyncControl::report(const IslandStatus& s, bool urgent) {
     if (!mpi_.active() || mpi_.rank() == 0) return;
     const auto now = Clock::now();
     if (!urgent && reportedOnce_ && std::chrono::duration<double>(now - lastReport_).count() < cadence_) return;
-    retireSent();
-    auto* p = new Pending;
-    const auto* v = reinterpret_cast<const double*>(&s);
-    p->values.assign(v, v + kStatusLength);
-    MPI_Isend(p->values.data(), kStatusLength, MPI_DOUBLE, 0, kStatusTag, MPI_COMM_WORLD, &p->request);
-    pending_.push_back(p);
+    sends_.post(&s, kStatusLength, PostedSends::Type::Double, 0, kStatusTag);
     lastReport_ = now;
     reportedOnce_ = true;
 }
@@ -91,13 +66,8 @@ bool AsyncControl::heardFromAll() const {
 
 void AsyncControl::order(const AsyncOrder& o) {
     if (!mpi_.active() || mpi_.rank() != 0) return;
-    retireSent();
-    for (int r = 1; r < mpi_.size(); ++r) {
-        auto* p = new Pending;
-        p->values = {double(o.kind), double(o.signal), double(o.generation)};
-        MPI_Isend(p->values.data(), 3, MPI_DOUBLE, r, kOrderTag, MPI_COMM_WORLD, &p->request);
-        pending_.push_back(p);
-    }
+    const double values[3] = {double(o.kind), double(o.signal), double(o.generation)};
+    for (int r = 1; r < mpi_.size(); ++r) sends_.post(values, 3, PostedSends::Type::Double, r, kOrderTag);
 }
 
 std::optional<AsyncOrder> AsyncControl::poll() {
@@ -116,42 +86,19 @@ std::optional<AsyncOrder> AsyncControl::poll() {
 
 void AsyncControl::finish() {
     if (!mpi_.active() || mpi_.size() < 2) return;
-    WaitTimer wait(mpi_);
-    // As in RingMigration::finish: a rank joins the non-blocking barrier once its own sends are
-    // done; rank 0 keeps taking (and discarding) statuses until everyone has joined.
-    MPI_Request barrier = MPI_REQUEST_NULL;
-    bool inBarrier = false;
-    for (;;) {
-        if (mpi_.rank() == 0) {
+    drainUntilEveryoneIsDone(
+        mpi_,
+        [&] {  // rank 0 discards statuses that come too late; orders were all taken before
+            if (mpi_.rank() != 0) return false;
             int arrived = 0;
             MPI_Status status;
             MPI_Iprobe(MPI_ANY_SOURCE, kStatusTag, MPI_COMM_WORLD, &arrived, &status);
-            if (arrived) {
-                double sink[kStatusLength];
-                MPI_Recv(sink, kStatusLength, MPI_DOUBLE, status.MPI_SOURCE, kStatusTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                continue;
-            }
-        }
-        if (!inBarrier) {
-            bool allDone = true;
-            for (Pending* p : pending_) {
-                int done = 0;
-                MPI_Test(&p->request, &done, MPI_STATUS_IGNORE);
-                allDone = allDone && done;
-            }
-            if (allDone) {
-                MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
-                inBarrier = true;
-            }
-        } else {
-            int done = 0;
-            MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
-            if (done) break;
-        }
-        std::this_thread::sleep_for(std::chrono::microseconds(100));  // leave the core to the others
-    }
-    for (Pending* p : pending_) delete p;
-    pending_.clear();
+            if (!arrived) return false;
+            double sink[kStatusLength];
+            MPI_Recv(sink, kStatusLength, MPI_DOUBLE, status.MPI_SOURCE, kStatusTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            return true;
+        },
+        [&] { return sends_.allComplete(); });
 }
 
 }  // namespace shapevo

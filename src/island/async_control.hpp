@@ -10,11 +10,11 @@
 #pragma once
 #include <chrono>
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <vector>
 
 #include "island/mpi_session.hpp"
+#include "island/posted_sends.hpp"
 
 namespace shapevo {
 
@@ -37,7 +37,6 @@ class AsyncControl {
 public:
     using Clock = std::chrono::steady_clock;
     AsyncControl(const MpiSession& mpi, double cadenceSeconds);
-    ~AsyncControl();
     AsyncControl(const AsyncControl&) = delete;
     AsyncControl& operator=(const AsyncControl&) = delete;
 
@@ -57,8 +56,6 @@ public:
     void finish();
 
 private:
-    struct Pending;
-    void retireSent();
     void receiveStatuses();
 
     const MpiSession& mpi_;
@@ -68,7 +65,7 @@ private:
     std::vector<IslandStatus> known_;
     std::vector<Clock::time_point> heard_;
     std::vector<bool> heardAny_;
-    std::deque<Pending*> pending_;
+    PostedSends sends_;
 };
 
 }  // namespace shapevo

@@ -10,10 +10,8 @@
 
 #include <mpi.h>
 
-#include <chrono>
-#include <thread>
-
 #include "genome/validate.hpp"
+#include "island/drain.hpp"
 #include "island/polite_wait.hpp"
 
 namespace shapevo {
@@ -22,10 +20,6 @@ namespace {
 constexpr int kMigrationTag = 72;
 }
 
-struct RingMigration::PendingSend {
-    MPI_Request request = MPI_REQUEST_NULL;
-    std::vector<std::uint32_t> words;
-};
 
 void packIndividuals(const Population& pop, const std::vector<std::size_t>& which, std::vector<std::uint32_t>& out) {
     out.clear();
@@ -88,9 +82,6 @@ RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& set
                              const GenomeLimits& limits)
     : mpi_(mpi), settings_(settings), grammar_(g), limits_(limits) {}
 
-RingMigration::~RingMigration() {
-    for (PendingSend* p : pending_) delete p;
-}
 
 void RingMigration::integrate(Population& pop, const std::vector<std::uint32_t>& words) {
     arrivals_.clear();
@@ -123,18 +114,8 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
         integrate(pop, incoming_);
         return;
     }
-    // Async: retire completed sends, post this one, take whatever has arrived.
-    while (!pending_.empty()) {
-        int done = 0;
-        MPI_Test(&pending_.front()->request, &done, MPI_STATUS_IGNORE);
-        if (!done) break;
-        delete pending_.front();
-        pending_.pop_front();
-    }
-    auto* send = new PendingSend;
-    send->words = outgoing_;
-    MPI_Isend(send->words.data(), int(send->words.size()), MPI_UINT32_T, right, kMigrationTag, MPI_COMM_WORLD, &send->request);
-    pending_.push_back(send);
+    // Async: post this one, take whatever has arrived.
+    sends_.post(outgoing_.data(), outgoing_.size(), PostedSends::Type::Uint32, right, kMigrationTag);
     for (;;) {
         int arrived = 0;
         MPI_Status status;
@@ -150,44 +131,21 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
 
 void RingMigration::finish() {
     if (!mpi_.active() || mpi_.size() < 2 || !settings_.async) return;
-    // Keep receiving (and discarding) until every rank's sends have completed: a rank joins the
-    // non-blocking barrier only once its own sends are done, so nobody waits on a receiver that
-    // has stopped listening.
     const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
-    WaitTimer wait(mpi_);
-    MPI_Request barrier = MPI_REQUEST_NULL;
-    bool inBarrier = false;
-    for (;;) {
-        int arrived = 0;
-        MPI_Status status;
-        MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
-        if (arrived) {
+    drainUntilEveryoneIsDone(
+        mpi_,
+        [&] {  // late migrants are discarded
+            int arrived = 0;
+            MPI_Status status;
+            MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
+            if (!arrived) return false;
             int count = 0;
             MPI_Get_count(&status, MPI_UINT32_T, &count);
             incoming_.resize(std::size_t(count));
             MPI_Recv(incoming_.data(), count, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            continue;
-        }
-        if (!inBarrier) {
-            bool allDone = true;
-            for (PendingSend* p : pending_) {
-                int done = 0;
-                MPI_Test(&p->request, &done, MPI_STATUS_IGNORE);
-                allDone = allDone && done;
-            }
-            if (allDone) {
-                MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
-                inBarrier = true;
-            }
-        } else {
-            int done = 0;
-            MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
-            if (done) break;
-        }
-        std::this_thread::sleep_for(std::chrono::microseconds(100));  // leave the core to the others
-    }
-    for (PendingSend* p : pending_) delete p;
-    pending_.clear();
+            return true;
+        },
+        [&] { return sends_.allComplete(); });
 }
 
 }  // namespace shapevo

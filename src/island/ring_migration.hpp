@@ -5,13 +5,13 @@
 // Received bytes are untrusted: every chromosome is validated before it joins the population.
 #pragma once
 #include <cstdint>
-#include <deque>
 #include <string>
 #include <vector>
 
 #include "genome/chromosome.hpp"
 #include "island/mpi_session.hpp"
 #include "island/migration_settings.hpp"
+#include "island/posted_sends.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {
@@ -29,7 +29,6 @@ void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, cons
 class RingMigration {
 public:
     RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g, const GenomeLimits& limits);
-    ~RingMigration();
     /// Call after generation `generation` completes; migrates if it is a migration generation.
     void afterGeneration(Population& pop, std::uint32_t generation);
     /// Async mode: complete every send and discard late arrivals; collective, call on all ranks.
@@ -47,8 +46,7 @@ private:
     std::vector<std::uint32_t> outgoing_, incoming_;
     std::vector<Chromosome> arrivals_;
     std::vector<double> arrivalFitness_;
-    struct PendingSend;
-    std::deque<PendingSend*> pending_;
+    PostedSends sends_;
     std::uint64_t received_ = 0, rejected_ = 0;
 };
 
