@@ -128,6 +128,12 @@ public:
         if (!n->is_string()) fail(*n, sec + "." + k + " must be a string");
         out = *n->value<std::string>();
     }
+    void boolean(const toml::table* t, const std::string& sec, const std::string& k, bool& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return;
+        if (!n->is_boolean()) fail(*n, sec + "." + k + " must be true or false" + got(*n));
+        out = *n->value<bool>();
+    }
     std::vector<std::string> strings(const toml::table* t, const std::string& sec, const std::string& k) {
         std::vector<std::string> out;
         const toml::node* n = key(t, sec, k);
@@ -458,6 +464,9 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     rd.number(score, "score", "avoid_weight", f.avoidWeight, -big, big);
     rd.number(score, "score", "overlap_weight", f.overlapWeight, -big, big);
     rd.number(score, "score", "outside_weight", f.outsideWeight, -big, big);
+    rd.boolean(score, "score", "incremental", r.incremental.enabled);
+    rd.number(score, "score", "cache_mb", r.incremental.cacheMb, 1, 1 << 20);
+    rd.boolean(score, "score", "check_incremental", r.incremental.check);
     if (f.lengthMax <= f.lengthOptimal)
         rd.failKeys({"score.length_optimal", "score.length_max"}, "[score]", "length_max must be greater than length_optimal");
 

@@ -93,6 +93,7 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
         const ImageTarget& t = *scene->image_;
         auto scorer = std::make_unique<ImageScorer>(g, *scene->camera_, t, s.fitness);
         scorer->setMaxPrimitives(s.limits.maxPrimitives);
+        scorer->setIncremental(s.incremental.cacheBytes(), s.incremental.check);
         scene->imageScorer_ = scorer.get();
         scene->scorer_ = std::move(scorer);
         scene->hash_ = t.hash;
@@ -109,6 +110,7 @@ std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     const VolumeTarget& t = *scene->volume_;
     auto scorer = std::make_unique<VolumeScorer>(g, t, s.fitness);
     scorer->setMaxPrimitives(s.limits.maxPrimitives);
+    scorer->setIncremental(s.incremental.cacheBytes(), s.incremental.check);
     scene->volumeScorer_ = scorer.get();
     scene->scorer_ = std::move(scorer);
     scene->hash_ = t.hash;

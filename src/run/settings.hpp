@@ -11,6 +11,7 @@
 #include "genome/chromosome.hpp"
 #include "checkpoint/checkpoint_settings.hpp"
 #include "island/migration_settings.hpp"
+#include "score/incremental_settings.hpp"
 #include "score/target_settings.hpp"
 #include "score/volume_fitness.hpp"
 #include "search/search_settings.hpp"
@@ -34,6 +35,7 @@ struct RunSettings {
     std::optional<ImageSceneSettings> image;  ///< image target instead of volumes
 
     VolumeFitnessSettings fitness;
+    IncrementalSettings incremental;  ///< [score] incremental, cache_mb, check_incremental
     GenomeLimits limits;
     SearchSettings search;  ///< which method runs ([search]); [ga] sizes apply to all
     GaSettings ga;

@@ -1,7 +1,36 @@
-// ImageScorer: the model masks for overlays (the hot path lives in the header).
+// ImageScorer: incremental drawing and its check, and the model masks for overlays (the rest of
+// the hot path lives in the header).
 #include "score/image_scorer.hpp"
 
+#include <string>
+
 namespace shapevo {
+
+void ImageScorer::drawCached(Workspace& w) const {
+    PrimitiveCache<RowSpan>::Found found;
+    for (const Primitive& p : w.geometry.primitives) {
+        const PrimitiveKey key(p);
+        const std::uint64_t h = key.hash();
+        if (w.cache->find(key, h, found)) {
+            w.raster.replay(found.records);
+            continue;
+        }
+        w.spans.clear();
+        w.raster.addRecorded(p, w.geometry.meshes, w.spans);
+        w.cache->store(key, h, w.spans, 0);
+    }
+}
+
+void ImageScorer::checkAgainstFull(Workspace& w, const SilhouetteCounts& counts) const {
+    w.raster.add(w.geometry);
+    const SilhouetteCounts full = w.raster.score(target_);
+    if (full.covered != counts.covered || full.hit != counts.hit || full.avoided != counts.avoided)
+        throw IncrementalMismatch("incremental image scoring differs from the full one: covered/hit/avoided " +
+                                  std::to_string(counts.covered) + "/" + std::to_string(counts.hit) + "/" +
+                                  std::to_string(counts.avoided) + " against " + std::to_string(full.covered) + "/" +
+                                  std::to_string(full.hit) + "/" + std::to_string(full.avoided) + " (" +
+                                  std::to_string(w.geometry.primitives.size()) + " primitives)");
+}
 
 void ImageScorer::modelMask(const Chromosome& c, Workspace& w, std::vector<std::uint8_t>& mask) const {
     derive(grammar_, c, w.geometry, w.derive, maxPrimitives());  // a non-finite primitive is left out

@@ -4,12 +4,14 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "score/camera.hpp"
 #include "score/image_fitness.hpp"
 #include "score/image_target.hpp"
+#include "score/primitive_cache.hpp"
 #include "score/scorer.hpp"
 #include "score/silhouette_raster.hpp"
 
@@ -18,8 +20,13 @@ namespace shapevo {
 class ImageScorer final : public Scorer {
 public:
     struct Workspace : ScoreWorkspace {
-        explicit Workspace(const Camera& camera) : raster(camera) {}
+        /// cacheBytes > 0: keep the primitives' rows (incremental scoring, Scorer::setIncremental).
+        explicit Workspace(const Camera& camera, std::size_t cacheBytes = 0) : raster(camera) {
+            if (cacheBytes > 0) cache.emplace(cacheBytes);
+        }
         SilhouetteRaster raster;
+        std::optional<PrimitiveCache<RowSpan>> cache;
+        std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
@@ -30,7 +37,9 @@ public:
             throw std::invalid_argument("ImageScorer: the target's size differs from the camera's");
     }
 
-    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<Workspace>(camera_); }
+    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
+        return std::make_unique<Workspace>(camera_, cacheBytes());
+    }
     double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
@@ -39,8 +48,15 @@ public:
             if (countsOut) *countsOut = SilhouetteCounts{};
             return kWorstFitness;
         }
-        w.raster.add(w.geometry);
-        const SilhouetteCounts counts = w.raster.score(target_);
+        SilhouetteCounts counts;
+        if (w.cache) {
+            drawCached(w);
+            counts = w.raster.score(target_);
+            if (checksIncremental()) checkAgainstFull(w, counts);
+        } else {
+            w.raster.add(w.geometry);
+            counts = w.raster.score(target_);
+        }
         if (countsOut) *countsOut = counts;
         return imageFitness(settings_, counts, target_.hitCount, c.genes);
     }
@@ -52,6 +68,11 @@ public:
     const Grammar& grammar() const override { return grammar_; }
 
 private:
+    /// Draw w.geometry, replaying the rows of primitives found in w.cache and keeping the others'.
+    void drawCached(Workspace& w) const;
+    /// Score w.geometry the full way; throw IncrementalMismatch unless it gives `counts`.
+    void checkAgainstFull(Workspace& w, const SilhouetteCounts& counts) const;
+
     const Grammar& grammar_;
     Camera camera_;
     const ImageTarget& target_;

@@ -5,10 +5,14 @@
 // that reaches the primitive limit is scored as it stands (its first maxPrimitives primitives).
 // Both are counted (anomalies()), so a run can report them; the counts are sums over
 // evaluations, the same whatever the thread count.
+// Incremental scoring (setIncremental): a child is mostly its parent, so most of its primitives
+// are bit-identical to primitives scored before; their rows are replayed from a per-thread cache
+// (score/primitive_cache.hpp) instead of drawn again. Fitness and counts stay bit-identical.
 #pragma once
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 
 #include "genome/chromosome.hpp"
 #include "geometry/derive.hpp"
@@ -21,6 +25,12 @@ struct ScoreWorkspace {
     virtual ~ScoreWorkspace() = default;
     DeriveScratch derive;
     Geometry geometry;
+};
+
+/// The checking mode of incremental scoring found a model whose counts differ between the
+/// incremental and the full evaluation (what() names both).
+struct IncrementalMismatch : std::logic_error {
+    using std::logic_error::logic_error;
 };
 
 class Scorer {
@@ -42,6 +52,17 @@ public:
     virtual double fitness(const Chromosome& c, ScoreWorkspace& w) const = 0;
     virtual const Grammar& grammar() const = 0;
 
+    /// Incremental scoring (score.incremental, score.cache_mb): each workspace made from now on
+    /// keeps the rows its primitives drew in a PrimitiveCache of about `bytes` (0: off, every
+    /// primitive is drawn anew). With `check`, every model is also scored the full way and a
+    /// difference throws IncrementalMismatch. Results never depend on it: only the time does.
+    void setIncremental(std::size_t bytes, bool check = false) {
+        cacheBytes_ = bytes;
+        checkIncremental_ = check && bytes > 0;
+    }
+    std::size_t cacheBytes() const { return cacheBytes_; }
+    bool checksIncremental() const { return checkIncremental_; }
+
     /// genome.max_primitives: derivation stops (Truncated) after this many primitives.
     void setMaxPrimitives(std::size_t n) { maxPrimitives_ = n; }
     std::size_t maxPrimitives() const { return maxPrimitives_; }
@@ -60,6 +81,8 @@ protected:
     }
 
 private:
+    std::size_t cacheBytes_ = 0;
+    bool checkIncremental_ = false;
     std::size_t maxPrimitives_ = kDefaultMaxPrimitives;
     mutable std::atomic<std::uint64_t> nonFinite_{0}, truncated_{0};
 };

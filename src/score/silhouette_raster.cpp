@@ -64,6 +64,26 @@ void SilhouetteRaster::add(const Primitive& p, const std::vector<MeshShape>* mes
     for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));
 }
 
+void SilhouetteRaster::addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, std::vector<RowSpan>& spans) {
+    if (!outline_.prepare(p, meshes)) return;
+    int x0, x1, y0, y1;
+    if (outline_.coverBound(x0, x1, y0, y1) && (x0 > x1 || y0 > y1)) return;  // no pixel centre within reach
+    pieces_.clear();
+    outline_.addPrepared(pieces_);
+    recording_ = &spans;
+    for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));
+    recording_ = nullptr;
+}
+
+void SilhouetteRaster::replay(std::span<const RowSpan> spans) {
+    for (const RowSpan& r : spans) {
+        markRow(r.y, r.lo, r.hi);
+        yMin_ = std::min(yMin_, int(r.y)), yMax_ = std::max(yMax_, int(r.y));
+        wordMin_ = std::min(wordMin_, int(r.lo >> 6)), wordMax_ = std::max(wordMax_, int(r.hi >> 6));
+    }
+    rows_ += spans.size();
+}
+
 inline void SilhouetteRaster::markRow(int y, int lo, int hi) {
     const int w0 = lo >> 6, w1 = hi >> 6;
     std::uint64_t* words = &bits_[std::size_t(y) * std::size_t(words_)];
@@ -135,7 +155,11 @@ void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
     bool drawn = false;
     for (std::int64_t j = top; j <= bottom; ++j) {
         const int lo = std::max(left_[std::size_t(j)], int(leftmost)), hi = std::min(right_[std::size_t(j)], int(rightmost));
-        if (lo <= hi) markRow(int(j), lo, hi), drawn = true;
+        if (lo <= hi) {
+            markRow(int(j), lo, hi), drawn = true;
+            if (recording_) [[unlikely]]
+                recording_->push_back({std::int32_t(j), lo, hi});
+        }
     }
     if (drawn) {  // the rectangle counting and clearing must sweep
         yMin_ = std::min(yMin_, int(top)), yMax_ = std::max(yMax_, int(bottom));

@@ -8,6 +8,8 @@
 //
 // A primitive is skipped before any of that when the projected corners of its box reach no pixel
 // centre, or only pixels already drawn (the union would not change).
+// addRecorded/replay serve incremental scoring (score/primitive_cache.hpp): a primitive's row
+// intervals, kept, draw the same pixels again without its outline.
 // Bookkeeping: the rectangle of rows and words written since the last count, so counting and
 // clearing touch only that rectangle.
 #pragma once
@@ -22,6 +24,11 @@
 #include "score/silhouette_outline.hpp"
 
 namespace shapevo {
+
+/// One row interval a primitive drew: pixels lo..hi of row y (what PrimitiveCache keeps for it).
+struct RowSpan {
+    std::int32_t y, lo, hi;
+};
 
 struct SilhouetteCounts {
     std::uint64_t covered = 0;  ///< pixels the model covers
@@ -42,6 +49,11 @@ public:
     void add(const Geometry& g) {
         for (const Primitive& p : g.primitives) add(p, g.meshes);
     }
+    /// Draw one primitive as add() does, but never skip it for covering only pixels already
+    /// drawn, and append every row interval it draws to `spans` (replay() draws them again).
+    void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, std::vector<RowSpan>& spans);
+    /// Draw row intervals that addRecorded() gave: the same pixels as drawing the primitive.
+    void replay(std::span<const RowSpan> spans);
     /// Draw one convex polygon of positive area given as its hull (counter-clockwise, no repeated
     /// points, every turn left or straight; fixed point).
     void fillConvex(std::span<const FixedPoint> hull);
@@ -73,6 +85,7 @@ private:
     std::vector<std::uint64_t> bits_;
     int yMin_, yMax_, wordMin_, wordMax_;  ///< the rectangle of rows and words written (empty: min > max)
     std::uint64_t rows_ = 0;
+    std::vector<RowSpan>* recording_ = nullptr;  ///< during addRecorded: where fillConvex appends its rows
 };
 
 }  // namespace shapevo

@@ -2,7 +2,10 @@
 // A pure function of the chromosome; each thread brings its own Workspace.
 #pragma once
 #include <memory>
+#include <optional>
+#include <vector>
 
+#include "score/primitive_cache.hpp"
 #include "score/scorer.hpp"
 #include "score/volume_fitness.hpp"
 #include "score/volume_target.hpp"
@@ -13,14 +16,21 @@ namespace shapevo {
 class VolumeScorer final : public Scorer {
 public:
     struct Workspace : ScoreWorkspace {
-        explicit Workspace(const GridSpec& grid) : voxelizer(grid) {}
+        /// cacheBytes > 0: keep the primitives' voxel rows (incremental scoring, Scorer::setIncremental).
+        explicit Workspace(const GridSpec& grid, std::size_t cacheBytes = 0) : voxelizer(grid) {
+            if (cacheBytes > 0) cache.emplace(cacheBytes);
+        }
         Voxelizer voxelizer;
+        std::optional<PrimitiveCache<VoxelRun>> cache;
+        std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
     };
 
     VolumeScorer(const Grammar& g, const VolumeTarget& target, const VolumeFitnessSettings& settings)
         : grammar_(g), target_(target), settings_(settings) {}
 
-    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<Workspace>(target_.grid); }
+    std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
+        return std::make_unique<Workspace>(target_.grid, cacheBytes());
+    }
     double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
@@ -29,7 +39,7 @@ public:
             if (countsOut) *countsOut = VoxelCounts{};
             return kWorstFitness;
         }
-        const VoxelCounts counts = w.voxelizer.score(w.geometry, target_);
+        const VoxelCounts counts = w.cache ? scoreCached(w) : w.voxelizer.score(w.geometry, target_);
         if (countsOut) *countsOut = counts;
         return volumeFitness(settings_, counts, target_.fillCount, c.genes);
     }
@@ -37,6 +47,10 @@ public:
     const Grammar& grammar() const override { return grammar_; }
 
 private:
+    /// Voxelize and count w.geometry, replaying the runs of primitives found in w.cache and
+    /// keeping the others'; with checksIncremental(), also the full way (IncrementalMismatch).
+    VoxelCounts scoreCached(Workspace& w) const;
+
     const Grammar& grammar_;
     const VolumeTarget& target_;
     VolumeFitnessSettings settings_;

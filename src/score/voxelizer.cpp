@@ -15,6 +15,8 @@ Voxelizer::Voxelizer(const GridSpec& grid)
 }
 
 void Voxelizer::markRows(long z, long y0, long y1, long lo, long hi) {
+    if (recording_) [[unlikely]]
+        recording_->push_back({std::int32_t(z), std::int32_t(y0), std::int32_t(y1), std::int32_t(lo), std::int32_t(hi)});
     if (yMin_[z] > yMax_[z]) slices_.push_back(std::uint32_t(z));
     yMin_[z] = std::min<std::int32_t>(yMin_[z], std::int32_t(y0));
     yMax_[z] = std::max<std::int32_t>(yMax_[z], std::int32_t(y1));
@@ -79,6 +81,17 @@ void Voxelizer::add(const Primitive& p, const std::vector<MeshShape>* meshes, Vo
     visitKind(p.kind, [&](auto kind) { decltype(kind)::type::voxelize(p, meshes, *this, counts); });
 }
 
+void Voxelizer::addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts,
+                            std::vector<VoxelRun>& runs) {
+    recording_ = &runs;
+    add(p, meshes, counts);
+    recording_ = nullptr;
+}
+
+void Voxelizer::replay(std::span<const VoxelRun> runs) {
+    for (const VoxelRun& r : runs) markRows(r.z, r.y0, r.y1, r.lo, r.hi);
+}
+
 namespace {
 /// Count one block of words against the target and zero it; the avoid term only if asked.
 template <bool kAvoid>
@@ -104,6 +117,10 @@ void countAndClear(std::uint64_t* occ, std::uint64_t* ovl, const std::uint64_t* 
 VoxelCounts Voxelizer::score(const Geometry& geometry, const VolumeTarget& target) {
     VoxelCounts counts;
     for (const Primitive& p : geometry.primitives) add(p, geometry.meshes, counts);
+    return countAgainst(target, counts);
+}
+
+VoxelCounts Voxelizer::countAgainst(const VolumeTarget& target, VoxelCounts counts) {
     const std::size_t W = std::size_t(words_), ny = std::size_t(grid_.ny);
     // Count and clear in one sweep over each slice's written rows (contiguous words).
     for (std::uint32_t z : slices_) {

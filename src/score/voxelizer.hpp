@@ -7,10 +7,12 @@
 // Voxel centres outside the grid (within a halo of one grid extent on every side) count as
 // "outside", once per primitive that covers them.
 //
+// addRecorded/replay serve incremental scoring (score/primitive_cache.hpp).
 // Bookkeeping is per z slice: the range of rows [yMin, yMax] written since the last count, so
 // counting and clearing sweep contiguous memory and touch nothing else.
 #pragma once
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "score/volume_target.hpp"
@@ -29,6 +31,12 @@ struct VoxelCounts {
     bool operator==(const VoxelCounts&) const = default;
 };
 
+/// One markRows call a primitive made: x-interval [lo, hi] of rows y0..y1 of slice z (what
+/// PrimitiveCache keeps for it).
+struct VoxelRun {
+    std::int32_t z, y0, y1, lo, hi;
+};
+
 class Voxelizer {
 public:
     explicit Voxelizer(const GridSpec& grid);
@@ -38,6 +46,13 @@ public:
     /// Voxelize one primitive without counting; `occupancy()` holds the bit rows until clear().
     /// A Mesh primitive finds its mesh in `meshes` (it covers nothing if that is missing).
     void add(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts);
+    /// add(), appending every run of rows it writes to `runs` (replay() writes them again).
+    void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts, std::vector<VoxelRun>& runs);
+    /// Write runs that addRecorded() gave: the same voxels (and overlaps) as adding the primitive.
+    void replay(std::span<const VoxelRun> runs);
+    /// Count what was added against `target` (same grid) and clear; `counts` brings what add()
+    /// counted (outside, rows).
+    VoxelCounts countAgainst(const VolumeTarget& target, VoxelCounts counts);
     const std::vector<std::uint64_t>& occupancy() const { return occupied_; }
     void clear();
     const GridSpec& grid() const { return grid_; }
@@ -62,6 +77,7 @@ private:
     std::vector<std::int32_t> yMin_, yMax_;  ///< per z slice: written rows, yMin > yMax if none
     std::vector<std::uint32_t> slices_;      ///< z slices with rows written, in first-touch order
     KindVoxelScratch scratch_;               ///< the kinds' work spaces (the mesh kind's buffers)
+    std::vector<VoxelRun>* recording_ = nullptr;  ///< during addRecorded: where markRows appends its runs
 };
 
 }  // namespace shapevo

@@ -36,8 +36,7 @@ std::string config() { return sourcePath("configs/spaceship.toml"); }
 test::CommandResult shapevo(int ranks, const std::string& args) {
     const std::string bin = std::string(SHAPEVO_BIN) + " " + args;
     if (ranks == 0) return runCommand("timeout 120 " + bin);
-    return runCommand("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 " +
-                      std::string(SHAPEVO_MPIRUN) + " --oversubscribe -np " + std::to_string(ranks) + " " + bin);
+    return runCommand("timeout 120 " + test::mpirunWords(ranks) + " " + bin);
 }
 
 /// MANIFEST without the line of `name` (the file stays in the folder).

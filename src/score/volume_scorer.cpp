@@ -1,0 +1,40 @@
+// VolumeScorer: incremental voxelization and its check (the rest of the hot path lives in the header).
+#include "score/volume_scorer.hpp"
+
+#include <string>
+
+namespace shapevo {
+
+VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
+    VoxelCounts counts;
+    PrimitiveCache<VoxelRun>::Found found;
+    for (const Primitive& p : w.geometry.primitives) {
+        const PrimitiveKey key(p);
+        const std::uint64_t h = key.hash();
+        if (w.cache->find(key, h, found)) {
+            w.voxelizer.replay(found.records);
+            counts.outside += found.extra;  // voxel centres outside the grid count once per primitive
+            continue;
+        }
+        w.runs.clear();
+        const std::uint64_t outsideBefore = counts.outside;
+        w.voxelizer.addRecorded(p, w.geometry.meshes, counts, w.runs);
+        w.cache->store(key, h, w.runs, counts.outside - outsideBefore);
+    }
+    counts = w.voxelizer.countAgainst(target_, counts);
+    if (checksIncremental()) {
+        const VoxelCounts full = w.voxelizer.score(w.geometry, target_);
+        if (full.occupied != counts.occupied || full.inside != counts.inside || full.avoided != counts.avoided ||
+            full.overlap != counts.overlap || full.outside != counts.outside)
+            throw IncrementalMismatch(
+                "incremental voxel scoring differs from the full one: occupied/inside/avoided/overlap/outside " +
+                std::to_string(counts.occupied) + "/" + std::to_string(counts.inside) + "/" + std::to_string(counts.avoided) +
+                "/" + std::to_string(counts.overlap) + "/" + std::to_string(counts.outside) + " against " +
+                std::to_string(full.occupied) + "/" + std::to_string(full.inside) + "/" + std::to_string(full.avoided) + "/" +
+                std::to_string(full.overlap) + "/" + std::to_string(full.outside) + " (" +
+                std::to_string(w.geometry.primitives.size()) + " primitives)");
+    }
+    return counts;
+}
+
+}  // namespace shapevo
