@@ -7,18 +7,13 @@
 namespace shapevo {
 
 void ImageScorer::drawCached(Workspace& w) const {
-    PrimitiveCache<RowSpan>::Found found;
-    for (const Primitive& p : w.geometry.primitives) {
-        const PrimitiveKey key(p);
-        const std::uint64_t h = key.hash();
-        if (w.cache->find(key, h, found)) {
-            w.raster.replay(found.records);
-            continue;
-        }
-        w.spans.clear();
-        w.raster.addRecorded(p, w.geometry.meshes, w.spans);
-        w.cache->store(key, h, w.spans, 0);
-    }
+    drawThroughCache(
+        *w.cache, w.geometry.primitives, w.hashes, w.spans,
+        [&](const PrimitiveCache<RowSpan>::Found& found) { w.raster.replay(found.records); },
+        [&](const Primitive& p, std::vector<RowSpan>& spans) -> std::uint64_t {
+            w.raster.addRecorded(p, w.geometry.meshes, spans);
+            return 0;
+        });
 }
 
 void ImageScorer::checkAgainstFull(Workspace& w, const SilhouetteCounts& counts) const {

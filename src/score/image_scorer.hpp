@@ -27,6 +27,7 @@ public:
         SilhouetteRaster raster;
         std::optional<PrimitiveCache<RowSpan>> cache;
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache
+        std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that

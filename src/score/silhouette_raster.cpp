@@ -70,9 +70,21 @@ void SilhouetteRaster::addRecorded(const Primitive& p, const std::vector<MeshSha
     if (outline_.coverBound(x0, x1, y0, y1) && (x0 > x1 || y0 > y1)) return;  // no pixel centre within reach
     pieces_.clear();
     outline_.addPrepared(pieces_);
+    const std::size_t first = spans.size();
     recording_ = &spans;
     for (const OutlinePiece& piece : pieces_.pieces) fillConvex(hull_.of(pieces_.points.data(), piece));
     recording_ = nullptr;
+    // The pieces overlap: keep each row's union as few intervals (a replay then marks each pixel once).
+    const auto begin = spans.begin() + std::ptrdiff_t(first);
+    std::sort(begin, spans.end(), [](const RowSpan& a, const RowSpan& b) { return a.y != b.y ? a.y < b.y : a.lo < b.lo; });
+    auto out = begin;
+    for (auto in = begin; in != spans.end(); ++in) {
+        if (out != begin && (out - 1)->y == in->y && in->lo <= (out - 1)->hi + 1)
+            (out - 1)->hi = std::max((out - 1)->hi, in->hi);
+        else
+            *out++ = *in;
+    }
+    spans.erase(out, spans.end());
 }
 
 void SilhouetteRaster::replay(std::span<const RowSpan> spans) {

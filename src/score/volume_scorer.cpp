@@ -7,20 +7,17 @@ namespace shapevo {
 
 VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
     VoxelCounts counts;
-    PrimitiveCache<VoxelRun>::Found found;
-    for (const Primitive& p : w.geometry.primitives) {
-        const PrimitiveKey key(p);
-        const std::uint64_t h = key.hash();
-        if (w.cache->find(key, h, found)) {
+    drawThroughCache(
+        *w.cache, w.geometry.primitives, w.hashes, w.runs,
+        [&](const PrimitiveCache<VoxelRun>::Found& found) {
             w.voxelizer.replay(found.records);
             counts.outside += found.extra;  // voxel centres outside the grid count once per primitive
-            continue;
-        }
-        w.runs.clear();
-        const std::uint64_t outsideBefore = counts.outside;
-        w.voxelizer.addRecorded(p, w.geometry.meshes, counts, w.runs);
-        w.cache->store(key, h, w.runs, counts.outside - outsideBefore);
-    }
+        },
+        [&](const Primitive& p, std::vector<VoxelRun>& runs) -> std::uint64_t {
+            const std::uint64_t outsideBefore = counts.outside;
+            w.voxelizer.addRecorded(p, w.geometry.meshes, counts, runs);
+            return counts.outside - outsideBefore;
+        });
     counts = w.voxelizer.countAgainst(target_, counts);
     if (checksIncremental()) {
         const VoxelCounts full = w.voxelizer.score(w.geometry, target_);

@@ -23,6 +23,7 @@ public:
         Voxelizer voxelizer;
         std::optional<PrimitiveCache<VoxelRun>> cache;
         std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
+        std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
     };
 
     VolumeScorer(const Grammar& g, const VolumeTarget& target, const VolumeFitnessSettings& settings)

@@ -1,0 +1,117 @@
+// Incremental scoring end to end: every shipped scene runs 100,000 children with
+// score.check_incremental = true (each child scored both ways; the run stops on the first
+// difference), the baselines' moves too; a seeded run is byte-identical with the switch on and off;
+// the [score] keys are checked like every other key (exit 2).
+// The 100,000-children runs are labelled slow (the sanitizer pass skips them: tests/CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+
+#include "../test_support.hpp"
+#include "run/config_file.hpp"
+
+namespace shapevo {
+namespace {
+
+using test::curveWithoutTime;
+using test::readFile;
+using test::runShapevo;
+using test::sourcePath;
+using test::TempDir;
+
+/// The "evaluations" figure of a run's summary.json.
+std::uint64_t evaluationsOf(const std::string& runDir) {
+    const std::string summary = readFile(runDir + "/summary.json");
+    std::smatch m;
+    if (!std::regex_search(summary, m, std::regex("\"evaluations\": ([0-9]+)"))) return 0;
+    return std::stoull(m[1]);
+}
+
+std::vector<std::string> shippedConfigs() {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(sourcePath("configs")))
+        if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+class IncrementalCheckSlow : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(IncrementalCheckSlow, HundredThousandChildrenScoreTheSameBothWays) {
+    TempDir dir;
+    const std::string config = sourcePath("configs/" + GetParam() + ".toml");
+    const RunSettings s = loadConfig(config);
+    const std::uint64_t perGeneration = s.ga.population - s.ga.elitism;
+    const std::uint64_t generations = (100000 + perGeneration - 1) / perGeneration;
+    const auto r = runShapevo("run " + config + " --seed 2 --threads 2 -q --set score.check_incremental=true --set run.wall_time=0" +
+                              " --set ga.generations=" + std::to_string(generations) + " --set checkpoint.interval=1000000" +
+                              " --set checkpoint.seconds=0 --out " + dir.file("run"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_GE(evaluationsOf(dir.file("run")), 100000u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, IncrementalCheckSlow, ::testing::ValuesIn(shippedConfigs()),
+                         [](const auto& info) {
+                             std::string n = info.param;
+                             std::replace(n.begin(), n.end(), '-', '_');
+                             return n;
+                         });
+
+TEST(IncrementalCheckSlow, TheBaselinesMovesScoreTheSameBothWays) {
+    TempDir dir;
+    for (const char* method : {"smc", "sosmc", "rjmcmc"})
+        for (const char* scene : {"tree-logo", "spaceship-paper"}) {
+            SCOPED_TRACE(std::string(method) + " " + scene);
+            const std::string out = dir.file(std::string(method) + "-" + scene);
+            const auto r = runShapevo("run " + sourcePath(std::string("configs/") + scene + ".toml") +
+                                      " --seed 3 -q --set score.check_incremental=true --set run.wall_time=0 --set search.method=" +
+                                      method + " --set ga.generations=300 --out " + out);
+            ASSERT_EQ(r.exitCode, 0) << r.output;
+            EXPECT_GE(evaluationsOf(out), 400u);  // SMC stops evaluating particles that completed
+        }
+}
+
+TEST(IncrementalCheck, SeededRunsAreByteIdenticalWithTheSwitchOnAndOff) {
+    TempDir dir;
+    for (const char* scene : {"tree-logo", "spaceship"}) {
+        SCOPED_TRACE(scene);
+        std::string curve[2], best[2];
+        for (int on = 0; on < 2; ++on) {
+            const std::string out = dir.file(std::string(scene) + (on ? "-on" : "-off"));
+            const auto r = runShapevo("run " + sourcePath(std::string("configs/") + scene + ".toml") +
+                                      " --seed 5 -q --set run.wall_time=0 --set ga.generations=60 --set score.incremental=" +
+                                      (on ? "true" : "false") + " --out " + out);
+            ASSERT_EQ(r.exitCode, 0) << r.output;
+            curve[on] = curveWithoutTime(readFile(out + "/curve.csv"));
+            best[on] = readFile(out + "/best.genome");
+        }
+        EXPECT_EQ(curve[0], curve[1]);
+        EXPECT_EQ(best[0], best[1]);
+        EXPECT_GT(curve[0].size(), 1000u);
+    }
+}
+
+TEST(IncrementalCheck, BadScoreKeysAreInputErrors) {
+    TempDir dir;
+    const std::string config = sourcePath("configs/spaceship.toml");
+    const struct {
+        const char* set;
+        const char* message;
+    } cases[] = {
+        {"score.cache_mb=0", "score.cache_mb"},
+        {"score.cache_mb=-3", "score.cache_mb"},
+        {"score.incremental=1", "score.incremental"},
+        {"score.check_incremental=\"yes\"", "score.check_incremental"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.set);
+        const auto r = runShapevo("run " + config + " -q --set " + c.set + " --out " + dir.file("bad"));
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("bad")));
+    }
+}
+
+}  // namespace
+}  // namespace shapevo

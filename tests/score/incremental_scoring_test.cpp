@@ -1,0 +1,303 @@
+// Incremental scoring (score/primitive_cache.hpp and the replay paths of SilhouetteRaster and
+// Voxelizer): a primitive's recorded rows replay to the very pixels and voxels drawing it gives,
+// for every primitive kind and camera; the cache finds only bit-identical primitives and forgets
+// overwritten ones as misses; scorers give the same fitness and counts with and without a cache,
+// cold or warm; the checking mode stops on a cache that lies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "genome/operators.hpp"
+#include "grammar/parser.hpp"
+#include "score/image_scorer.hpp"
+#include "score/primitive_cache.hpp"
+#include "score/volume_scorer.hpp"
+#include "random_primitives.hpp"
+#include "silhouette_test_util.hpp"
+
+namespace shapevo {
+namespace {
+
+TEST(IncrementalScoring, RecordedRowsReplayToTheSamePixelsForEveryKindAndCamera) {
+    const std::vector<MeshShape> meshes = test::starMesh();
+    for (const test::Scene& scene : test::scenes()) {
+        const Camera camera = Camera::compile(scene.spec, "test");
+        SilhouetteRaster drawn(camera), replayed(camera);
+        Rng rng(11);
+        const ImageTarget target = test::randomTarget(camera.width(), camera.height(), rng);
+        for (int k = 0; k < kPrimitiveKinds; ++k) {
+            SCOPED_TRACE(std::string(scene.name) + " kind " + std::to_string(k));
+            long nonEmpty = 0;
+            for (int i = 0; i < 300; ++i) {
+                const Primitive p = test::randomPrimitive(PrimitiveKind(k), scene, rng);
+                drawn.add(p, &meshes);
+                std::vector<RowSpan> spans;
+                replayed.addRecorded(p, &meshes, spans);
+                ASSERT_EQ(replayed.bits(), drawn.bits()) << "recording drew other pixels, primitive " << i;
+                replayed.clear();
+                replayed.replay(spans);
+                ASSERT_EQ(replayed.bits(), drawn.bits()) << "replay drew other pixels, primitive " << i;
+                const SilhouetteCounts a = drawn.score(target), b = replayed.score(target);
+                ASSERT_EQ(a.covered, b.covered);
+                ASSERT_EQ(a.hit, b.hit);
+                ASSERT_EQ(a.avoided, b.avoided);
+                nonEmpty += a.covered > 0;
+                for (std::size_t s = 1; s < spans.size(); ++s)  // merged: one interval per run of pixels
+                    ASSERT_TRUE(spans[s].y > spans[s - 1].y || spans[s].lo > spans[s - 1].hi + 1);
+            }
+            EXPECT_GT(nonEmpty, 100);
+        }
+    }
+}
+
+/// The counts without the work measure (a replay rasterizes no row).
+VoxelCounts withoutWork(VoxelCounts c) {
+    c.rows = 0;
+    return c;
+}
+
+TEST(IncrementalScoring, RecordedVoxelRunsReplayToTheSameCountsForEveryKind) {
+    GridSpec grid;
+    grid.origin = {-1.3, -0.7, 0.25};
+    grid.voxelSize = 0.1;
+    grid.nx = 70, grid.ny = 23, grid.nz = 17;
+    const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
+    Rng rng(5);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    Voxelizer full(grid), cached(grid);
+    long nonEmpty = 0;
+    for (int model = 0; model < 400; ++model) {
+        Geometry g;
+        g.meshes = &meshes;
+        for (int i = 0; i < 6; ++i) {
+            Primitive p = test::randomPrimitive(PrimitiveKind(rng.below(kPrimitiveKinds)), grid, rng, 2);
+            if (p.kind == PrimitiveKind::Mesh) p.mesh = std::uint16_t(rng.below(2));
+            g.primitives.push_back(p);
+        }
+        const VoxelCounts want = full.score(g, target);
+        // first pass records each primitive, second replays them all
+        VoxelCounts counts;
+        std::vector<std::vector<VoxelRun>> runs(g.primitives.size());
+        std::vector<std::uint64_t> outside(g.primitives.size());
+        for (std::size_t i = 0; i < g.primitives.size(); ++i) {
+            const std::uint64_t before = counts.outside;
+            cached.addRecorded(g.primitives[i], &meshes, counts, runs[i]);
+            outside[i] = counts.outside - before;
+        }
+        ASSERT_EQ(cached.countAgainst(target, counts), want) << "model " << model;
+        VoxelCounts again;
+        for (std::size_t i = 0; i < g.primitives.size(); ++i) {
+            cached.replay(runs[i]);
+            again.outside += outside[i];
+        }
+        ASSERT_EQ(withoutWork(cached.countAgainst(target, again)), withoutWork(want)) << "model " << model;
+        nonEmpty += want.occupied > 0;
+    }
+    EXPECT_GT(nonEmpty, 300);
+}
+
+TEST(IncrementalScoring, CacheFindsOnlyBitIdenticalPrimitives) {
+    PrimitiveCache<RowSpan> cache(1 << 20);
+    Primitive p;
+    p.kind = PrimitiveKind::Cylinder;
+    p.centre = {1.0f, 2.0f, 3.0f};
+    const RowSpan rows[2] = {{4, 1, 9}, {5, 2, 8}};
+    cache.store(PrimitiveKey(p), PrimitiveKey(p).hash(), rows, 7);
+    PrimitiveCache<RowSpan>::Found found;
+    ASSERT_TRUE(cache.find(PrimitiveKey(p), PrimitiveKey(p).hash(), found));
+    ASSERT_EQ(found.records.size(), 2u);
+    EXPECT_EQ(found.records[1].y, 5);
+    EXPECT_EQ(found.extra, 7u);
+    auto missesFor = [&](Primitive q) {
+        const PrimitiveKey key(q);
+        return !cache.find(key, key.hash(), found) && !cache.find(key, PrimitiveKey(p).hash(), found);  // even on a colliding hash
+    };
+    Primitive q = p;
+    q.centre.x = std::nextafter(1.0f, 2.0f);
+    EXPECT_TRUE(missesFor(q));
+    q = p, q.kind = PrimitiveKind::Cone;
+    EXPECT_TRUE(missesFor(q));
+    q = p, q.taperZ = 0.5f;
+    EXPECT_TRUE(missesFor(q));
+    q = p, q.mesh = 1;
+    EXPECT_TRUE(missesFor(q));
+    q = p, q.axes[2][1] = -0.0f;  // equal as a number, not as bits: a miss is always safe
+    EXPECT_TRUE(missesFor(q));
+    // a primitive that drew nothing is found with no records
+    cache.store(PrimitiveKey(q), PrimitiveKey(q).hash(), {}, 0);
+    ASSERT_TRUE(cache.find(PrimitiveKey(q), PrimitiveKey(q).hash(), found));
+    EXPECT_TRUE(found.records.empty());
+}
+
+TEST(IncrementalScoring, OverwrittenRecordsAreMissesNeverWrongRecords) {
+    PrimitiveCache<RowSpan> cache(64 * 1024);  // the smallest cache: its ring wraps many times below
+    Rng rng(3);
+    std::vector<Primitive> prims(3000);
+    std::vector<std::vector<RowSpan>> rows(prims.size());
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        prims[i].centre = {float(i), 0.0f, 0.0f};
+        rows[i].resize(1 + rng.below(40));
+        for (RowSpan& r : rows[i]) r = {std::int32_t(i), std::int32_t(rng.below(100)), std::int32_t(rng.below(1000))};
+        cache.store(PrimitiveKey(prims[i]), PrimitiveKey(prims[i]).hash(), rows[i], i);
+    }
+    std::size_t hits = 0;
+    PrimitiveCache<RowSpan>::Found found;
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        if (!cache.find(PrimitiveKey(prims[i]), PrimitiveKey(prims[i]).hash(), found)) continue;
+        ++hits;
+        ASSERT_EQ(found.extra, i);
+        ASSERT_EQ(found.records.size(), rows[i].size()) << i;
+        for (std::size_t r = 0; r < rows[i].size(); ++r) {
+            ASSERT_EQ(found.records[r].y, rows[i][r].y) << i;
+            ASSERT_EQ(found.records[r].lo, rows[i][r].lo) << i;
+            ASSERT_EQ(found.records[r].hi, rows[i][r].hi) << i;
+        }
+    }
+    EXPECT_GT(hits, 50u);                 // the newest are still there
+    EXPECT_LT(hits, prims.size() / 2);    // the oldest were overwritten
+    EXPECT_LE(cache.bytes(), 64u * 1024);
+    EXPECT_EQ(cache.stats().stored, prims.size());
+}
+
+const char* kTree = R"(
+start Trunk
+rule Trunk {
+  size (0.6, 3, 0.6)
+  cylinder
+  child Branch prob 0.6 max 3
+}
+rule Branch {
+  param turn = uniform(0, 360)
+  param tilt = uniform(25, 70)
+  translate (0, parent.size.y * 0.3, 0)
+  rotate y turn
+  rotate x tilt
+  scale (0.7, 0.75, 0.7)
+  translate (0, scope.size.y * 0.5, 0)
+  cone top 0.7
+  child Branch prob 0.5 max 2
+  terminal {
+    translate (0, scope.size.y * 0.5, 0)
+    size (0.8, 0.8, 0.8)
+    sphere
+  }
+}
+)";
+
+/// Random trees and their mutated and crossed children (the shape of a GA's stream of models).
+std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
+    Rng rng(17);
+    const GenomeLimits limits{200};
+    GenomeScratch scratch;
+    std::vector<Chromosome> out;
+    for (std::size_t i = 0; i < 8; ++i) {
+        Chromosome c;
+        for (std::uint32_t n = 5 + 3 * std::uint32_t(i); c.genes < n && grow(g, c, rng, limits);) {
+        }
+        out.push_back(c);
+    }
+    while (out.size() < count) {
+        Chromosome child = out[out.size() - 1 - rng.below(8)];
+        switch (rng.below(4)) {
+        case 0: grow(g, child, rng, limits); break;
+        case 1: cut(g, child, rng, scratch); break;
+        case 2: alter(g, child, rng); break;
+        default: {
+            const Chromosome a = child, b = out[rng.below(std::uint32_t(out.size()))];
+            Chromosome childB;
+            crossover(g, a, b, child, childB, rng, limits, 5, scratch);
+        }
+        }
+        out.push_back(child);
+    }
+    return out;
+}
+
+TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOrWarm) {
+    const Grammar g = parseGrammar(kTree, "tree.grammar");
+    CameraSpec s;
+    s.width = 160, s.height = 120;
+    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
+    const Camera camera = Camera::compile(s, "test");
+    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
+    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
+    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    cached.setIncremental(1 << 20, true);  // small: it wraps; checking: any difference throws
+    auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
+    auto& c = static_cast<ImageScorer::Workspace&>(*wc);
+    ASSERT_TRUE(c.cache.has_value());
+    for (const Chromosome& model : treesAndChildren(g, 3000)) {
+        SilhouetteCounts a, b;
+        const double fa = full.fitness(model, static_cast<ImageScorer::Workspace&>(*wf), &a);
+        const double fb = cached.fitness(model, c, &b);
+        ASSERT_EQ(fa, fb);
+        ASSERT_EQ(a.covered, b.covered);
+        ASSERT_EQ(a.hit, b.hit);
+    }
+    EXPECT_GT(c.cache->stats().hits, c.cache->stats().misses);  // children share most primitives
+    EXPECT_GT(c.cache->stats().misses, 1000u);
+}
+
+TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
+    const Grammar g = parseGrammar(kTree, "tree.grammar");
+    CameraSpec s;
+    s.width = 160, s.height = 120;
+    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
+    const Camera camera = Camera::compile(s, "test");
+    std::vector<std::uint8_t> lum(160 * 120, 0), alpha(160 * 120, 255);
+    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
+    const Chromosome model = treesAndChildren(g, 8).back();
+    Geometry geometry;
+    DeriveScratch scratch;
+    derive(g, model, geometry, scratch);
+    ASSERT_GT(geometry.primitives.size(), 2u);
+    for (bool check : {false, true}) {
+        scorer.setIncremental(1 << 20, check);
+        auto ws = scorer.makeWorkspace();
+        auto& w = static_cast<ImageScorer::Workspace&>(*ws);
+        const Primitive& lying = geometry.primitives[1];  // say it drew nothing
+        w.cache->store(PrimitiveKey(lying), PrimitiveKey(lying).hash(), {}, 0);
+        if (check) {
+            EXPECT_THROW(scorer.fitness(model, w, nullptr), IncrementalMismatch);
+        } else {  // without the check the lie goes through: what the check is there to catch
+            SilhouetteCounts lied, truth;
+            scorer.fitness(model, w, &lied);
+            ImageScorer honest(g, camera, target, VolumeFitnessSettings{});
+            auto hw = honest.makeWorkspace();
+            honest.fitness(model, static_cast<ImageScorer::Workspace&>(*hw), &truth);
+            EXPECT_LT(lied.covered, truth.covered);
+        }
+    }
+}
+
+TEST(IncrementalScoring, VolumeScorerGivesTheSameCountsWithACacheAndItsCheckCatchesALie) {
+    const Grammar g = parseGrammar(kTree, "tree.grammar");
+    GridSpec grid;
+    grid.origin = {-3.0, -0.5, -3.0};
+    grid.voxelSize = 0.1;
+    grid.nx = 60, grid.ny = 60, grid.nz = 60;
+    Rng rng(8);
+    const VolumeTarget target = test::randomTarget(grid, rng);
+    VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
+    cached.setIncremental(4 << 20, true);
+    auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
+    const std::vector<Chromosome> models = treesAndChildren(g, 600);
+    for (const Chromosome& model : models) ASSERT_EQ(full.fitness(model, *wf), cached.fitness(model, *wc));
+    auto& w = static_cast<VolumeScorer::Workspace&>(*wc);
+    EXPECT_GT(w.cache->stats().hits, w.cache->stats().misses);
+    // a lie about the last model's first primitive is caught
+    Geometry geometry;
+    DeriveScratch scratch;
+    derive(g, models.back(), geometry, scratch);
+    auto fresh = cached.makeWorkspace();
+    auto& f = static_cast<VolumeScorer::Workspace&>(*fresh);
+    const Primitive& lying = geometry.primitives[0];
+    f.cache->store(PrimitiveKey(lying), PrimitiveKey(lying).hash(), {}, 0);
+    EXPECT_THROW(cached.fitness(models.back(), f), IncrementalMismatch);
+}
+
+}  // namespace
+}  // namespace shapevo
