@@ -23,6 +23,7 @@ namespace shapevo {
 /// its own makeWorkspace() made, so it may static_cast to its derived type.
 struct ScoreWorkspace {
     virtual ~ScoreWorkspace() = default;
+    DeriveStatus status = DeriveStatus::Complete;  ///< how the last model scored here derived
     DeriveScratch derive;
     Geometry geometry;
 };
@@ -67,11 +68,18 @@ public:
     void setMaxPrimitives(std::size_t n) { maxPrimitives_ = n; }
     std::size_t maxPrimitives() const { return maxPrimitives_; }
     Anomalies anomalies() const { return {nonFinite_.load(), truncated_.load()}; }
+    /// Count the anomaly of a model that is not scored again (a duplicate of one scored with
+    /// `status`), so that anomalies() stay the sums over every evaluation.
+    void countAgain(DeriveStatus status) const {
+        if (status == DeriveStatus::Truncated) truncated_.fetch_add(1, std::memory_order_relaxed);
+        if (status == DeriveStatus::NonFinite) nonFinite_.fetch_add(1, std::memory_order_relaxed);
+    }
 
 protected:
     /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
     bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
-        switch (derive(grammar(), c, w.geometry, w.derive, maxPrimitives_)) {
+        w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+        switch (w.status) {
         case DeriveStatus::Complete: return true;
         case DeriveStatus::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return true;
         case DeriveStatus::NonFinite: break;

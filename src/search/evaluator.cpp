@@ -13,17 +13,65 @@ int Evaluator::usableThreads(int requested) {
     return requested > 0 && requested < available ? requested : available;
 }
 
-Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {}
+Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {
+    if (scorer.cacheBytes() > 0) memo_.emplace(kMemoEntries, scorer.cacheBytes() / 4);
+}
 
 void Evaluator::evaluate(Population& pop, std::size_t from) {
-    pop.fitness.resize(pop.size());
+    const std::size_t n = pop.size();
+    pop.fitness.resize(n);
+    // Which to score: on one thread, in population order (so the same with any thread count).
+    todo_.clear();
+    if (memo_) {
+        sameAs_.assign(n, -1);
+        entry_.assign(n, nullptr);
+        status_.resize(n);
+        for (std::size_t i = from; i < n; ++i) {
+            const Chromosome& c = pop.individuals[i];
+            const std::uint64_t h = FitnessMemo::hashOf(c);
+            if (FitnessMemo::Entry* e = memo_->find(c, h)) {
+                if (e->pending >= 0) {
+                    sameAs_[i] = e->pending;  // an earlier one of this batch: known after scoring
+                } else {
+                    pop.fitness[i] = e->fitness;
+                    scorer_.countAgain(e->status);
+                }
+                ++reused_;
+                continue;
+            }
+            if (FitnessMemo::Entry* e = memo_->insert(c, h)) {
+                e->pending = std::int64_t(i);
+                entry_[i] = e;
+            }
+            todo_.push_back(i);
+        }
+    } else {
+        for (std::size_t i = from; i < n; ++i) todo_.push_back(i);
+    }
     arena_.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(from, pop.size(), 4), [&](const tbb::blocked_range<std::size_t>& r) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo_.size(), 4), [&](const tbb::blocked_range<std::size_t>& r) {
             auto& ws = workspaces_.local();
             if (!ws) ws = scorer_.makeWorkspace();
-            for (std::size_t i = r.begin(); i != r.end(); ++i) pop.fitness[i] = scorer_.fitness(pop.individuals[i], *ws);
+            for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                const std::size_t i = todo_[k];
+                pop.fitness[i] = scorer_.fitness(pop.individuals[i], *ws);
+                if (memo_) status_[i] = ws->status;
+            }
         });
     });
+    if (!memo_) return;
+    for (std::size_t i : todo_) {
+        FitnessMemo::Entry* e = entry_[i];
+        if (!e || e->pending != std::int64_t(i)) continue;  // not remembered, or replaced within the batch
+        e->fitness = pop.fitness[i];
+        e->status = status_[i];
+        e->pending = -1;
+    }
+    for (std::size_t i = from; i < n; ++i)
+        if (sameAs_[i] >= 0) {
+            pop.fitness[i] = pop.fitness[std::size_t(sameAs_[i])];
+            scorer_.countAgain(status_[std::size_t(sameAs_[i])]);
+        }
 }
 
 }  // namespace shapevo
