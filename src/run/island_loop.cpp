@@ -95,7 +95,7 @@ public:
         if (!known_ || !(best == model_)) {
             const auto start = Clock::now();
             const Scorer::Anomalies before = scene.scorer().anomalies();
-            if (!workspace_) workspace_ = scene.scorer().makeWorkspace();
+            if (!workspace_) workspace_ = scene.scorer().makePlainWorkspace();
             iou_ = scene.iou(best, *workspace_);
             const Scorer::Anomalies after = scene.scorer().anomalies();
             added_.nonFinite += after.nonFinite - before.nonFinite;

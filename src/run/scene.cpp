@@ -149,7 +149,7 @@ void Scene::reportBest(const Chromosome& best, const std::string& folder, RunSum
 
 Evaluation Scene::evaluate(const Chromosome& c) const {
     Evaluation e;
-    e.fitness = scorer_->fitness(c, *scorer_->makeWorkspace());
+    e.fitness = scorer_->fitness(c, *scorer_->makePlainWorkspace());
     const auto count = [](const char* name, std::uint64_t n) { return std::string("  ") + name + " " + std::to_string(n); };
     std::string counted;
     std::size_t primitives = 0;

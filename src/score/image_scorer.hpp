@@ -26,6 +26,7 @@ public:
         }
         SilhouetteRaster raster;
         std::optional<PrimitiveCache<RowSpan>> cache;
+        std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache
         std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
     };
@@ -40,6 +41,9 @@ public:
 
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
         return std::make_unique<Workspace>(camera_, cacheBytes());
+    }
+    std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const override {
+        return std::make_unique<Workspace>(camera_, 0);
     }
     double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
         return fitness(c, static_cast<Workspace&>(w), nullptr);

@@ -7,23 +7,24 @@
 //    bit for bit) equal those it was stored with; the hash only picks the bucket. What a primitive
 //    writes depends on nothing else (the camera or grid is fixed per cache), so a replay writes the
 //    very rows a computation would.
-//  - Bounded: `bytes` of records and entries, reserved once at construction (zero pages the
-//    system maps only when first written, so a small run never touches most of it); storing never
-//    allocates. Records live in one ring: storing overwrites the oldest, and an entry whose records
-//    were overwritten is simply not found (a miss, never a wrong answer).
+//  - Bounded: at most `bytes` of records and entries, taken as needed: the entry table starts at
+//    128 KB and grows (x4) while over half full, up to a quarter of `bytes` and to 4x the entries
+//    whose records the ring holds; the records' ring starts at 256 KB and grows (x4) to the rest
+//    when one lookup in 16 finds records already overwritten, or a primitive does not fit. A few
+//    reallocations in all (none once grown), in zero pages (base/zero_pages.hpp).
+//  - Records live in one ring: storing overwrites the oldest, and an entry whose records were
+//    overwritten is simply not found (a miss, never a wrong answer).
 //  - Derived data only: a cold cache gives the same results as a warm one, only slower.
 #pragma once
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
-#include <memory>
-#include <new>
 #include <span>
 #include <vector>
 
 #include "base/hash.hpp"
+#include "base/zero_pages.hpp"
 #include "shape/primitive.hpp"
 
 namespace shapevo {
@@ -64,17 +65,15 @@ public:
     };
 
     /// About `bytes` in all (at least a small minimum): a quarter for entries, the rest for records.
+    /// The entry table starts small and grows (x4, keeping its entries) while it is over half
+    /// full, up to its quarter: a short run touches little memory.
     explicit PrimitiveCache(std::size_t bytes) {
         bytes = std::max<std::size_t>(bytes, 64 * 1024);
-        std::size_t buckets = 1;
-        while (buckets * 2 * kWays * sizeof(Entry) <= bytes / 4) buckets *= 2;
-        entryCount_ = buckets * kWays;
-        // calloc: all-zero entries are free ones, and large blocks come as untouched zero pages.
-        entries_.reset(static_cast<Entry*>(std::calloc(entryCount_, sizeof(Entry))));
-        if (!entries_) throw std::bad_alloc();
-        mask_ = buckets - 1;
-        ringSize_ = std::max<std::size_t>(1, (bytes - entryCount_ * sizeof(Entry)) / sizeof(Record));
-        ring_ = std::make_unique_for_overwrite<Record[]>(ringSize_);  // never read before written
+        maxBuckets_ = 1;
+        while (maxBuckets_ * 2 * kWays * sizeof(Entry) <= bytes / 4) maxBuckets_ *= 2;
+        ringMax_ = std::max<std::size_t>(1, (bytes - maxBuckets_ * kWays * sizeof(Entry)) / sizeof(Record));
+        growRing(std::min(ringMax_, kFirstRingBytes / sizeof(Record)));
+        resize(std::min<std::size_t>(maxBuckets_, kFirstBuckets));
     }
 
     /// Bring the bucket of hash `h` towards the cache (looking up many keys: prefetch them all first).
@@ -85,7 +84,11 @@ public:
         Entry* bucket = &entries_[(h & mask_) * kWays];
         for (std::size_t w = 0; w < kWays; ++w) {
             Entry& e = bucket[w];
-            if (e.hash != h || e.count == 0 || !live(e) || !(e.key == key)) continue;
+            if (e.hash != h || e.count == 0 || !(e.key == key)) continue;
+            if (!live(e)) {  // seen, but its records were overwritten: the ring may be too small
+                ++stale_;
+                break;
+            }
             e.used = ++clock_;
             out.records = e.count == kEmpty ? std::span<const Record>()
                                             : std::span<const Record>(&ring_[e.at % ringSize_], e.count);
@@ -97,10 +100,17 @@ public:
         return false;
     }
 
+    // (find() counts lookups as hits + misses; store() grows the ring when one in 16 lookups since
+    // the ring last grew and wrapped found records already overwritten, or a primitive did not fit.)
+
     /// Store `records` (and `extra`) for `key`, replacing the least recently used entry of its
     /// bucket. A primitive with more records than a quarter of the ring is not stored.
     void store(const PrimitiveKey& key, std::uint64_t h, std::span<const Record> records, std::uint64_t extra) {
-        const std::size_t n = records.size(), size = ringSize_;
+        const std::size_t n = records.size();
+        if (ringSize_ < ringMax_ && (n > ringSize_ / 4 || (head_ - ringStart_ > ringSize_ &&
+                                                            stale_ * 16 > stats_.hits + stats_.misses - lookupsAtGrowth_)))
+            growRing(std::min(ringMax_, std::max(ringSize_ * 4, n * 4)));
+        const std::size_t size = ringSize_;
         if (n > size / 4) {
             ++stats_.tooLarge;
             return;
@@ -116,6 +126,7 @@ public:
             Entry& e = bucket[w];
             if (e.count == 0 || !live(e)) {
                 victim = &e;
+                entriesUsed_ += e.used == 0;  // (a stale entry was counted when first used)
                 break;
             }
             if (e.used < victim->used) victim = &e;
@@ -127,13 +138,26 @@ public:
         victim->extra = extra;
         victim->used = ++clock_;
         ++stats_.stored;
+        recordsStored_ += n;
+        // Grow the table while over half full, but only to ~4x the entries whose records the ring
+        // can hold at once (more would only keep entries of overwritten records).
+        const std::size_t entries = buckets() * kWays;
+        if (entriesUsed_ * 2 > entries && buckets() < maxBuckets_ &&
+            double(entries) < 4.0 * double(ringSize_) * double(stats_.stored) / double(std::max<std::uint64_t>(recordsStored_, 1)))
+            resize(std::min(maxBuckets_, buckets() * 4));
     }
 
     const Stats& stats() const { return stats_; }
-    std::size_t bytes() const { return entryCount_ * sizeof(Entry) + ringSize_ * sizeof(Record); }
+    /// Bytes of entries and records written so far (what the system had to map; at most bytes()).
+    std::size_t bytesUsed() const {
+        return buckets() * kWays * sizeof(Entry) + std::min<std::uint64_t>(head_ - ringStart_, ringSize_) * sizeof(Record);
+    }
+    std::size_t bytes() const { return maxBuckets_ * kWays * sizeof(Entry) + ringMax_ * sizeof(Record); }
 
 private:
     static constexpr std::size_t kWays = 4;
+    static constexpr std::size_t kFirstBuckets = 256;  ///< 1,024 entries, ~128 KB
+    static constexpr std::size_t kFirstRingBytes = 256 << 10;
     /// count of an entry that wrote no record (a primitive reaching no pixel or voxel)
     static constexpr std::uint32_t kEmpty = UINT32_MAX;
     struct Entry {  // all zero: free
@@ -141,16 +165,47 @@ private:
         std::uint64_t hash, at, extra, used;
         std::uint32_t count;  ///< 0: free; kEmpty: stored with no records
     };
-    struct Free {
-        void operator()(Entry* e) const { std::free(e); }
-    };
     /// Its records are still in the ring (none was overwritten since it was stored).
-    bool live(const Entry& e) const { return e.count == kEmpty || head_ - e.at <= ringSize_; }
+    bool live(const Entry& e) const { return e.count == kEmpty || (e.at >= ringStart_ && head_ - e.at <= ringSize_); }
 
-    std::unique_ptr<Entry[], Free> entries_;
-    std::unique_ptr<Record[]> ring_;
-    std::size_t entryCount_ = 0, ringSize_ = 0, mask_ = 0;
-    std::uint64_t head_ = 0, clock_ = 0;
+    /// A ring of `records` records, empty: every record of the old one is forgotten (their entries
+    /// become stale, misses). Rare: the ring only grows (x4), from 1 MB to its share of `bytes`.
+    void growRing(std::size_t records) {
+        ring_ = ZeroPages<Record>();
+        ring_ = ZeroPages<Record>(records);
+        ringSize_ = records;
+        ringStart_ = head_;
+        stale_ = 0;
+        lookupsAtGrowth_ = stats_.hits + stats_.misses;
+    }
+    std::size_t buckets() const { return mask_ + 1; }
+
+    /// A table of `buckets` buckets holding the live entries of the current one (rare: the table
+    /// only grows, at most log4 of its final size times).
+    void resize(std::size_t buckets) {
+        ZeroPages<Entry> old = std::move(entries_);
+        const std::size_t oldCount = old.size();
+        entries_ = ZeroPages<Entry>(buckets * kWays);  // all-zero entries are free ones
+        mask_ = buckets - 1;
+        entriesUsed_ = 0;
+        for (std::size_t i = 0; i < oldCount; ++i) {
+            const Entry& e = old[i];
+            if (e.used == 0 || !live(e)) continue;
+            Entry* bucket = &entries_[(e.hash & mask_) * kWays];
+            for (std::size_t w = 0; w < kWays; ++w)
+                if (bucket[w].used == 0) {
+                    bucket[w] = e;
+                    ++entriesUsed_;
+                    break;
+                }
+        }
+    }
+
+    ZeroPages<Entry> entries_;
+    ZeroPages<Record> ring_;
+    std::size_t maxBuckets_ = 1, ringMax_ = 1, ringSize_ = 0, mask_ = 0;
+    std::uint64_t head_ = 0, clock_ = 0, entriesUsed_ = 0, recordsStored_ = 0;
+    std::uint64_t ringStart_ = 0, stale_ = 0, lookupsAtGrowth_ = 0;  ///< head_, stale finds and lookups since the ring grew
     Stats stats_;
 };
 

@@ -24,6 +24,8 @@ namespace shapevo {
 struct ScoreWorkspace {
     virtual ~ScoreWorkspace() = default;
     DeriveStatus status = DeriveStatus::Complete;  ///< how the last model scored here derived
+    /// Bytes its incremental-scoring cache has written so far (0 without one).
+    virtual std::size_t cacheBytesUsed() const { return 0; }
     DeriveScratch derive;
     Geometry geometry;
 };
@@ -49,6 +51,9 @@ public:
     Scorer& operator=(const Scorer&) = delete;
     virtual ~Scorer() = default;
     virtual std::unique_ptr<ScoreWorkspace> makeWorkspace() const = 0;
+    /// A workspace without an incremental-scoring cache, for scoring a model now and then (the
+    /// progress line's IoU): the same results, none of the cache's memory.
+    virtual std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const { return makeWorkspace(); }
     /// Higher is better. Must not allocate once the workspace is warm.
     virtual double fitness(const Chromosome& c, ScoreWorkspace& w) const = 0;
     virtual const Grammar& grammar() const = 0;

@@ -22,6 +22,7 @@ public:
         }
         Voxelizer voxelizer;
         std::optional<PrimitiveCache<VoxelRun>> cache;
+        std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
         std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
         std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
     };
@@ -31,6 +32,9 @@ public:
 
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
         return std::make_unique<Workspace>(target_.grid, cacheBytes());
+    }
+    std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const override {
+        return std::make_unique<Workspace>(target_.grid, 0);
     }
     double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
         return fitness(c, static_cast<Workspace&>(w), nullptr);

@@ -13,15 +13,15 @@ int Evaluator::usableThreads(int requested) {
     return requested > 0 && requested < available ? requested : available;
 }
 
-Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {
-    if (scorer.cacheBytes() > 0) memo_.emplace(kMemoEntries, scorer.cacheBytes() / 4);
-}
+Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {}
 
 void Evaluator::evaluate(Population& pop, std::size_t from) {
     const std::size_t n = pop.size();
     pop.fitness.resize(n);
     // Which to score: on one thread, in population order (so the same with any thread count).
     todo_.clear();
+    if (!memo_ && scorer_.cacheBytes() > 0)  // four batches' worth (a few generations), known now
+        memo_.emplace(std::clamp<std::size_t>(4 * (n - from), kMemoEntries / 16, kMemoEntries), scorer_.cacheBytes() / 4);
     if (memo_) {
         sameAs_.assign(n, -1);
         entry_.assign(n, nullptr);

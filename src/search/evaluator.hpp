@@ -3,8 +3,8 @@
 // It never asks for more threads than the machine gives it, so threads() is what is used.
 // With incremental scoring on (Scorer::cacheBytes() > 0), a chromosome equal to one scored
 // recently, or to an earlier one of the same batch, is not scored again: it takes that fitness
-// (search/fitness_memo.hpp: 4,096 models in a quarter of score.cache_mb; exact, and the same
-// with any thread count).
+// (search/fitness_memo.hpp: four times the first batch's models, 256 to 4,096, in at most a
+// quarter of score.cache_mb; exact, and the same with any thread count).
 #pragma once
 #include <memory>
 #include <optional>
@@ -33,9 +33,17 @@ public:
     const Scorer& scorer() const { return scorer_; }
     /// Models that took a remembered fitness instead of being scored (since construction).
     std::uint64_t reused() const { return reused_; }
+    /// Memory incremental scoring uses now: every thread's primitive cache (the part written so
+    /// far) and the duplicate memo.
+    std::size_t cacheBytesUsed() const {
+        std::size_t bytes = memo_ ? memo_->bytesHeld() : 0;
+        for (const auto& ws : workspaces_)
+            if (ws) bytes += ws->cacheBytesUsed();
+        return bytes;
+    }
 
 private:
-    static constexpr std::size_t kMemoEntries = 4096;  ///< models remembered (a few generations' worth)
+    static constexpr std::size_t kMemoEntries = 4096;  ///< most models remembered
     const Scorer& scorer_;
     tbb::task_arena arena_;
     tbb::enumerable_thread_specific<std::unique_ptr<ScoreWorkspace>> workspaces_;

@@ -1,0 +1,132 @@
+// bench_incremental: the same recorded GA children scored by the full evaluation and by the
+// incremental one (score.incremental: the primitive cache and the duplicate memo), side by side.
+//
+// Recording (once per scene, not timed): the scene's GA runs from its config's seed on one thread
+// up to generation FROM (default 1000), then the children of the next 50 generations are kept
+// (each generation's population: elites first, children after). Each benchmark iteration makes a
+// fresh Evaluator on one thread, lets it score the population of generation FROM (the children's
+// parents, not timed, so a cache starts as warm as in the run), then times scoring the 50
+// generations' children in order. Counters: evals/s and s/child; duplicates, the share of
+// children the memo answered; cache_MB, the cache memory written after the 50 generations (one
+// thread: an island's figure is this times its threads), and that per individual of the population. Both modes score exactly the same chromosomes; the fitnesses
+// are compared and a difference aborts the benchmark.
+//
+//   cd build && ninja bench_incremental && ./bench/bench_incremental --benchmark_repetitions=5
+//   SHAPEVO_BENCH_FROM=200 ./bench/bench_incremental     (children of earlier generations)
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grammar/parser.hpp"
+#include "run/config_file.hpp"
+#include "run/scene.hpp"
+#include "search/search_methods.hpp"
+
+namespace {
+
+using namespace shapevo;
+
+const char* const kScenes[] = {"tree-logo", "tree-sketch", "spaceship-paper", "spaceship", "castle-volume", "tree-volume"};
+constexpr int kRecordedGenerations = 50;
+
+struct Recording {
+    RunSettings settings;
+    std::unique_ptr<Grammar> grammar;
+    std::unique_ptr<Scene> full, incremental;
+    Population parents;
+    std::vector<Population> generations;
+    std::size_t elite = 0, children = 0;
+    std::vector<double> fitness;  ///< every child's fitness (the full evaluation's), in order
+};
+
+std::uint32_t fromGeneration() {
+    const char* v = std::getenv("SHAPEVO_BENCH_FROM");
+    return v ? std::uint32_t(std::strtoul(v, nullptr, 10)) : 1000;
+}
+
+Recording& recording(int scene) {
+    static std::map<int, Recording> cache;
+    auto it = cache.find(scene);
+    if (it != cache.end()) return it->second;
+    Recording& r = cache[scene];
+    r.settings = loadConfig(std::string(SHAPEVO_SOURCE_DIR "/configs/") + kScenes[scene] + ".toml");
+    r.settings.search.method = "ga";
+    r.grammar = std::make_unique<Grammar>(loadGrammar(r.settings.grammarPath, r.settings.grammarAttrs));
+    RunSettings off = r.settings;
+    off.incremental.enabled = false;
+    r.full = Scene::load(off, *r.grammar);
+    RunSettings on = r.settings;
+    on.incremental.enabled = true;
+    r.incremental = Scene::load(on, *r.grammar);
+    auto method = makeSearchMethod(r.settings.search, r.settings.ga, *r.grammar, r.settings.limits, r.settings.seed);
+    Evaluator evaluator(r.incremental->scorer(), 1);
+    method->initialize(evaluator);
+    const std::uint32_t from = fromGeneration();
+    while (method->generation() < from) method->step(evaluator);
+    r.parents = method->population();
+    for (int g = 0; g < kRecordedGenerations; ++g) {
+        method->step(evaluator);
+        r.generations.push_back(method->population());
+    }
+    r.elite = std::size_t(r.settings.ga.elitism);
+    for (const Population& p : r.generations) {
+        r.children += p.size() - r.elite;
+        r.fitness.insert(r.fitness.end(), p.fitness.begin() + std::ptrdiff_t(r.elite), p.fitness.end());
+    }
+    return r;
+}
+
+void BM_ScoreRecordedChildren(benchmark::State& state) {
+    const int scene = int(state.range(0));
+    const bool incremental = state.range(1) != 0;
+    Recording& r = recording(scene);
+    const Scene& s = incremental ? *r.incremental : *r.full;
+    state.SetLabel(std::string(kScenes[scene]) + (incremental ? " incremental" : " full") + ", children of generations " +
+                   std::to_string(fromGeneration() + 1) + "-" + std::to_string(fromGeneration() + kRecordedGenerations));
+    std::vector<Population> work = r.generations;
+    std::uint64_t reused = 0;
+    std::size_t cacheBytes = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        Evaluator evaluator(s.scorer(), 1);
+        Population parents = r.parents;
+        evaluator.evaluate(parents);  // warm: the parents' primitives are in the cache
+        const std::uint64_t reusedBefore = evaluator.reused();
+        state.ResumeTiming();
+        for (Population& p : work) evaluator.evaluate(p, r.elite);
+        state.PauseTiming();
+        reused = evaluator.reused() - reusedBefore;
+        cacheBytes = evaluator.cacheBytesUsed();
+        std::size_t k = 0;
+        for (const Population& p : work)
+            for (std::size_t i = r.elite; i < p.size(); ++i, ++k)
+                if (p.fitness[i] != r.fitness[k]) {
+                    std::fprintf(stderr, "bench_incremental: child %zu scores %.17g, recorded %.17g\n", k, p.fitness[i], r.fitness[k]);
+                    std::abort();
+                }
+        state.ResumeTiming();
+    }
+    state.counters["children"] = double(r.children);
+    state.counters["evals/s"] = benchmark::Counter(double(r.children), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["s/child"] = benchmark::Counter(double(r.children), benchmark::Counter::kIsIterationInvariantRate |
+                                                                           benchmark::Counter::kInvert);
+    state.counters["cache_MB"] = double(cacheBytes) / (1 << 20);  // written so far, one thread
+    state.counters["bytes/individual"] = double(cacheBytes) / double(r.parents.size());
+    state.counters["duplicates"] = double(reused) / double(r.children);
+}
+
+// scene x {full, incremental}: the two modes of one scene run next to each other
+BENCHMARK(BM_ScoreRecordedChildren)
+    ->ArgNames({"scene", "incremental"})
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

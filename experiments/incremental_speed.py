@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""Incremental scoring in whole runs (issue 15): `shapevo run` with score.incremental on and off,
+same seed, same generation count, one thread, back to back (A B A B ...). With the same seed the
+two runs evolve exactly the same models (the switch changes only the time; the script checks
+that best.genome is byte-identical), so evaluations per second compare like for like. Reports,
+per scene, the median and min-max over repetitions of evals/s for each mode and of their paired
+ratio, and the wall time of each mode.
+
+usage: experiments/incremental_speed.py [--bin build/shapevo] [--reps 5]
+           [--scenes tree-logo:1500 tree-sketch:1200 spaceship:50 ...] [--csv FILE]
+A scene is CONFIG[:GENERATIONS] (configs/CONFIG.toml; GENERATIONS overrides ga.generations).
+"""
+import argparse
+import csv
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEFAULT_SCENES = ["tree-logo:1500", "tree-sketch:1200", "spaceship:50", "spaceship-paper:50",
+                  "castle-volume:400", "tree-volume:600"]
+
+
+def run(binary, config, generations, incremental, out):
+    args = [binary, "run", os.path.join(ROOT, "configs", config + ".toml"), "-q", "--threads", "1",
+            "--set", "run.wall_time=0", "--set", "checkpoint.seconds=0",
+            "--set", "checkpoint.interval=1000000", "--set", "score.incremental=" + ("true" if incremental else "false"),
+            "--out", out]
+    if generations:
+        args += ["--set", "ga.generations=%d" % generations]
+    subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    with open(os.path.join(out, "best.genome"), "rb") as f:
+        best = f.read()
+    return s["evaluations"] / s["wall_seconds"], s["wall_seconds"], best
+
+
+def spread(values, fmt):
+    return (fmt + " (" + fmt + "-" + fmt + ")") % (statistics.median(values), min(values), max(values))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "shapevo"))
+    ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--scenes", nargs="+", default=DEFAULT_SCENES)
+    ap.add_argument("--csv")
+    a = ap.parse_args()
+    rows = []
+    print("| scene | generations | full evals/s | incremental evals/s | speed-up | full s | incremental s |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in a.scenes:
+            config, _, gens = scene.partition(":")
+            gens = int(gens) if gens else 0
+            rate = {False: [], True: []}
+            wall = {False: [], True: []}
+            for rep in range(a.reps):
+                genomes = {}
+                for inc in ([False, True] if rep % 2 == 0 else [True, False]):
+                    r, w, best = run(a.bin, config, gens, inc, os.path.join(tmp, "%s-%d-%d" % (config, rep, inc)))
+                    rate[inc].append(r)
+                    wall[inc].append(w)
+                    genomes[inc] = best
+                    rows.append({"scene": config, "generations": gens, "rep": rep, "incremental": int(inc),
+                                 "evals_per_s": r, "wall_s": w})
+                if genomes[False] != genomes[True]:
+                    sys.exit("incremental_speed: %s: the two modes found different best models" % config)
+            ratio = [i / f for i, f in zip(rate[True], rate[False])]
+            print("| %s | %s | %s | %s | %s | %s | %s |" % (
+                config, gens or "config", spread(rate[False], "%.0f"), spread(rate[True], "%.0f"),
+                spread(ratio, "%.2f"), spread(wall[False], "%.2f"), spread(wall[True], "%.2f")), flush=True)
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+
+
+if __name__ == "__main__":
+    main()
