@@ -6,8 +6,14 @@ that best.genome is byte-identical), so evaluations per second compare like for 
 per scene, the median and min-max over repetitions of evals/s for each mode and of their paired
 ratio, and the wall time of each mode.
 
+With --quality: quality per second instead. tree-logo on 2 MPI ranks (mpirun -np 2, one
+thread each), seeds 1-5, each with the switch off and on, for --seconds of wall time; reports for
+each mode the median (min-max) over seeds of the seconds until the best model's silhouette IoU
+(curve.csv's iou column) first reached 0.95 and 0.98 ("-" if it did not).
+
 usage: experiments/incremental_speed.py [--bin build/shapevo] [--reps 5]
            [--scenes tree-logo:1500 tree-sketch:1200 spaceship:50 ...] [--csv FILE]
+       experiments/incremental_speed.py --quality [--seconds 30] [--seeds 5]
 A scene is CONFIG[:GENERATIONS] (configs/CONFIG.toml; GENERATIONS overrides ga.generations).
 """
 import argparse
@@ -39,6 +45,47 @@ def run(binary, config, generations, incremental, out):
     return s["evaluations"] / s["wall_seconds"], s["wall_seconds"], best
 
 
+def time_to(binary, seed, incremental, seconds, out, levels):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    args = ["mpirun", "--oversubscribe", "--bind-to", "none", "-np", "2", binary, "run",
+            os.path.join(ROOT, "configs", "tree-logo.toml"), "-q", "--threads", "1", "--seed", str(seed),
+            "--set", "run.wall_time=%g" % seconds, "--set", "score.incremental=" + ("true" if incremental else "false"),
+            "--out", out]
+    subprocess.run(args, check=True, stdout=subprocess.DEVNULL, env=env)
+    reached = {}
+    with open(os.path.join(out, "curve.csv")) as f:
+        for row in csv.DictReader(f):
+            for level in levels:
+                if level not in reached and float(row["iou"]) >= level:
+                    reached[level] = float(row["seconds"])
+    return reached
+
+
+def quality(a):
+    levels = [0.95, 0.98]
+    times = {(inc, level): [] for inc in (False, True) for level in levels}
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for seed in range(1, a.seeds + 1):
+            for inc in ([False, True] if seed % 2 else [True, False]):
+                reached = time_to(a.bin, seed, inc, a.seconds, os.path.join(tmp, "q-%d-%d" % (seed, inc)), levels)
+                for level in levels:
+                    times[(inc, level)].append(reached.get(level))
+                    rows.append({"seed": seed, "incremental": int(inc), "iou": level, "seconds": reached.get(level, "")})
+    print("| tree-logo, 2 ranks | seconds to IoU 0.95 | seconds to IoU 0.98 |")
+    print("| --- | --- | --- |")
+    for inc in (False, True):
+        cells = []
+        for level in levels:
+            got = [t for t in times[(inc, level)] if t is not None]
+            cell = spread(got, "%.1f") if got else "-"
+            if len(got) < len(times[(inc, level)]):
+                cell += ", %d of %d seeds" % (len(got), len(times[(inc, level)]))
+            cells.append(cell)
+        print("| %s | %s | %s |" % ("incremental" if inc else "full", cells[0], cells[1]))
+    return rows
+
+
 def spread(values, fmt):
     return (fmt + " (" + fmt + "-" + fmt + ")") % (statistics.median(values), min(values), max(values))
 
@@ -49,7 +96,18 @@ def main():
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--scenes", nargs="+", default=DEFAULT_SCENES)
     ap.add_argument("--csv")
+    ap.add_argument("--quality", action="store_true")
+    ap.add_argument("--seconds", type=float, default=30)
+    ap.add_argument("--seeds", type=int, default=5)
     a = ap.parse_args()
+    if a.quality:
+        rows = quality(a)
+        if a.csv:
+            with open(a.csv, "w", newline="") as f:
+                w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+                w.writeheader()
+                w.writerows(rows)
+        return
     rows = []
     print("| scene | generations | full evals/s | incremental evals/s | speed-up | full s | incremental s |")
     print("| --- | --- | --- | --- | --- | --- | --- |")

@@ -346,9 +346,16 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         ga.initialize(evaluator);
         stop = afterGeneration();
     }
+    bool saidCacheFull = false;
     while (!stop) {
         if (ga.generation() < s.ga.generations) {
             ga.step(evaluator);
+            if (!saidCacheFull && scene.scorer().cacheFull()) {
+                saidCacheFull = true;
+                log << "shapevo: rank " << mpi.rank() << ": incremental scoring has filled score.cache_mb = " << s.incremental.cacheMb
+                    << " at generation " << ga.generation()
+                    << "; the primitives it cannot keep are drawn the full way from now on (results are the same; raise score.cache_mb for speed)\n";
+            }
             stop = afterGeneration();
         } else {  // async only: done with its generations, waiting for the others (the run's end)
             {

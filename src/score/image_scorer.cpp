@@ -14,6 +14,7 @@ void ImageScorer::drawCached(Workspace& w) const {
             w.raster.addRecorded(p, w.geometry.meshes, spans);
             return 0;
         });
+    if (w.cache->full()) noteCacheFull();
 }
 
 void ImageScorer::checkAgainstFull(Workspace& w, const SilhouetteCounts& counts) const {

@@ -107,9 +107,10 @@ public:
     /// bucket. A primitive with more records than a quarter of the ring is not stored.
     void store(const PrimitiveKey& key, std::uint64_t h, std::span<const Record> records, std::uint64_t extra) {
         const std::size_t n = records.size();
-        if (ringSize_ < ringMax_ && (n > ringSize_ / 4 || (head_ - ringStart_ > ringSize_ &&
-                                                            stale_ * 16 > stats_.hits + stats_.misses - lookupsAtGrowth_)))
-            growRing(std::min(ringMax_, std::max(ringSize_ * 4, n * 4)));
+        const bool wantsMore = n > ringSize_ / 4 || (head_ - ringStart_ > ringSize_ &&
+                                                      stale_ * 16 > stats_.hits + stats_.misses - lookupsAtGrowth_);
+        if (wantsMore && ringSize_ < ringMax_) growRing(std::min(ringMax_, std::max(ringSize_ * 4, n * 4)));
+        else if (wantsMore) full_ = true;
         const std::size_t size = ringSize_;
         if (n > size / 4) {
             ++stats_.tooLarge;
@@ -142,12 +143,18 @@ public:
         // Grow the table while over half full, but only to ~4x the entries whose records the ring
         // can hold at once (more would only keep entries of overwritten records).
         const std::size_t entries = buckets() * kWays;
-        if (entriesUsed_ * 2 > entries && buckets() < maxBuckets_ &&
-            double(entries) < 4.0 * double(ringSize_) * double(stats_.stored) / double(std::max<std::uint64_t>(recordsStored_, 1)))
-            resize(std::min(maxBuckets_, buckets() * 4));
+        if (entriesUsed_ * 2 > entries &&
+            double(entries) < 4.0 * double(ringSize_) * double(stats_.stored) / double(std::max<std::uint64_t>(recordsStored_, 1))) {
+            if (buckets() < maxBuckets_) resize(std::min(maxBuckets_, buckets() * 4));
+            else full_ = true;
+        }
     }
 
     const Stats& stats() const { return stats_; }
+    /// It has reached `bytes` and would have grown: primitives too large for it, records still
+    /// asked for (one lookup in 16) overwritten, or an entry table over half full that could not
+    /// grow. What it cannot keep is drawn the full way.
+    bool full() const { return full_; }
     /// Bytes of entries and records written so far (what the system had to map; at most bytes()).
     std::size_t bytesUsed() const {
         return buckets() * kWays * sizeof(Entry) + std::min<std::uint64_t>(head_ - ringStart_, ringSize_) * sizeof(Record);
@@ -205,7 +212,8 @@ private:
     ZeroPages<Record> ring_;
     std::size_t maxBuckets_ = 1, ringMax_ = 1, ringSize_ = 0, mask_ = 0;
     std::uint64_t head_ = 0, clock_ = 0, entriesUsed_ = 0, recordsStored_ = 0;
-    std::uint64_t ringStart_ = 0, stale_ = 0, lookupsAtGrowth_ = 0;  ///< head_, stale finds and lookups since the ring grew
+    std::uint64_t ringStart_ = 0, stale_ = 0, lookupsAtGrowth_ = 0;
+    bool full_ = false;  ///< head_, stale finds and lookups since the ring grew
     Stats stats_;
 };
 

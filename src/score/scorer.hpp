@@ -67,6 +67,9 @@ public:
         checkIncremental_ = check && bytes > 0;
     }
     std::size_t cacheBytes() const { return cacheBytes_; }
+    /// Some workspace's cache reached cacheBytes() and would have grown (PrimitiveCache::full):
+    /// from then on part of the models are drawn the full way. A run says so once.
+    bool cacheFull() const { return cacheFull_.load(std::memory_order_relaxed); }
     bool checksIncremental() const { return checkIncremental_; }
 
     /// genome.max_primitives: derivation stops (Truncated) after this many primitives.
@@ -81,6 +84,9 @@ public:
     }
 
 protected:
+    void noteCacheFull() const {
+        if (!cacheFull_.load(std::memory_order_relaxed)) cacheFull_.store(true, std::memory_order_relaxed);
+    }
     /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
     bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
         w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
@@ -96,6 +102,7 @@ protected:
 private:
     std::size_t cacheBytes_ = 0;
     bool checkIncremental_ = false;
+    mutable std::atomic<bool> cacheFull_{false};
     std::size_t maxPrimitives_ = kDefaultMaxPrimitives;
     mutable std::atomic<std::uint64_t> nonFinite_{0}, truncated_{0};
 };

@@ -18,6 +18,7 @@ VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
             w.voxelizer.addRecorded(p, w.geometry.meshes, counts, runs);
             return counts.outside - outsideBefore;
         });
+    if (w.cache->full()) noteCacheFull();
     counts = w.voxelizer.countAgainst(target_, counts);
     if (checksIncremental()) {
         const VoxelCounts full = w.voxelizer.score(w.geometry, target_);

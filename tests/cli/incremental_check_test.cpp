@@ -1,7 +1,8 @@
 // Incremental scoring end to end: every shipped scene runs 100,000 children with
 // score.check_incremental = true (each child scored both ways; the run stops on the first
 // difference), the baselines' moves too; a seeded run is byte-identical with the switch on and off;
-// the [score] keys are checked like every other key (exit 2).
+// a cache that fills its score.cache_mb says so once and changes nothing; the [score] keys are
+// checked like every other key (exit 2).
 // The 100,000-children runs are labelled slow (the sanitizer pass skips them: tests/CMakeLists.txt).
 #include <gtest/gtest.h>
 
@@ -90,6 +91,29 @@ TEST(IncrementalCheck, SeededRunsAreByteIdenticalWithTheSwitchOnAndOff) {
         EXPECT_EQ(best[0], best[1]);
         EXPECT_GT(curve[0].size(), 1000u);
     }
+}
+
+TEST(IncrementalCheck, AFullCacheIsSaidOnceAndChangesNothing) {
+    TempDir dir;
+    std::string best[2], curve[2], output[2];
+    const char* sizes[2] = {"1", "64"};
+    for (int i = 0; i < 2; ++i) {
+        const std::string out = dir.file(std::string("mb") + sizes[i]);
+        const auto r = runShapevo("run " + sourcePath("configs/tree-logo.toml") +
+                                  " --seed 5 --set run.wall_time=0 --set ga.generations=40 --set score.cache_mb=" + sizes[i] +
+                                  " --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        best[i] = readFile(out + "/best.genome");
+        curve[i] = curveWithoutTime(readFile(out + "/curve.csv"));
+        output[i] = r.output;
+    }
+    const std::string said = "incremental scoring has filled score.cache_mb = 1";
+    const std::size_t at = output[0].find(said);
+    ASSERT_NE(at, std::string::npos) << output[0];
+    EXPECT_EQ(output[0].find(said, at + 1), std::string::npos) << "said more than once:\n" << output[0];
+    EXPECT_EQ(output[1].find("incremental scoring has filled"), std::string::npos) << output[1];
+    EXPECT_EQ(best[0], best[1]);
+    EXPECT_EQ(curve[0], curve[1]);
 }
 
 TEST(IncrementalCheck, BadScoreKeysAreInputErrors) {
