@@ -279,6 +279,7 @@ void readSearch(Reader& rd, RunSettings& r) {
     rd.string(t, "search", "method", s.method);
     if (!findSearchMethod(s.method))
         rd.fail(*t->get("method"), "search.method must be " + searchMethodNames() + ", got \"" + shortened(s.method) + "\"");
+    rd.boolean(t, "search", "diagnostics", s.diagnostics);
     TomlSection section(rd, t, "search");
     for (const SearchMethodEntry& e : searchMethods()) e.readSettings(section, s);
 }

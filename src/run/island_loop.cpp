@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <thread>
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/run_identity.hpp"
+#include "run/diagnostics_log.hpp"
 #include "report/curve_plot.hpp"
 #include "genome/genome_file.hpp"
 #include "mesh/glb_writer.hpp"
@@ -141,6 +143,8 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     installStopSignalHandlers();
     std::vector<GenerationStats> localCurve = restored ? restored->curve : std::vector<GenerationStats>{};
     BestModelIoU bestIoU;
+    std::optional<DiagnosticsLog> diagnostics;  // search.diagnostics: rank 0's island, a row per generation
+    if (root && s.search.diagnostics) diagnostics.emplace(folder + "/diagnostics.csv", grammar);
 
     if (root && !options.quiet)
         log << "shapevo " << (restored ? "resume " : "run ") << s.name << ": grammar " << s.grammarPath << ", target "
@@ -172,6 +176,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         local.iou = bestIoU.of(scene, ga.population().individuals[ga.population().best()]);
         localCurve.push_back(local);
         lastRow = islandRow(local, ga.population().fitness);
+        if (diagnostics) diagnostics->write(ga, local.seconds);
     };
     auto checkpointNow = [&] {  // collective
         const auto checkpointStart = Clock::now();

@@ -13,24 +13,28 @@ GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings,
     next_.individuals.resize(settings.population);
     next_.fitness.resize(settings.population);
     order_.resize(settings.population);
+    childOp_.resize(settings.population + 1);
+    parentFitness_.resize(settings.population + 1);
+    picked_.resize(settings.population);
 }
 
 void GeneticAlgorithm::initialize(Evaluator& evaluator) {
     startFromRandomGrowth(grammar_, limits_, settings_.initialGenesMin, settings_.initialGenesMax, evaluator);
 }
 
-void GeneticAlgorithm::mutate(Chromosome& c) {
+OperatorOutcomes::Op GeneticAlgorithm::mutate(Chromosome& c) {
     const double total = settings_.growWeight + settings_.cutWeight + settings_.alterWeight;
     const double r = rng_.uniform() * total;
     const int first = r < settings_.growWeight ? 0 : r < settings_.growWeight + settings_.cutWeight ? 1 : 2;
     // If the chosen mutation cannot apply (nothing to cut, chromosome full), try the next one.
     for (int k = 0; k < 3; ++k) {
         switch ((first + k) % 3) {
-        case 0: if (settings_.growWeight > 0 && grow(grammar_, c, rng_, limits_)) return; break;
-        case 1: if (settings_.cutWeight > 0 && cut(grammar_, c, rng_, scratch_)) return; break;
-        default: if (settings_.alterWeight > 0 && alter(grammar_, c, rng_)) return; break;
+        case 0: if (settings_.growWeight > 0 && grow(grammar_, c, rng_, limits_)) return OperatorOutcomes::Grow; break;
+        case 1: if (settings_.cutWeight > 0 && cut(grammar_, c, rng_, scratch_)) return OperatorOutcomes::Cut; break;
+        default: if (settings_.alterWeight > 0 && alter(grammar_, c, rng_)) return OperatorOutcomes::Alter; break;
         }
     }
+    return OperatorOutcomes::Copy;
 }
 
 void GeneticAlgorithm::step(Evaluator& evaluator) {
@@ -45,24 +49,33 @@ void GeneticAlgorithm::step(Evaluator& evaluator) {
         next_.fitness[k] = pop_.fitness[order_[k]];
     }
     wheel_.prepare(pop_.fitness);
+    std::fill(picked_.begin(), picked_.end(), 0);
     for (std::size_t k = elite; k < n; k += 2) {
         const std::size_t p1 = tournamentSelect(pop_.fitness, settings_.tournament, rng_);
         const std::size_t p2 = wheel_.select(rng_);
+        picked_[p1] = picked_[p2] = 1;
         Chromosome& c1 = next_.individuals[k];
         const bool pair = k + 1 < n;
         Chromosome& c2 = pair ? next_.individuals[k + 1] : scratchChild_;
         if (rng_.uniform() < settings_.mutation) {
             c1 = pop_.individuals[p1];
             c2 = pop_.individuals[p2];
-            mutate(c1);
-            if (pair) mutate(c2);
+            childOp_[k] = mutate(c1);
+            childOp_[k + 1] = pair ? mutate(c2) : OperatorOutcomes::Copy;
+            parentFitness_[k] = pop_.fitness[p1];
+            parentFitness_[k + 1] = pop_.fitness[p2];
         } else {
-            crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_,
-                      settings_.crossoverRetries, scratch_);
+            const bool crossed = crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_,
+                                           settings_.crossoverRetries, scratch_);
+            childOp_[k] = childOp_[k + 1] = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
+            parentFitness_[k] = parentFitness_[k + 1] = std::max(pop_.fitness[p1], pop_.fitness[p2]);
         }
     }
+    outcomes_.parentsPicked += 2 * ((n - elite + 1) / 2);
+    for (std::uint8_t p : picked_) outcomes_.distinctParents += p;
     std::swap(pop_, next_);
     evaluator.evaluate(pop_, elite);
+    for (std::size_t k = elite; k < n; ++k) outcomes_.count(childOp_[k], pop_.fitness[k], parentFitness_[k]);
     evaluations_ += n - elite;
     ++generation_;
 }

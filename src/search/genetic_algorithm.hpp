@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "genome/operators.hpp"
+#include "search/operator_outcomes.hpp"
 #include "search/search_method.hpp"
 #include "search/selection.hpp"
 
@@ -21,9 +22,10 @@ public:
     void initialize(Evaluator& evaluator) override;
     /// Breed and evaluate the next generation.
     void step(Evaluator& evaluator) override;
+    const OperatorOutcomes* operatorOutcomes() const override { return &outcomes_; }
 
 private:
-    void mutate(Chromosome& c);
+    OperatorOutcomes::Op mutate(Chromosome& c);
 
     const Grammar& grammar_;
     GaSettings settings_;
@@ -33,6 +35,12 @@ private:
     std::vector<std::size_t> order_;
     RouletteWheel wheel_;
     GenomeScratch scratch_;
+    // what made each child of this generation and its parent's fitness (crossover: the better
+    // parent's), to count outcomes once the children are scored; which individuals were picked
+    std::vector<OperatorOutcomes::Op> childOp_;
+    std::vector<double> parentFitness_;
+    std::vector<std::uint8_t> picked_;
+    OperatorOutcomes outcomes_;
 };
 
 }  // namespace shapevo

@@ -13,6 +13,7 @@
 #include "search/search_settings.hpp"
 #include "search/evaluator.hpp"
 #include "search/generation_stats.hpp"
+#include "search/operator_outcomes.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {
@@ -42,6 +43,9 @@ public:
     /// best, mean, std of the current population (seconds filled by the caller).
     GenerationStats stats() const { return populationStats(pop_, generation_, evaluations_); }
     Rng& rng() { return rng_; }
+    /// Where this method's children land against their parents (null: it does not breed
+    /// children from parents, e.g. SMC, RJMCMC).
+    virtual const OperatorOutcomes* operatorOutcomes() const { return nullptr; }
 
 protected:
     /// After restore(): fit the method's own buffers to the restored population.

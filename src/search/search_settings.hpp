@@ -44,6 +44,7 @@ struct GaSettings {
 
 struct SearchSettings {
     std::string method = "ga";  ///< a name in searchMethods() (search/search_methods.hpp)
+    bool diagnostics = false;   ///< write diagnostics.csv (run/diagnostics_log.hpp)
     SmcSettings smc;
     RjmcmcSettings rjmcmc;
 };

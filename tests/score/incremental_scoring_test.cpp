@@ -11,6 +11,7 @@
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
+#include "../small_tree_grammar.hpp"
 #include "score/primitive_cache.hpp"
 #include "score/volume_scorer.hpp"
 #include "random_primitives.hpp"
@@ -160,30 +161,14 @@ TEST(IncrementalScoring, OverwrittenRecordsAreMissesNeverWrongRecords) {
     EXPECT_EQ(cache.stats().stored, prims.size());
 }
 
-const char* kTree = R"(
-start Trunk
-rule Trunk {
-  size (0.6, 3, 0.6)
-  cylinder
-  child Branch prob 0.6 max 3
+const char* const kTree = test::kSmallTree;
+
+Camera treeCamera() {
+    CameraSpec s;
+    s.width = 160, s.height = 120;
+    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
+    return Camera::compile(s, "test");
 }
-rule Branch {
-  param turn = uniform(0, 360)
-  param tilt = uniform(25, 70)
-  translate (0, parent.size.y * 0.3, 0)
-  rotate y turn
-  rotate x tilt
-  scale (0.7, 0.75, 0.7)
-  translate (0, scope.size.y * 0.5, 0)
-  cone top 0.7
-  child Branch prob 0.5 max 2
-  terminal {
-    translate (0, scope.size.y * 0.5, 0)
-    size (0.8, 0.8, 0.8)
-    sphere
-  }
-}
-)";
 
 /// Random trees and their mutated and crossed children (the shape of a GA's stream of models).
 std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
@@ -216,10 +201,7 @@ std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
 
 TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOrWarm) {
     const Grammar g = parseGrammar(kTree, "tree.grammar");
-    CameraSpec s;
-    s.width = 160, s.height = 120;
-    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
-    const Camera camera = Camera::compile(s, "test");
+    const Camera camera = treeCamera();
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
@@ -242,10 +224,7 @@ TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOr
 
 TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
     const Grammar g = parseGrammar(kTree, "tree.grammar");
-    CameraSpec s;
-    s.width = 160, s.height = 120;
-    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
-    const Camera camera = Camera::compile(s, "test");
+    const Camera camera = treeCamera();
     std::vector<std::uint8_t> lum(160 * 120, 0), alpha(160 * 120, 255);
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
     ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});

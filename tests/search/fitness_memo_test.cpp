@@ -9,6 +9,7 @@
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "search/evaluator.hpp"
+#include "../small_tree_grammar.hpp"
 
 namespace shapevo {
 namespace {
@@ -50,22 +51,7 @@ TEST(FitnessMemo, StaysWithinItsBytesAndRefusesHugeChromosomes) {
     EXPECT_EQ(memo.insert(huge, FitnessMemo::hashOf(huge)), nullptr);
 }
 
-const char* kTree = R"(
-start Trunk
-rule Trunk {
-  size (0.6, 3, 0.6)
-  cylinder
-  child Branch prob 0.6 max 3
-}
-rule Branch {
-  param tilt = uniform(25, 70)
-  rotate x tilt
-  scale (0.7, 0.75, 0.7)
-  translate (0, scope.size.y * 0.5, 0)
-  cone top 0.7
-  child Branch prob 0.5 max 2
-}
-)";
+const char* const kTree = test::kSmallTree;
 
 /// Scores by deriving (so anomalies are counted: max_primitives 3 truncates most trees) and counts
 /// the models it scored.
