@@ -64,9 +64,8 @@ public:
         std::uint64_t hits = 0, misses = 0, stored = 0, tooLarge = 0;
     };
 
-    /// About `bytes` in all (at least a small minimum): a quarter for entries, the rest for records.
-    /// The entry table starts small and grows (x4, keeping its entries) while it is over half
-    /// full, up to its quarter: a short run touches little memory.
+    /// About `bytes` in all (at least a small minimum): up to a quarter for entries, the rest for
+    /// records; both start small and grow as the header says, so a short run touches little memory.
     explicit PrimitiveCache(std::size_t bytes) {
         bytes = std::max<std::size_t>(bytes, 64 * 1024);
         maxBuckets_ = 1;
@@ -87,7 +86,7 @@ public:
             if (e.hash != h || e.count == 0 || !(e.key == key)) continue;
             if (!live(e)) {  // seen, but its records were overwritten: the ring may be too small
                 ++stale_;
-                break;
+                continue;
             }
             e.used = ++clock_;
             out.records = e.count == kEmpty ? std::span<const Record>()
@@ -176,7 +175,7 @@ private:
     bool live(const Entry& e) const { return e.count == kEmpty || (e.at >= ringStart_ && head_ - e.at <= ringSize_); }
 
     /// A ring of `records` records, empty: every record of the old one is forgotten (their entries
-    /// become stale, misses). Rare: the ring only grows (x4), from 1 MB to its share of `bytes`.
+    /// become stale, misses). Rare: the ring only grows (x4), from 256 KB to its share of `bytes`.
     void growRing(std::size_t records) {
         ring_ = ZeroPages<Record>();
         ring_ = ZeroPages<Record>(records);
