@@ -9,9 +9,11 @@
 namespace shapevo {
 
 struct OperatorOutcomes {
-    enum Op { Grow, Cut, Alter, Crossover, Copy, kOps };  ///< Copy: no operator applied (all refused)
+    enum Op { Grow, Cut, Alter, Crossover, Regrow, Refine, Copy, kOps };  ///< Copy: no operator applied (all refused)
     enum Result { Better, Equal, Worse, kResults };
-    static constexpr const char* kOpNames[kOps] = {"grow", "cut", "alter", "crossover", "copy"};
+    /// regrow: a subtree cut and grown anew (the hybrid search's mutation); refine: a local move of
+    /// an elite kept only if not worse (the hybrid search, search/hybrid_search.hpp)
+    static constexpr const char* kOpNames[kOps] = {"grow", "cut", "alter", "crossover", "regrow", "refine", "copy"};
     static constexpr const char* kResultNames[kResults] = {"better", "equal", "worse"};
 
     std::array<std::array<std::uint64_t, kResults>, kOps> children{};  ///< [operator][result]

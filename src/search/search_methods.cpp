@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "search/genetic_algorithm.hpp"
+#include "search/hybrid_search.hpp"
 #include "search/rjmcmc.hpp"
 #include "search/smc.hpp"
 
@@ -30,6 +31,21 @@ void readRjmcmc(SectionReader& r, SearchSettings& s) {
     r.flag("rjmcmc_delayed_rejection", m.delayedRejection);
 }
 
+void readHybrid(SectionReader& r, SearchSettings& s) {
+    HybridSettings& h = s.hybrid;
+    r.count("hybrid_islands", h.islands, 1, 1e6);
+    r.count("hybrid_migration_interval", h.migrationInterval, 0, 1e9);
+    r.count("hybrid_restart_interval", h.restartInterval, 0, 1e9);
+    r.number("hybrid_mutation", h.mutation, 0, 1);
+    r.number("hybrid_regrow", h.regrow, 0, 1);
+    r.number("hybrid_refine", h.refine, 0, 1);
+    r.number("hybrid_refine_jump", h.refineJump, 0, 1);
+}
+
+std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
+                                         const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<HybridSearch>(g, s.hybrid, ga, limits, seed);
+}
 std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const GaSettings& ga, const Grammar& g,
                                      const GenomeLimits& limits, std::uint64_t seed) {
     return std::make_unique<GeneticAlgorithm>(g, ga, limits, seed);
@@ -48,7 +64,10 @@ std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const GaSettin
 }
 
 // populationCopies: GA pop_ + next_; SMC pop_ + next_; RJMCMC pop_ + proposals_ + second_ + star_.
-constexpr std::array<SearchMethodEntry, 4> kMethods{{
+// hybrid: pop_ + next_ (+ a few refine proposals).
+constexpr std::array<SearchMethodEntry, 5> kMethods{{
+    {"hybrid", "GA islands in one process, mostly mutation, elites refined by local moves (the default)", readHybrid,
+     makeHybrid, 3},
     {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa, 2},
     {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc, 2},
     {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc, 2},

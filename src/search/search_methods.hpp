@@ -25,17 +25,17 @@ struct SearchMethodEntry {
 };
 
 /// The method `search.method` names (@throw std::invalid_argument if none), seeded with `seed`; `ga` gives population size and initial
-/// lengths to every method.
+/// lengths to every method (and elitism, tournament and mutation weights to the GA and the hybrid).
 std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
                                                const GenomeLimits& limits, std::uint64_t seed);
 
-/// Every method, the default ("ga") first.
+/// Every method, the default ("hybrid") first.
 std::span<const SearchMethodEntry> searchMethods();
 
 /// The entry named `name`, or nullptr.
 const SearchMethodEntry* findSearchMethod(std::string_view name);
 
-/// The names for a message: "\"ga\", \"smc\", \"sosmc\" or \"rjmcmc\"".
+/// The names for a message: "\"hybrid\", \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\"".
 std::string searchMethodNames();
 
 }  // namespace shapevo

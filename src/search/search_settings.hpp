@@ -42,11 +42,24 @@ struct GaSettings {
 };
 
 
+/// The hybrid search (search/hybrid_search.hpp): GA islands inside one process whose elites are
+/// refined by local moves. [ga] gives population, elitism, tournament and grow/cut/alter weights.
+struct HybridSettings {
+    std::uint32_t islands = 4;            ///< sub-populations of one process (population split evenly)
+    std::uint32_t migrationInterval = 10; ///< generations between migrations around the in-process ring
+    std::uint32_t restartInterval = 100;  ///< generations between restarts of the worst island (0: never)
+    double mutation = 0.6;                ///< probability that a pair is mutated, not crossed
+    double regrow = 0.25;                 ///< share of mutations that regrow a subtree (the rest: [ga]'s weights)
+    double refine = 0.5;                  ///< local moves of elites per generation, per island member
+    double refineJump = 0.5;              ///< probability that a local move is a regrow (else an alter)
+};
+
 struct SearchSettings {
-    std::string method = "ga";  ///< a name in searchMethods() (search/search_methods.hpp)
+    std::string method = "hybrid";  ///< a name in searchMethods() (search/search_methods.hpp)
     bool diagnostics = false;   ///< write diagnostics.csv (run/diagnostics_log.hpp)
     SmcSettings smc;
     RjmcmcSettings rjmcmc;
+    HybridSettings hybrid;
 };
 
 }  // namespace shapevo

@@ -5,7 +5,7 @@
 
 namespace shapevo {
 
-std::size_t tournamentSelect(const std::vector<double>& fitness, std::uint32_t k, Rng& rng) {
+std::size_t tournamentSelect(std::span<const double> fitness, std::uint32_t k, Rng& rng) {
     std::size_t best = rng.below(std::uint32_t(fitness.size()));
     for (std::uint32_t i = 1; i < k; ++i) {
         const std::size_t c = rng.below(std::uint32_t(fitness.size()));
@@ -14,7 +14,7 @@ std::size_t tournamentSelect(const std::vector<double>& fitness, std::uint32_t k
     return best;
 }
 
-void RouletteWheel::prepare(const std::vector<double>& fitness) {
+void RouletteWheel::prepare(std::span<const double> fitness) {
     const double worst = *std::min_element(fitness.begin(), fitness.end());
     const double best = *std::max_element(fitness.begin(), fitness.end());
     const double floor = std::max(1e-12, (best - worst) * 1e-6);

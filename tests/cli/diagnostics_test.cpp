@@ -40,7 +40,7 @@ TEST(Diagnostics, TheRunWritesARowPerGenerationAndIsOtherwiseTheSame) {
     std::string line;
     ASSERT_TRUE(std::getline(csv, line));
     const std::vector<std::string> header = split(line);
-    ASSERT_EQ(header.size(), 11u + 15u);
+    ASSERT_EQ(header.size(), 11u + 3u * 7u);  // 7 operators (grow ... copy) x better, equal, worse
     EXPECT_EQ(header[5], "distinct_genomes");
     EXPECT_EQ(header.back(), "copy_worse");
     int rows = 0;
@@ -49,10 +49,14 @@ TEST(Diagnostics, TheRunWritesARowPerGenerationAndIsOtherwiseTheSame) {
         ASSERT_EQ(cells.size(), header.size()) << line;
         ++rows;
         EXPECT_EQ(std::stoi(cells[0]), rows);
-        long children = 0;
-        for (std::size_t i = 11; i < cells.size(); ++i) children += std::stol(cells[i]);
-        // tree-sketch: population 150, elitism 30 -> 120 children a generation (none in the first)
+        long children = 0, refined = 0;
+        for (std::size_t i = 11; i < cells.size(); ++i) (header[i].rfind("refine_", 0) == 0 ? refined : children) += std::stol(cells[i]);
+        // tree-sketch with the default (hybrid) search: population 150 in islands of 38, 38, 37, 37
+        // keeping 8, 8, 7, 7 elites -> 120 children a generation (none in the first), and at most
+        // 19 local moves of elites per island (hybrid_refine 0.5)
         EXPECT_EQ(children, rows == 1 ? 0 : 120) << line;
+        EXPECT_LE(refined, 76) << line;
+        if (rows > 1) EXPECT_GT(refined, 50) << line;
         EXPECT_LE(std::stoul(cells[6]), std::stoul(cells[5]));  // structures <= genomes
         EXPECT_LE(std::stoul(cells[5]), 150u);
     }

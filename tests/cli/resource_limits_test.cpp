@@ -27,7 +27,7 @@ TEST(ResourceLimits, APopulationTheMachineCannotHoldIsRefusedUpFrontWithTheEstim
                             ":ga.population: ga.population = 10000000 with genome.max_genes = 10000000 may need "),
               std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find("population 10000000 x 4 copies x ("), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("population 10000000 x 5 copies x ("), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("GiB this process may use"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("bad_alloc"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("out")));

@@ -21,7 +21,9 @@ const std::string kSmall = " --set ga.population=40 --set ga.generations=8 --set
 
 TEST(Run, WritesEveryOutputFile) {
     TempDir dir;
-    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall);
+    // the paper's GA: its evaluation count is exact, 40 + 7 x (40 - 6)
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall +
+                              " --set search.method=ga");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f : {"best.obj", "best.ply", "best.genome", "curve.csv", "summary.json", "config.toml", "spaceship.grammar"})
         EXPECT_TRUE(std::filesystem::exists(dir.file("run/") + f)) << f;

@@ -47,11 +47,11 @@ TEST_P(SearchMethodCli, TwoIslandRunResumedFromItsCheckpointEqualsTheUninterrupt
     EXPECT_TRUE(std::filesystem::exists(dir.file("whole/best.obj")));
 }
 
-/// Every method of the table but the GA (whose resume is covered by tests/cli/run_test.cpp).
+/// Every method of the table (the default, "hybrid", is also covered by tests/cli/run_test.cpp).
 std::vector<const char*> baselineMethods() {
     std::vector<const char*> names;
     for (const SearchMethodEntry& m : searchMethods())
-        if (m.name != "ga") names.push_back(m.name.data());  // the table's names are literals: NUL-terminated
+        names.push_back(m.name.data());  // the table's names are literals: NUL-terminated
     return names;
 }
 
@@ -62,7 +62,7 @@ TEST(SearchMethodCli, UnknownMethodOrKeyIsAnInputError) {
     TempDir dir;
     const auto bad = runShapevo("run " + config() + " --set search.method=annealing --out " + dir.file("a") + " -q");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
-    EXPECT_NE(bad.output.find("search.method must be \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"annealing\""),
+    EXPECT_NE(bad.output.find("search.method must be \"hybrid\", \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"annealing\""),
               std::string::npos) << bad.output;
     const auto key = runShapevo("run " + config() + " --set search.rjmcmc_temprature=1 --out " + dir.file("b") + " -q");
     EXPECT_EQ(key.exitCode, 2) << key.output;

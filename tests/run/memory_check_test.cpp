@@ -44,7 +44,7 @@ TEST(MemoryCheck, ARunThatDoesNotFitIsRefusedWithTheEstimate) {
     } catch (const InputError& e) {
         EXPECT_EQ(e.file(), x.s.configPath);
         EXPECT_EQ(e.where(), "ga.population");
-        for (const char* part : {"ga.population = 1000000 with genome.max_genes = 100 may need ", "population 1000000 x 4 copies",
+        for (const char* part : {"ga.population = 1000000 with genome.max_genes = 100 may need ", "population 1000000 x 5 copies",
                                  "more than the 1.0 GiB this process may use"})
             EXPECT_NE(e.message().find(part), std::string::npos) << part << " in " << e.what();
     }

@@ -1,0 +1,223 @@
+// HybridSearch: islands bred in slot order, refine proposals after each island's children, one
+// evaluation batch per generation, then greedy acceptance of refinements and the migration ring.
+#include "search/hybrid_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace shapevo {
+
+namespace {
+constexpr double kDepthBias = 1.0;  ///< regrow picks every non-terminal gene alike
+}
+
+HybridSearch::HybridSearch(const Grammar& g, const HybridSettings& settings, const GaSettings& ga,
+                           const GenomeLimits& limits, std::uint64_t seed)
+    : SearchMethod(seed), grammar_(g), settings_(settings), ga_(ga), limits_(limits) {
+    resize(ga.population);
+}
+
+void HybridSearch::resize(std::size_t n) {
+    islands_ = std::max<std::size_t>(1, std::min<std::size_t>(settings_.islands, n / 2));
+    pop_.individuals.resize(n);
+    pop_.fitness.resize(n, 0.0);
+    next_.individuals.resize(n);
+    next_.fitness.resize(n);
+    order_.resize(n);
+    childOp_.resize(n + 1);
+    parentFitness_.resize(n + 1);
+    picked_.resize(n);
+    std::size_t moves = 0;
+    for (std::size_t k = 0; k < islands_; ++k) moves += refineMoves(k);
+    proposals_.resize(moves);
+    refinements_.reserve(moves);
+    chosen_.resize(n);
+    childBatchStart_.resize(islands_);
+    migrationSlots_.resize(2 * islands_);
+}
+
+void HybridSearch::restored() { resize(pop_.size()); }
+
+std::size_t HybridSearch::islandBegin(std::size_t k) const {
+    const std::size_t n = pop_.size(), base = n / islands_, extra = n % islands_;
+    return k * base + std::min(k, extra);
+}
+
+std::size_t HybridSearch::refineMoves(std::size_t k) const {
+    return std::size_t(std::llround(settings_.refine * double(islandBegin(k + 1) - islandBegin(k))));
+}
+
+std::size_t HybridSearch::islandElites(std::size_t k) const {
+    const std::size_t m = islandBegin(k + 1) - islandBegin(k);
+    const double scaled = std::round(double(ga_.elitism) * double(m) / double(pop_.size()));
+    return std::clamp<std::size_t>(std::size_t(scaled), 1, m - 1);
+}
+
+void HybridSearch::initialize(Evaluator& evaluator) {
+    startFromRandomGrowth(grammar_, limits_, ga_.initialGenesMin, ga_.initialGenesMax, evaluator);
+}
+
+bool HybridSearch::localMove(const Chromosome& x, Chromosome& y, OperatorOutcomes::Op& op) {
+    if (rng_.uniform() < settings_.refineJump) {
+        const double total = jumpWeightTotal(grammar_, x, kDepthBias, regrow_);
+        if (total > 0) {
+            const std::uint32_t v = pickJumpGene(grammar_, x, total, rng_, regrow_);
+            op = OperatorOutcomes::Regrow;
+            return regrowBelow(grammar_, x, v, y, rng_, limits_, regrow_);
+        }
+    }
+    y.words.assign(x.words.begin(), x.words.end());
+    y.genes = x.genes;
+    op = OperatorOutcomes::Alter;
+    return alter(grammar_, y, rng_);
+}
+
+OperatorOutcomes::Op HybridSearch::mutate(Chromosome& c) {
+    if (rng_.uniform() < settings_.regrow) {
+        const double total = jumpWeightTotal(grammar_, c, kDepthBias, regrow_);
+        Chromosome& y = scratchRegrow_;
+        if (total > 0 && regrowBelow(grammar_, c, pickJumpGene(grammar_, c, total, rng_, regrow_), y, rng_, limits_, regrow_)) {
+            std::swap(c, y);
+            return OperatorOutcomes::Regrow;
+        }
+    }
+    const double w[3] = {ga_.growWeight, ga_.cutWeight, ga_.alterWeight};
+    const double r = rng_.uniform() * (w[0] + w[1] + w[2]);
+    const int first = r < w[0] ? 0 : r < w[0] + w[1] ? 1 : 2;
+    // If the chosen mutation cannot apply (nothing to cut, chromosome full), try the next one.
+    for (int k = 0; k < 3; ++k) {
+        switch ((first + k) % 3) {
+        case 0: if (w[0] > 0 && grow(grammar_, c, rng_, limits_)) return OperatorOutcomes::Grow; break;
+        case 1: if (w[1] > 0 && cut(grammar_, c, rng_, scratch_)) return OperatorOutcomes::Cut; break;
+        default: if (w[2] > 0 && alter(grammar_, c, rng_)) return OperatorOutcomes::Alter; break;
+        }
+    }
+    return OperatorOutcomes::Copy;
+}
+
+void HybridSearch::breedIsland(std::size_t k) {
+    const std::size_t b = islandBegin(k), e = islandBegin(k + 1), m = e - b, elite = islandElites(k);
+    const std::span<const double> fitness(pop_.fitness.data() + b, m);
+    std::size_t* order = order_.data() + b;
+    for (std::size_t i = 0; i < m; ++i) order[i] = b + i;
+    std::sort(order, order + m, [&](std::size_t x, std::size_t y) {
+        return pop_.fitness[x] > pop_.fitness[y] || (pop_.fitness[x] == pop_.fitness[y] && x < y);
+    });
+    for (std::size_t j = 0; j < elite; ++j) {
+        next_.individuals[b + j] = pop_.individuals[order[j]];
+        next_.fitness[b + j] = pop_.fitness[order[j]];
+    }
+    wheel_.prepare(fitness);
+    for (std::size_t i = b + elite; i < e; i += 2) {
+        const std::size_t p1 = b + tournamentSelect(fitness, ga_.tournament, rng_);
+        const std::size_t p2 = b + wheel_.select(rng_);
+        picked_[p1] = picked_[p2] = 1;
+        const bool pair = i + 1 < e;
+        Chromosome& c1 = next_.individuals[i];
+        Chromosome& c2 = pair ? next_.individuals[i + 1] : scratchChild_;
+        if (rng_.uniform() < settings_.mutation) {
+            c1 = pop_.individuals[p1];
+            c2 = pop_.individuals[p2];
+            childOp_[i] = mutate(c1);
+            childOp_[i + 1] = pair ? mutate(c2) : OperatorOutcomes::Copy;
+            parentFitness_[i] = pop_.fitness[p1];
+            parentFitness_[i + 1] = pop_.fitness[p2];
+        } else {
+            const bool crossed =
+                crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_, ga_.crossoverRetries, scratch_);
+            childOp_[i] = childOp_[i + 1] = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
+            parentFitness_[i] = parentFitness_[i + 1] = std::max(pop_.fitness[p1], pop_.fitness[p2]);
+        }
+        outcomes_.parentsPicked += 2;
+    }
+    childBatchStart_[k] = batch_.size();
+    for (std::size_t i = b + elite; i < e; ++i) batch_.add(next_.individuals[i]);
+    // Refinement: refine * m local moves, dealt to the elites (already in next_[b, b + elite),
+    // best first) round robin; each elite keeps the best of its moves if that is not worse.
+    const std::size_t moves = refineMoves(k);
+    for (std::size_t r = 0; r < moves; ++r) {
+        const std::size_t j = r % elite;
+        Chromosome& y = proposals_[refinements_.size()];
+        OperatorOutcomes::Op op{};
+        if (!localMove(next_.individuals[b + j], y, op)) continue;
+        refinements_.push_back({b + j, batch_.add(y), next_.fitness[b + j]});
+    }
+}
+
+void HybridSearch::step(Evaluator& evaluator) {
+    batch_.clear();
+    refinements_.clear();
+    std::fill(picked_.begin(), picked_.end(), 0);
+    for (std::size_t k = 0; k < islands_; ++k) breedIsland(k);
+    for (std::uint8_t p : picked_) outcomes_.distinctParents += p;
+    evaluations_ += batch_.evaluate(evaluator);
+    for (std::size_t k = 0; k < islands_; ++k) {
+        const std::size_t first = islandBegin(k) + islandElites(k);
+        for (std::size_t i = first; i < islandBegin(k + 1); ++i) {
+            next_.fitness[i] = batch_.fitness(childBatchStart_[k] + (i - first));
+            outcomes_.count(childOp_[i], next_.fitness[i], parentFitness_[i]);
+        }
+    }
+    // Per elite, the best of its moves (the first among equals) replaces it if not worse.
+    for (const Refinement& ref : refinements_) chosen_[ref.slot] = -1;
+    for (std::size_t r = 0; r < refinements_.size(); ++r) {
+        const Refinement& ref = refinements_[r];
+        const double f = batch_.fitness(ref.batchIndex);
+        outcomes_.count(OperatorOutcomes::Refine, f, ref.parentFitness);
+        std::int64_t& c = chosen_[ref.slot];
+        if (f >= ref.parentFitness && (c < 0 || f > batch_.fitness(refinements_[std::size_t(c)].batchIndex)))
+            c = std::int64_t(r);
+    }
+    for (std::size_t r = 0; r < refinements_.size(); ++r) {
+        const Refinement& ref = refinements_[r];
+        if (chosen_[ref.slot] != std::int64_t(r)) continue;
+        std::swap(next_.individuals[ref.slot], proposals_[r]);
+        next_.fitness[ref.slot] = batch_.fitness(ref.batchIndex);
+    }
+    std::swap(pop_, next_);
+    ++generation_;
+    if (islands_ > 1 && settings_.migrationInterval > 0 && generation_ % settings_.migrationInterval == 0) migrate();
+    if (islands_ > 1 && settings_.restartInterval > 0 && generation_ % settings_.restartInterval == 0)
+        restartWorstIsland(evaluator);
+}
+
+void HybridSearch::restartWorstIsland(Evaluator& evaluator) {
+    // The island whose best is lowest (the last among equals) starts again from random growth.
+    std::size_t worst = 0;
+    double worstBest = 0;
+    for (std::size_t k = 0; k < islands_; ++k) {
+        const double best = *std::max_element(pop_.fitness.begin() + std::ptrdiff_t(islandBegin(k)),
+                                              pop_.fitness.begin() + std::ptrdiff_t(islandBegin(k + 1)));
+        if (k == 0 || best <= worstBest) worst = k, worstBest = best;
+    }
+    batch_.clear();
+    for (std::size_t i = islandBegin(worst); i < islandBegin(worst + 1); ++i) {
+        growRandomLength(grammar_, pop_.individuals[i], rng_, limits_, ga_.initialGenesMin, ga_.initialGenesMax);
+        batch_.add(pop_.individuals[i]);
+    }
+    evaluations_ += batch_.evaluate(evaluator);
+    for (std::size_t i = islandBegin(worst), j = 0; i < islandBegin(worst + 1); ++i, ++j) pop_.fitness[i] = batch_.fitness(j);
+}
+
+void HybridSearch::migrate() {
+    // Every island's best and worst first, then the copies: island k's best replaces island
+    // k + 1's worst (best: the lowest slot among equals; worst: the highest).
+    std::vector<std::size_t>& best = migrationSlots_;  // [0, islands) best, [islands, 2 islands) worst
+    for (std::size_t k = 0; k < islands_; ++k) {
+        std::size_t hi = islandBegin(k), lo = hi;
+        for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i) {
+            if (pop_.fitness[i] > pop_.fitness[hi]) hi = i;
+            if (pop_.fitness[i] <= pop_.fitness[lo]) lo = i;
+        }
+        best[k] = hi;
+        best[islands_ + k] = lo;
+    }
+    for (std::size_t k = 0; k < islands_; ++k) {
+        const std::size_t from = best[k], to = best[islands_ + (k + 1) % islands_];
+        pop_.individuals[to] = pop_.individuals[from];
+        pop_.fitness[to] = pop_.fitness[from];
+    }
+}
+
+}  // namespace shapevo
