@@ -114,6 +114,8 @@ TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun
         s.method = method.name;
         s.rjmcmc.delayedRejection = true;
         s.rjmcmc.annealingInterval = 2;
+        s.hybrid.migrationInterval = 3;  // the hybrid migrates and restarts on both sides of the split
+        s.hybrid.restartInterval = 4;
         expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
     }
 }
