@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "search/pair_breeding.hpp"
+
 namespace shapevo {
 
 GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits,
@@ -57,19 +59,12 @@ void GeneticAlgorithm::step(Evaluator& evaluator) {
         Chromosome& c1 = next_.individuals[k];
         const bool pair = k + 1 < n;
         Chromosome& c2 = pair ? next_.individuals[k + 1] : scratchChild_;
-        if (rng_.uniform() < settings_.mutation) {
-            c1 = pop_.individuals[p1];
-            c2 = pop_.individuals[p2];
-            childOp_[k] = mutate(c1);
-            childOp_[k + 1] = pair ? mutate(c2) : OperatorOutcomes::Copy;
-            parentFitness_[k] = pop_.fitness[p1];
-            parentFitness_[k + 1] = pop_.fitness[p2];
-        } else {
-            const bool crossed = crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_,
-                                           settings_.crossoverRetries, scratch_);
-            childOp_[k] = childOp_[k + 1] = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
-            parentFitness_[k] = parentFitness_[k + 1] = std::max(pop_.fitness[p1], pop_.fitness[p2]);
-        }
+        const BredPair b = breedPair(grammar_, pop_, p1, p2, c1, c2, pair, settings_.mutation, settings_.crossoverRetries,
+                                     limits_, rng_, scratch_, [&](Chromosome& c) { return mutate(c); });
+        childOp_[k] = b.op1;
+        childOp_[k + 1] = b.op2;
+        parentFitness_[k] = b.parent1;
+        parentFitness_[k + 1] = b.parent2;
     }
     outcomes_.parentsPicked += 2 * ((n - elite + 1) / 2);
     for (std::uint8_t p : picked_) outcomes_.distinctParents += p;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <span>
 
+#include "search/pair_breeding.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -116,19 +118,12 @@ void HybridSearch::breedIsland(std::size_t k) {
         const bool pair = i + 1 < e;
         Chromosome& c1 = next_.individuals[i];
         Chromosome& c2 = pair ? next_.individuals[i + 1] : scratchChild_;
-        if (rng_.uniform() < settings_.mutation) {
-            c1 = pop_.individuals[p1];
-            c2 = pop_.individuals[p2];
-            childOp_[i] = mutate(c1);
-            childOp_[i + 1] = pair ? mutate(c2) : OperatorOutcomes::Copy;
-            parentFitness_[i] = pop_.fitness[p1];
-            parentFitness_[i + 1] = pop_.fitness[p2];
-        } else {
-            const bool crossed =
-                crossover(grammar_, pop_.individuals[p1], pop_.individuals[p2], c1, c2, rng_, limits_, ga_.crossoverRetries, scratch_);
-            childOp_[i] = childOp_[i + 1] = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
-            parentFitness_[i] = parentFitness_[i + 1] = std::max(pop_.fitness[p1], pop_.fitness[p2]);
-        }
+        const BredPair bred = breedPair(grammar_, pop_, p1, p2, c1, c2, pair, settings_.mutation, ga_.crossoverRetries,
+                                        limits_, rng_, scratch_, [&](Chromosome& c) { return mutate(c); });
+        childOp_[i] = bred.op1;
+        childOp_[i + 1] = bred.op2;
+        parentFitness_[i] = bred.parent1;
+        parentFitness_[i + 1] = bred.parent2;
         outcomes_.parentsPicked += 2;
     }
     childBatchStart_[k] = batch_.size();

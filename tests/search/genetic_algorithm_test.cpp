@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../test_support.hpp"
+#include "spaceship_fixture.hpp"
 #include "genome/validate.hpp"
 #include "grammar/parser.hpp"
 #include "score/vdb_target_file.hpp"
@@ -12,12 +13,7 @@
 namespace shapevo {
 namespace {
 
-struct Fixture {
-    Grammar grammar = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
-    VolumeTarget target = loadVolumeTarget({{test::sourcePath("targets/spaceship-reachable.vdb"), false}});
-    VolumeFitnessSettings fitness;
-    VolumeScorer scorer{grammar, target, fitness};
-};
+using Fixture = test::SpaceshipFixture;
 
 TEST(GeneticAlgorithm, EliteKeepsTheBestAndEveryChildIsValid) {
     Fixture fx;

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "../test_support.hpp"
+#include "spaceship_fixture.hpp"
 #include "genome/validate.hpp"
 #include "grammar/parser.hpp"
 #include "score/vdb_target_file.hpp"
@@ -16,12 +17,7 @@
 namespace shapevo {
 namespace {
 
-struct Fixture {
-    Grammar grammar = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
-    VolumeTarget target = loadVolumeTarget({{test::sourcePath("targets/spaceship-reachable.vdb"), false}});
-    VolumeFitnessSettings fitness;
-    VolumeScorer scorer{grammar, target, fitness};
-};
+using Fixture = test::SpaceshipFixture;
 
 GaSettings smallGa(std::uint32_t population) {
     GaSettings ga;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../test_support.hpp"
+#include "spaceship_fixture.hpp"
 #include "function_scorer.hpp"
 #include "genome/sequential_growth.hpp"
 #include "genome/validate.hpp"
@@ -94,12 +95,7 @@ void expectResumeEqualsUninterrupted(Make make, Evaluator& evaluator, std::uint3
     }
 }
 
-struct Spaceship {
-    Grammar grammar = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
-    VolumeTarget target = loadVolumeTarget({{test::sourcePath("targets/spaceship-reachable.vdb"), false}});
-    VolumeFitnessSettings fitness;
-    VolumeScorer scorer{grammar, target, fitness};
-};
+using Spaceship = test::SpaceshipFixture;
 
 TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun) {
     Spaceship fx;

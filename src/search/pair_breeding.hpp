@@ -1,0 +1,42 @@
+// breedPair: one pair of children from two parents, as ShapeGenetics Algorithm 1 makes them —
+// with probability `mutation` copies of the parents, each mutated by `mutate`, otherwise a
+// crossover (Algorithm 2, with retries). Shared by the GA and the hybrid search, so both draw
+// from the Rng in the same order: uniform(), then the mutations or the crossover.
+#pragma once
+#include <algorithm>
+
+#include "genome/operators.hpp"
+#include "search/operator_outcomes.hpp"
+#include "search/population.hpp"
+
+namespace shapevo {
+
+/// What made each child and the fitness it is compared with (a crossover child: the better parent's).
+struct BredPair {
+    OperatorOutcomes::Op op1 = OperatorOutcomes::Copy, op2 = OperatorOutcomes::Copy;
+    double parent1 = 0, parent2 = 0;
+};
+
+/// Children of pop's p1 and p2 into c1 and c2 (c2 is discarded by the caller if !pair, and not
+/// mutated). `mutate(Chromosome&)` returns the operator it applied.
+template <class Mutate>
+BredPair breedPair(const Grammar& g, const Population& pop, std::size_t p1, std::size_t p2, Chromosome& c1,
+                   Chromosome& c2, bool pair, double mutation, int crossoverRetries, const GenomeLimits& limits,
+                   Rng& rng, GenomeScratch& scratch, Mutate&& mutate) {
+    BredPair b;
+    if (rng.uniform() < mutation) {
+        c1 = pop.individuals[p1];
+        c2 = pop.individuals[p2];
+        b.op1 = mutate(c1);
+        b.op2 = pair ? mutate(c2) : OperatorOutcomes::Copy;
+        b.parent1 = pop.fitness[p1];
+        b.parent2 = pop.fitness[p2];
+    } else {
+        const bool crossed = crossover(g, pop.individuals[p1], pop.individuals[p2], c1, c2, rng, limits, crossoverRetries, scratch);
+        b.op1 = b.op2 = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
+        b.parent1 = b.parent2 = std::max(pop.fitness[p1], pop.fitness[p2]);
+    }
+    return b;
+}
+
+}  // namespace shapevo

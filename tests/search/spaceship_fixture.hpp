@@ -1,0 +1,18 @@
+// SpaceshipFixture: the shipped spaceship grammar scored against its reachable volume target, the
+// scene the search tests run their methods on.
+#pragma once
+#include "../test_support.hpp"
+#include "grammar/parser.hpp"
+#include "score/vdb_target_file.hpp"
+#include "score/volume_scorer.hpp"
+
+namespace shapevo::test {
+
+struct SpaceshipFixture {
+    Grammar grammar = loadGrammar(sourcePath("grammars/spaceship.grammar"));
+    VolumeTarget target = loadVolumeTarget({{sourcePath("targets/spaceship-reachable.vdb"), false}});
+    VolumeFitnessSettings fitness;
+    VolumeScorer scorer{grammar, target, fitness};
+};
+
+}  // namespace shapevo::test
