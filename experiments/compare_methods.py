@@ -169,9 +169,10 @@ def compare_methods(args, runner, scene, config, out, report):
 
     seeds = range(1, args.seeds + 1)
     # 1. SMC/SOSMC with the paper's particles (short), then a calibration pass for the fill size.
-    runner.run_all([job(m, s, pops[m]) for s in seeds for m in ("smc", "sosmc")])
-    methods = [DEFAULT, "ga", "smc", "sosmc", "rjmcmc"]
-    for m in ("smc", "sosmc"):
+    smcs = [m for m in ("smc", "sosmc") if m in args.methods]
+    runner.run_all([job(m, s, pops[m]) for s in seeds for m in smcs])
+    methods = [m for m in (DEFAULT, "ga", "smc", "sosmc", "rjmcmc") if m in args.methods]
+    for m in smcs:
         t = statistics.fmean(pass_seconds(read_curve(os.path.join(out, scene, m, f"seed{s}"))) for s in seeds)
         if 2 * t > FILL_SHARE * args.budget:
             report.append(f"- {m}: one pass with {pops[m]} particles takes {t:.2f} s (mean of {args.seeds} seeds): "
@@ -362,12 +363,15 @@ def main():
     ap.add_argument("--budget", type=float, default=40, help="wall seconds per method run")
     ap.add_argument("--island-seconds", type=float, default=30, help="about how long the 2P run takes on one thread")
     ap.add_argument("--no-islands", action="store_true")
+    ap.add_argument("--methods", default="hybrid,ga,smc,sosmc,rjmcmc",
+                    help="a subset to run (the default, hybrid, always runs; smc and sosmc bring their -fill variants)")
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "shapevo"))
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "compare-methods"), help="runs, CSVs, results.md")
     ap.add_argument("--docs", default=os.path.join(ROOT, "docs"), help="where the PNG plots go")
     ap.add_argument("--readme", help="also write the tables and verdicts into this file, between the lines "
                     "'<!-- compare_methods: begin -->' and '<!-- compare_methods: end -->' (README.md)")
     args = ap.parse_args()
+    args.methods = set(args.methods.split(",")) | {DEFAULT}
     try:
         import matplotlib  # noqa: F401  (checked first: the plots come after ~25 minutes of runs)
     except ImportError:
