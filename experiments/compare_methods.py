@@ -243,8 +243,10 @@ def compare_methods(args, runner, scene, config, out, report):
                   f"({best_base} {fmt(finals[best_base])}, floor {floor:.4f}).")
     plot(os.path.join(args.docs, f"method-comparison-{scene}.png"), f"{scene}: best fitness, mean ± std of {args.seeds} seeds",
          "seconds (log)", {m: [(t, stats_at(m, t)) for t in grid] for m in methods}, pops)
-    # The same race by evaluations: every method at the smallest evaluation count all GA runs reached.
-    n = min(curves["ga", s][-1][1] for s in seeds)
+    # The same race by evaluations: every method at the smallest evaluation count all GA runs (or,
+    # without the GA, the default's runs) reached.
+    ref = "ga" if "ga" in methods else DEFAULT
+    n = min(curves[ref, s][-1][1] for s in seeds)
 
     def best_at_evaluations(rows):
         if rows[-1][1] < n and rows[-1][0] >= args.budget:
@@ -255,10 +257,10 @@ def compare_methods(args, runner, scene, config, out, report):
     hits = {m: [best_at_evaluations(curves[m, s]) for s in seeds] for m in methods}
     by_evals = {m: mean_std(v) if None not in v else None for m, v in hits.items()}
     report.append("")
-    report.append(f"at equal evaluations ({n}, where every GA run ended; a finished SMC pass keeps its result): " +
+    report.append(f"at equal evaluations ({n}, where every {ref} run ended; a finished SMC pass keeps its result): " +
                   ", ".join(f"{m} {fmt(by_evals[m])}" for m in methods))
     # For the island comparison: the evaluations the GA had reached after --island-seconds.
-    reached = [at(curves["ga", s], 0, args.island_seconds) for s in seeds]
+    reached = [at(curves[ref, s], 0, args.island_seconds) for s in seeds]
     return statistics.median(r[1] for r in reached if r), cfg
 
 
