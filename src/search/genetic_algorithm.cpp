@@ -24,21 +24,6 @@ void GeneticAlgorithm::initialize(Evaluator& evaluator) {
     startFromRandomGrowth(grammar_, limits_, settings_.initialGenesMin, settings_.initialGenesMax, evaluator);
 }
 
-OperatorOutcomes::Op GeneticAlgorithm::mutate(Chromosome& c) {
-    const double total = settings_.growWeight + settings_.cutWeight + settings_.alterWeight;
-    const double r = rng_.uniform() * total;
-    const int first = r < settings_.growWeight ? 0 : r < settings_.growWeight + settings_.cutWeight ? 1 : 2;
-    // If the chosen mutation cannot apply (nothing to cut, chromosome full), try the next one.
-    for (int k = 0; k < 3; ++k) {
-        switch ((first + k) % 3) {
-        case 0: if (settings_.growWeight > 0 && grow(grammar_, c, rng_, limits_)) return OperatorOutcomes::Grow; break;
-        case 1: if (settings_.cutWeight > 0 && cut(grammar_, c, rng_, scratch_)) return OperatorOutcomes::Cut; break;
-        default: if (settings_.alterWeight > 0 && alter(grammar_, c, rng_)) return OperatorOutcomes::Alter; break;
-        }
-    }
-    return OperatorOutcomes::Copy;
-}
-
 void GeneticAlgorithm::step(Evaluator& evaluator) {
     const std::size_t n = pop_.size(), elite = settings_.elitism;
     for (std::size_t i = 0; i < n; ++i) order_[i] = i;
@@ -60,7 +45,7 @@ void GeneticAlgorithm::step(Evaluator& evaluator) {
         const bool pair = k + 1 < n;
         Chromosome& c2 = pair ? next_.individuals[k + 1] : scratchChild_;
         const BredPair b = breedPair(grammar_, pop_, p1, p2, c1, c2, pair, settings_.mutation, settings_.crossoverRetries,
-                                     limits_, rng_, scratch_, [&](Chromosome& c) { return mutate(c); });
+                                     limits_, rng_, scratch_, [&](Chromosome& c) { return mutateByWeight(grammar_, c, rng_, limits_, scratch_, settings_); });
         childOp_[k] = b.op1;
         childOp_[k + 1] = b.op2;
         parentFitness_[k] = b.parent1;

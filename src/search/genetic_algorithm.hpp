@@ -25,7 +25,6 @@ public:
     const OperatorOutcomes* operatorOutcomes() const override { return &outcomes_; }
 
 private:
-    OperatorOutcomes::Op mutate(Chromosome& c);
 
     const Grammar& grammar_;
     GaSettings settings_;

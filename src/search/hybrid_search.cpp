@@ -60,42 +60,29 @@ void HybridSearch::initialize(Evaluator& evaluator) {
     startFromRandomGrowth(grammar_, limits_, ga_.initialGenesMin, ga_.initialGenesMax, evaluator);
 }
 
-bool HybridSearch::localMove(const Chromosome& x, Chromosome& y, OperatorOutcomes::Op& op) {
+bool HybridSearch::regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y) {
+    return regrowBelow(grammar_, x, pickJumpGene(grammar_, x, jumpWeight, rng_, regrow_), y, rng_, limits_, regrow_);
+}
+
+bool HybridSearch::localMove(const Chromosome& x, Chromosome& y) {
     if (rng_.uniform() < settings_.refineJump) {
         const double total = jumpWeightTotal(grammar_, x, kDepthBias, regrow_);
-        if (total > 0) {
-            const std::uint32_t v = pickJumpGene(grammar_, x, total, rng_, regrow_);
-            op = OperatorOutcomes::Regrow;
-            return regrowBelow(grammar_, x, v, y, rng_, limits_, regrow_);
-        }
+        if (total > 0) return regrowFrom(x, total, y);
     }
     y.words.assign(x.words.begin(), x.words.end());
     y.genes = x.genes;
-    op = OperatorOutcomes::Alter;
     return alter(grammar_, y, rng_);
 }
 
 OperatorOutcomes::Op HybridSearch::mutate(Chromosome& c) {
     if (rng_.uniform() < settings_.regrow) {
         const double total = jumpWeightTotal(grammar_, c, kDepthBias, regrow_);
-        Chromosome& y = scratchRegrow_;
-        if (total > 0 && regrowBelow(grammar_, c, pickJumpGene(grammar_, c, total, rng_, regrow_), y, rng_, limits_, regrow_)) {
-            std::swap(c, y);
+        if (total > 0 && regrowFrom(c, total, scratchRegrow_)) {
+            std::swap(c, scratchRegrow_);
             return OperatorOutcomes::Regrow;
         }
     }
-    const double w[3] = {ga_.growWeight, ga_.cutWeight, ga_.alterWeight};
-    const double r = rng_.uniform() * (w[0] + w[1] + w[2]);
-    const int first = r < w[0] ? 0 : r < w[0] + w[1] ? 1 : 2;
-    // If the chosen mutation cannot apply (nothing to cut, chromosome full), try the next one.
-    for (int k = 0; k < 3; ++k) {
-        switch ((first + k) % 3) {
-        case 0: if (w[0] > 0 && grow(grammar_, c, rng_, limits_)) return OperatorOutcomes::Grow; break;
-        case 1: if (w[1] > 0 && cut(grammar_, c, rng_, scratch_)) return OperatorOutcomes::Cut; break;
-        default: if (w[2] > 0 && alter(grammar_, c, rng_)) return OperatorOutcomes::Alter; break;
-        }
-    }
-    return OperatorOutcomes::Copy;
+    return mutateByWeight(grammar_, c, rng_, limits_, scratch_, ga_);
 }
 
 void HybridSearch::breedIsland(std::size_t k) {
@@ -134,8 +121,7 @@ void HybridSearch::breedIsland(std::size_t k) {
     for (std::size_t r = 0; r < moves; ++r) {
         const std::size_t j = r % elite;
         Chromosome& y = proposals_[refinements_.size()];
-        OperatorOutcomes::Op op{};
-        if (!localMove(next_.individuals[b + j], y, op)) continue;
+        if (!localMove(next_.individuals[b + j], y)) continue;
         refinements_.push_back({b + j, batch_.add(y), next_.fitness[b + j]});
     }
 }

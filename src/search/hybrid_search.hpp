@@ -58,7 +58,10 @@ private:
     void resize(std::size_t n);
     OperatorOutcomes::Op mutate(Chromosome& c);
     /// y = a local move of x (regrow or alter); false if none applies.
-    bool localMove(const Chromosome& x, Chromosome& y, OperatorOutcomes::Op& op);
+    bool localMove(const Chromosome& x, Chromosome& y);
+    /// y = x with the subtree of a non-terminal gene (picked by weight from jumpWeight, the
+    /// total jumpWeightTotal gave) regrown; false if that would pass max_genes.
+    bool regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y);
     void breedIsland(std::size_t k);
     void migrate();
     void restartWorstIsland(Evaluator& evaluator);

@@ -1,15 +1,33 @@
-// breedPair: one pair of children from two parents, as ShapeGenetics Algorithm 1 makes them —
-// with probability `mutation` copies of the parents, each mutated by `mutate`, otherwise a
-// crossover (Algorithm 2, with retries). Shared by the GA and the hybrid search, so both draw
-// from the Rng in the same order: uniform(), then the mutations or the crossover.
+// Breeding as ShapeGenetics Algorithm 1 does it, shared by the GA and the hybrid search so both
+// draw from the Rng in the same order. breedPair: one pair of children from two parents — with
+// probability `mutation` copies of the parents, each mutated by `mutate`, otherwise a crossover
+// (Algorithm 2, with retries). mutateByWeight: one of grow, cut and alter picked by [ga]'s weights.
 #pragma once
 #include <algorithm>
 
 #include "genome/operators.hpp"
 #include "search/operator_outcomes.hpp"
 #include "search/population.hpp"
+#include "search/search_settings.hpp"
 
 namespace shapevo {
+
+/// Grow, cut or alter `c`, picked by ga's weights (one uniform draw); if the pick cannot apply
+/// (nothing to cut, chromosome full) the next one in that order is tried. Returns the operator
+/// applied, Copy if none could.
+inline OperatorOutcomes::Op mutateByWeight(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits,
+                                           GenomeScratch& scratch, const GaSettings& ga) {
+    const double r = rng.uniform() * (ga.growWeight + ga.cutWeight + ga.alterWeight);
+    const int first = r < ga.growWeight ? 0 : r < ga.growWeight + ga.cutWeight ? 1 : 2;
+    for (int k = 0; k < 3; ++k) {
+        switch ((first + k) % 3) {
+        case 0: if (ga.growWeight > 0 && grow(g, c, rng, limits)) return OperatorOutcomes::Grow; break;
+        case 1: if (ga.cutWeight > 0 && cut(g, c, rng, scratch)) return OperatorOutcomes::Cut; break;
+        default: if (ga.alterWeight > 0 && alter(g, c, rng)) return OperatorOutcomes::Alter; break;
+        }
+    }
+    return OperatorOutcomes::Copy;
+}
 
 /// What made each child and the fitness it is compared with (a crossover child: the better parent's).
 struct BredPair {
