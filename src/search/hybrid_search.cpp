@@ -6,6 +6,7 @@
 #include <cmath>
 #include <span>
 
+#include "genome/nudge.hpp"
 #include "search/pair_breeding.hpp"
 
 namespace shapevo {
@@ -71,6 +72,7 @@ bool HybridSearch::localMove(const Chromosome& x, Chromosome& y) {
     }
     y.words.assign(x.words.begin(), x.words.end());
     y.genes = x.genes;
+    if (rng_.uniform() < settings_.refineNudge) return nudge(grammar_, y, rng_);
     return alter(grammar_, y, rng_);
 }
 

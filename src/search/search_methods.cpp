@@ -40,6 +40,7 @@ void readHybrid(SectionReader& r, SearchSettings& s) {
     r.number("hybrid_regrow", h.regrow, 0, 1);
     r.number("hybrid_refine", h.refine, 0, 1);
     r.number("hybrid_refine_jump", h.refineJump, 0, 1);
+    r.number("hybrid_refine_nudge", h.refineNudge, 0, 1);
 }
 
 std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const GaSettings& ga, const Grammar& g,

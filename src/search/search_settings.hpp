@@ -51,7 +51,8 @@ struct HybridSettings {
     double mutation = 0.6;                ///< probability that a pair is mutated, not crossed
     double regrow = 0.25;                 ///< share of mutations that regrow a subtree (the rest: [ga]'s weights)
     double refine = 0.5;                  ///< local moves of elites per generation, per island member
-    double refineJump = 0.5;              ///< probability that a local move is a regrow (else an alter)
+    double refineJump = 0.5;              ///< probability that a local move is a regrow
+    double refineNudge = 0.5;             ///< probability that a local move that is not a regrow is a nudge (else an alter)
 };
 
 struct SearchSettings {
