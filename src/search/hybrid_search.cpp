@@ -65,14 +65,14 @@ bool HybridSearch::regrowFrom(const Chromosome& x, double jumpWeight, Chromosome
     return regrowBelow(grammar_, x, pickJumpGene(grammar_, x, jumpWeight, rng_, regrow_), y, rng_, limits_, regrow_);
 }
 
-bool HybridSearch::localMove(const Chromosome& x, Chromosome& y) {
+bool HybridSearch::localMove(const Chromosome& x, Chromosome& y, double nudgeShare) {
     if (rng_.uniform() < settings_.refineJump) {
         const double total = jumpWeightTotal(grammar_, x, kDepthBias, regrow_);
         if (total > 0) return regrowFrom(x, total, y);
     }
     y.words.assign(x.words.begin(), x.words.end());
     y.genes = x.genes;
-    if (rng_.uniform() < settings_.refineNudge) return nudge(grammar_, y, rng_);
+    if (rng_.uniform() < nudgeShare) return nudge(grammar_, y, rng_);
     return alter(grammar_, y, rng_);
 }
 
@@ -120,10 +120,11 @@ void HybridSearch::breedIsland(std::size_t k) {
     // Refinement: refine * m local moves, dealt to the elites (already in next_[b, b + elite),
     // best first) round robin; each elite keeps the best of its moves if that is not worse.
     const std::size_t moves = refineMoves(k);
+    const double nudgeShare = k % 2 == 1 ? settings_.refineNudge : 0.0;  // even islands alter, odd ones nudge
     for (std::size_t r = 0; r < moves; ++r) {
         const std::size_t j = r % elite;
         Chromosome& y = proposals_[refinements_.size()];
-        if (!localMove(next_.individuals[b + j], y)) continue;
+        if (!localMove(next_.individuals[b + j], y, nudgeShare)) continue;
         refinements_.push_back({b + j, batch_.add(y), next_.fitness[b + j]});
     }
 }

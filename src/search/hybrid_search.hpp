@@ -10,9 +10,10 @@
 //   mutation is a regrow (RJMCMC's jump: a non-terminal's subtree cut and grown anew,
 //   genome/regrow.hpp) with probability `regrow`, else grow, cut or alter by [ga]'s weights.
 // - Elite refinement: each generation an island of m members makes refine x m local moves (a
-//   regrow with probability `refine_jump`, else an alter) dealt to its elites round robin, best
-//   first; each elite is replaced by the best of its moves if that is not worse — greedy chains
-//   on the best models.
+//   regrow with probability `refine_jump`, else on odd islands a nudge (genome/nudge.hpp: one
+//   parameter moved a small step) with probability `refine_nudge`, else an alter) dealt to its
+//   elites round robin, best first; each elite is replaced by the best of its moves if that is
+//   not worse — greedy chains on the best models.
 // - Restarts: every `restart_interval` generations the island whose best is lowest starts again
 //   from random growth (a basin none of the islands has found may be where the target is).
 //
@@ -58,7 +59,7 @@ private:
     void resize(std::size_t n);
     OperatorOutcomes::Op mutate(Chromosome& c);
     /// y = a local move of x (regrow or alter); false if none applies.
-    bool localMove(const Chromosome& x, Chromosome& y);
+    bool localMove(const Chromosome& x, Chromosome& y, double nudgeShare);
     /// y = x with the subtree of a non-terminal gene (picked by weight from jumpWeight, the
     /// total jumpWeightTotal gave) regrown; false if that would pass max_genes.
     bool regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y);

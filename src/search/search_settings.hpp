@@ -52,7 +52,8 @@ struct HybridSettings {
     double regrow = 0.25;                 ///< share of mutations that regrow a subtree (the rest: [ga]'s weights)
     double refine = 0.5;                  ///< local moves of elites per generation, per island member
     double refineJump = 0.5;              ///< probability that a local move is a regrow
-    double refineNudge = 0.5;             ///< probability that a local move that is not a regrow is a nudge (else an alter)
+    double refineNudge = 1.0;             ///< odd islands: probability that a local move that is not a regrow is a
+                                          ///< nudge (else an alter; even islands always alter)
 };
 
 struct SearchSettings {

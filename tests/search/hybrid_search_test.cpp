@@ -135,6 +135,32 @@ TEST(HybridSearch, ARestartRegrowsTheWorstIslandOnly) {
     EXPECT_LE(same, 1u) << "the worst island starts again from random growth";
 }
 
+/// The population after `generations` steps of a hybrid run on the spaceship.
+Population hybridRun(const HybridSettings& s, std::uint32_t population, int generations) {
+    Fixture fx;
+    Evaluator ev(fx.scorer, 1);
+    HybridSearch h(fx.grammar, s, smallGa(population), GenomeLimits{60}, 7);
+    h.initialize(ev);
+    for (int gen = 0; gen < generations; ++gen) h.step(ev);
+    return h.population();
+}
+
+TEST(HybridSearch, NudgesRefineTheOddIslandsOnlyAndAltersTheEvenOnes) {
+    HybridSettings s;
+    s.refine = 1.0;
+    s.refineJump = 0.0;  // every local move is an alter or a nudge
+    for (std::uint32_t islands : {1u, 2u}) {
+        s.islands = islands;
+        s.refineNudge = 0.0;
+        const Population alters = hybridRun(s, 24, 8);
+        s.refineNudge = 1.0;
+        const Population nudges = hybridRun(s, 24, 8);
+        const bool same = alters.individuals == nudges.individuals && alters.fitness == nudges.fitness;
+        // One island (island 0, even): the key changes nothing. Two: island 1 nudges.
+        EXPECT_EQ(same, islands == 1) << islands << " islands";
+    }
+}
+
 TEST(HybridSearch, OneAndTwoThreadsGiveTheSameRun) {
     Fixture fx;
     HybridSettings s;
