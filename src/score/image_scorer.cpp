@@ -8,7 +8,8 @@ namespace shapevo {
 
 void ImageScorer::drawCached(Workspace& w) const {
     drawThroughCache(
-        *w.cache, w.geometry.primitives, w.hashes, w.spans,
+        *w.cache, w.geometry.primitives, w.probes, w.spans,
+        [](const Primitive&) { return false; },  // every kind's silhouette is worth keeping
         [&](const PrimitiveCache<RowSpan>::Found& found) { w.raster.replay(found.records); },
         [&](const Primitive& p, std::vector<RowSpan>& spans) -> std::uint64_t {
             w.raster.addRecorded(p, w.geometry.meshes, spans);

@@ -28,7 +28,7 @@ public:
         std::optional<PrimitiveCache<RowSpan>> cache;
         std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache
-        std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
+        std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that

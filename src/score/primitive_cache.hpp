@@ -216,29 +216,40 @@ private:
     Stats stats_;
 };
 
-/// Draw every primitive through `cache`: `replay(found)` for one stored before; otherwise
-/// `compute(p, records)` draws it, appending what it wrote to `records` (cleared first), and
-/// returns the number to keep with them (Found::extra). `hashes` and `records` are scratch space
-/// kept between calls (no allocation once warm).
-template <class Record, class Replay, class Compute>
+/// One primitive on its way through the cache: its index in the model and its key's hash.
+struct CacheProbe {
+    std::uint32_t index;
+    std::uint64_t hash;
+};
+
+/// Draw every primitive through `cache`: `drawDirect(p)` first, which draws a primitive that is
+/// cheaper to draw than to look up and returns true (such primitives never touch the cache);
+/// then `replay(found)` for one stored before; otherwise `compute(p, records)` draws it,
+/// appending what it wrote to `records` (cleared first), and returns the number to keep with them
+/// (Found::extra). Drawing is order-independent (OR of rows), so the three may interleave.
+/// `probes` and `records` are scratch space kept between calls (no allocation once warm).
+template <class Record, class DrawDirect, class Replay, class Compute>
 void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive>& primitives,
-                      std::vector<std::uint64_t>& hashes, std::vector<Record>& records, Replay&& replay,
-                      Compute&& compute) {
-    hashes.resize(primitives.size());
+                      std::vector<CacheProbe>& probes, std::vector<Record>& records, DrawDirect&& drawDirect,
+                      Replay&& replay, Compute&& compute) {
+    probes.clear();
     for (std::size_t i = 0; i < primitives.size(); ++i) {  // the lookups wait on memory: ask for it all first
-        hashes[i] = PrimitiveKey(primitives[i]).hash();
-        cache.prefetch(hashes[i]);
+        if (drawDirect(primitives[i])) continue;
+        const std::uint64_t h = PrimitiveKey(primitives[i]).hash();
+        cache.prefetch(h);
+        probes.push_back({std::uint32_t(i), h});
     }
     typename PrimitiveCache<Record>::Found found;
-    for (std::size_t i = 0; i < primitives.size(); ++i) {
-        const PrimitiveKey key(primitives[i]);
-        if (cache.find(key, hashes[i], found)) {
+    for (const CacheProbe& probe : probes) {
+        const Primitive& p = primitives[probe.index];
+        const PrimitiveKey key(p);
+        if (cache.find(key, probe.hash, found)) {
             replay(found);
             continue;
         }
         records.clear();
-        const std::uint64_t extra = compute(primitives[i], records);
-        cache.store(key, hashes[i], records, extra);
+        const std::uint64_t extra = compute(p, records);
+        cache.store(key, probe.hash, records, extra);
     }
 }
 

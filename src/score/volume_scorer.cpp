@@ -8,7 +8,12 @@ namespace shapevo {
 VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
     VoxelCounts counts;
     drawThroughCache(
-        *w.cache, w.geometry.primitives, w.hashes, w.runs,
+        *w.cache, w.geometry.primitives, w.probes, w.runs,
+        [&](const Primitive& p) {
+            if (!Voxelizer::drawsAsFastAsReplay(p)) return false;
+            w.voxelizer.add(p, w.geometry.meshes, counts);
+            return true;
+        },
         [&](const PrimitiveCache<VoxelRun>::Found& found) {
             w.voxelizer.replay(found.records);
             counts.outside += found.extra;  // voxel centres outside the grid count once per primitive

@@ -24,7 +24,7 @@ public:
         std::optional<PrimitiveCache<VoxelRun>> cache;
         std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
         std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
-        std::vector<std::uint64_t> hashes;  ///< the primitives' key hashes (looked up after prefetching)
+        std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
     };
 
     VolumeScorer(const Grammar& g, const VolumeTarget& target, const VolumeFitnessSettings& settings)

@@ -88,6 +88,10 @@ void Voxelizer::addRecorded(const Primitive& p, const std::vector<MeshShape>* me
     recording_ = nullptr;
 }
 
+bool Voxelizer::drawsAsFastAsReplay(const Primitive& p) {
+    return p.kind == PrimitiveKind::Box && axisAligned(BoxFrame::from(p));
+}
+
 void Voxelizer::replay(std::span<const VoxelRun> runs) {
     for (const VoxelRun& r : runs) markRows(r.z, r.y0, r.y1, r.lo, r.hi);
 }

@@ -48,6 +48,10 @@ public:
     void add(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts);
     /// add(), appending every run of rows it writes to `runs` (replay() writes them again).
     void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, VoxelCounts& counts, std::vector<VoxelRun>& runs);
+    /// True for a primitive whose rows cost no more to compute than to replay from a cache (an
+    /// axis-aligned box: one box of index ranges, one markRows per slice either way), so
+    /// incremental scoring draws it directly instead of hashing and looking it up.
+    static bool drawsAsFastAsReplay(const Primitive& p);
     /// Write runs that addRecorded() gave: the same voxels (and overlaps) as adding the primitive.
     void replay(std::span<const VoxelRun> runs);
     /// Count what was added against `target` (same grid) and clear; `counts` brings what add()

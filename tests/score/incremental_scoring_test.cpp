@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "genome/operators.hpp"
@@ -276,6 +277,48 @@ TEST(IncrementalScoring, VolumeScorerGivesTheSameCountsWithACacheAndItsCheckCatc
     const Primitive& lying = geometry.primitives[0];
     f.cache->store(PrimitiveKey(lying), PrimitiveKey(lying).hash(), {}, 0);
     EXPECT_THROW(cached.fitness(models.back(), f), IncrementalMismatch);
+}
+
+TEST(IncrementalScoring, AxisAlignedBoxesAreDrawnDirectlyAndNeverTouchTheCache) {
+    // Regression: looking up axis-aligned boxes cost more than drawing them (the spaceship ran
+    // 20 % slower with the cache on). They are drawn directly now, with the same counts; a
+    // rotated box still goes through the cache.
+    Primitive box{};
+    box.kind = PrimitiveKind::Box;
+    box.half[0] = box.half[1] = box.half[2] = 0.5f;
+    for (int k = 0; k < 3; ++k) box.axes[k][k] = 1.0f;
+    EXPECT_TRUE(Voxelizer::drawsAsFastAsReplay(box));
+    Primitive turned = box;
+    turned.axes[0][0] = turned.axes[1][1] = 0.6f, turned.axes[0][1] = 0.8f, turned.axes[1][0] = -0.8f;
+    EXPECT_FALSE(Voxelizer::drawsAsFastAsReplay(turned));
+    Primitive cylinder = box;
+    cylinder.kind = PrimitiveKind::Cylinder;
+    EXPECT_FALSE(Voxelizer::drawsAsFastAsReplay(cylinder));
+
+    for (const bool rotated : {false, true}) {
+        const std::string text = std::string("start B\nrule B {\n  param s = uniform((0.5, 0.5, 0.5), (1.5, 1.5, 1.5))\n") +
+                                 (rotated ? "  rotate y 30\n" : "") +
+                                 "  scale s\n  translate (0, 0, parent.size.z * 0.6)\n  box\n  child B prob 0.7 max 2\n}\n";
+        const Grammar g = parseGrammar(text, "boxes.grammar");
+        GridSpec grid;
+        grid.origin = {-4.0, -4.0, -2.0};
+        grid.voxelSize = 0.1;
+        grid.nx = 80, grid.ny = 80, grid.nz = 80;
+        Rng rng(3);
+        const VolumeTarget target = test::randomTarget(grid, rng);
+        VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
+        cached.setIncremental(4 << 20, true);  // checking: a difference throws
+        auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
+        for (const Chromosome& model : treesAndChildren(g, 400)) {
+            VoxelCounts a, b;
+            ASSERT_EQ(full.fitness(model, static_cast<VolumeScorer::Workspace&>(*wf), &a),
+                      cached.fitness(model, static_cast<VolumeScorer::Workspace&>(*wc), &b));
+            ASSERT_EQ(withoutWork(a), withoutWork(b));
+        }
+        const auto& stats = static_cast<VolumeScorer::Workspace&>(*wc).cache->stats();
+        if (rotated) EXPECT_GT(stats.hits + stats.misses, 1000u) << "rotated boxes are looked up";
+        else EXPECT_EQ(stats.hits + stats.misses, 0u) << "axis-aligned boxes are drawn directly";
+    }
 }
 
 }  // namespace
