@@ -10,10 +10,10 @@ void ImageScorer::drawCached(Workspace& w) const {
     drawThroughCache(
         *w.cache, w.geometry.primitives, w.probes, w.spans,
         [](const Primitive&) { return false; },  // every kind's silhouette is worth keeping
-        [&](const PrimitiveCache<RowSpan>::Found& found) { w.raster.replay(found.records); },
+        [&](const PrimitiveCache<RowSpan>::Found& found) { w.raster.replay(found.records, found.extra); },
         [&](const Primitive& p, std::vector<RowSpan>& spans) -> std::uint64_t {
             w.raster.addRecorded(p, w.geometry.meshes, spans);
-            return 0;
+            return SilhouetteRaster::boundsOf(spans);  // kept beside the spans: replay needs no per-span bookkeeping
         });
     if (w.cache->full()) noteCacheFull();
 }

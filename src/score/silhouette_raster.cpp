@@ -87,12 +87,21 @@ void SilhouetteRaster::addRecorded(const Primitive& p, const std::vector<MeshSha
     spans.erase(out, spans.end());
 }
 
-void SilhouetteRaster::replay(std::span<const RowSpan> spans) {
+std::uint64_t SilhouetteRaster::boundsOf(std::span<const RowSpan> spans) {
+    if (spans.empty()) return 0;
+    int y0 = spans[0].y, y1 = y0, w0 = spans[0].lo >> 6, w1 = spans[0].hi >> 6;
     for (const RowSpan& r : spans) {
-        markRow(r.y, r.lo, r.hi);
-        yMin_ = std::min(yMin_, int(r.y)), yMax_ = std::max(yMax_, int(r.y));
-        wordMin_ = std::min(wordMin_, int(r.lo >> 6)), wordMax_ = std::max(wordMax_, int(r.hi >> 6));
+        y0 = std::min(y0, int(r.y)), y1 = std::max(y1, int(r.y));
+        w0 = std::min(w0, int(r.lo >> 6)), w1 = std::max(w1, int(r.hi >> 6));
     }
+    return std::uint64_t(y0) | std::uint64_t(y1) << 16 | std::uint64_t(w0) << 32 | std::uint64_t(w1) << 48;
+}
+
+void SilhouetteRaster::replay(std::span<const RowSpan> spans, std::uint64_t bounds) {
+    if (spans.empty()) return;
+    for (const RowSpan& r : spans) markRow(r.y, r.lo, r.hi);
+    yMin_ = std::min(yMin_, int(bounds & 0xffff)), yMax_ = std::max(yMax_, int(bounds >> 16 & 0xffff));
+    wordMin_ = std::min(wordMin_, int(bounds >> 32 & 0xffff)), wordMax_ = std::max(wordMax_, int(bounds >> 48));
     rows_ += spans.size();
 }
 

@@ -53,7 +53,13 @@ public:
     /// drawn, and append every row interval it draws to `spans` (replay() draws them again).
     void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, std::vector<RowSpan>& spans);
     /// Draw row intervals that addRecorded() gave: the same pixels as drawing the primitive.
-    void replay(std::span<const RowSpan> spans);
+    void replay(std::span<const RowSpan> spans) { replay(spans, boundsOf(spans)); }
+    /// replay() with the rectangle of rows and words the spans touch given (`bounds` =
+    /// boundsOf(spans), kept beside them in the cache), so no span pays for bookkeeping.
+    void replay(std::span<const RowSpan> spans, std::uint64_t bounds);
+    /// The rows and 64-pixel words `spans` touch, packed in one number (16 bits each: pictures
+    /// are at most 16,384 pixels a side); 0 for no spans.
+    static std::uint64_t boundsOf(std::span<const RowSpan> spans);
     /// Draw one convex polygon of positive area given as its hull (counter-clockwise, no repeated
     /// points, every turn left or straight; fixed point).
     void fillConvex(std::span<const FixedPoint> hull);
