@@ -8,12 +8,14 @@ namespace shapevo {
 
 void ImageScorer::drawCached(Workspace& w) const {
     drawThroughCache(
-        *w.cache, w.geometry.primitives, w.probes, w.spans,
+        *w.cache, w.geometry.primitives, w.probes, w.words,
         [](const Primitive&) { return false; },  // every kind's silhouette is worth keeping
-        [&](const PrimitiveCache<RowSpan>::Found& found) { w.raster.replay(found.records, found.extra); },
-        [&](const Primitive& p, std::vector<RowSpan>& spans) -> std::uint64_t {
-            w.raster.addRecorded(p, w.geometry.meshes, spans);
-            return SilhouetteRaster::boundsOf(spans);  // kept beside the spans: replay needs no per-span bookkeeping
+        [&](const PrimitiveCache<WordMask>::Found& found) { w.raster.replay(found.records, found.extra); },
+        [&](const Primitive& p, std::vector<WordMask>& words) -> std::uint64_t {
+            w.spans.clear();
+            w.raster.addRecorded(p, w.geometry.meshes, w.spans);
+            w.raster.wordMasks(w.spans, words);
+            return SilhouetteRaster::boundsOf(w.spans);  // kept beside the words: replay needs no per-word bookkeeping
         });
     if (w.cache->full()) noteCacheFull();
 }

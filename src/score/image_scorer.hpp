@@ -25,9 +25,10 @@ public:
             if (cacheBytes > 0) cache.emplace(cacheBytes);
         }
         SilhouetteRaster raster;
-        std::optional<PrimitiveCache<RowSpan>> cache;
+        std::optional<PrimitiveCache<WordMask>> cache;
         std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
-        std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache
+        std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache as...
+        std::vector<WordMask> words;  ///< ...the words they set
         std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
     };
 

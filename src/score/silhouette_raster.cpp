@@ -97,12 +97,35 @@ std::uint64_t SilhouetteRaster::boundsOf(std::span<const RowSpan> spans) {
     return std::uint64_t(y0) | std::uint64_t(y1) << 16 | std::uint64_t(w0) << 32 | std::uint64_t(w1) << 48;
 }
 
-void SilhouetteRaster::replay(std::span<const RowSpan> spans, std::uint64_t bounds) {
-    if (spans.empty()) return;
-    for (const RowSpan& r : spans) markRow(r.y, r.lo, r.hi);
+void SilhouetteRaster::wordMasks(std::span<const RowSpan> spans, std::vector<WordMask>& words) const {
+    const std::size_t first = words.size();
+    auto put = [&](std::uint32_t index, std::uint64_t mask) {
+        if (words.size() > first && words.back().index == index) {  // spans of one row meeting in a word
+            mask |= words.back().mask();
+            words.pop_back();
+        }
+        words.push_back({index, std::uint32_t(mask), std::uint32_t(mask >> 32)});
+    };
+    for (const RowSpan& r : spans) {
+        const std::uint32_t row = std::uint32_t(r.y) * std::uint32_t(words_);
+        const int w0 = r.lo >> 6, w1 = r.hi >> 6;
+        const std::uint64_t head = ~0ULL << (r.lo & 63), tail = ~0ULL >> (63 - (r.hi & 63));
+        if (w0 == w1) {
+            put(row + std::uint32_t(w0), head & tail);
+            continue;
+        }
+        put(row + std::uint32_t(w0), head);
+        for (int w = w0 + 1; w < w1; ++w) put(row + std::uint32_t(w), ~0ULL);
+        put(row + std::uint32_t(w1), tail);
+    }
+}
+
+void SilhouetteRaster::replay(std::span<const WordMask> words, std::uint64_t bounds) {
+    if (words.empty()) return;
+    std::uint64_t* bits = bits_.data();
+    for (const WordMask& m : words) bits[m.index] |= m.mask();
     yMin_ = std::min(yMin_, int(bounds & 0xffff)), yMax_ = std::max(yMax_, int(bounds >> 16 & 0xffff));
     wordMin_ = std::min(wordMin_, int(bounds >> 32 & 0xffff)), wordMax_ = std::max(wordMax_, int(bounds >> 48));
-    rows_ += spans.size();
 }
 
 inline void SilhouetteRaster::markRow(int y, int lo, int hi) {

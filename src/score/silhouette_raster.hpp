@@ -8,8 +8,9 @@
 //
 // A primitive is skipped before any of that when the projected corners of its box reach no pixel
 // centre, or only pixels already drawn (the union would not change).
-// addRecorded/replay serve incremental scoring (score/primitive_cache.hpp): a primitive's row
-// intervals, kept, draw the same pixels again without its outline.
+// addRecorded/wordMasks/replay serve incremental scoring (score/primitive_cache.hpp): a
+// primitive's row intervals, kept as the words they set, draw the same pixels again without its
+// outline, one OR per word.
 // Bookkeeping: the rectangle of rows and words written since the last count, so counting and
 // clearing touch only that rectangle.
 #pragma once
@@ -25,9 +26,16 @@
 
 namespace shapevo {
 
-/// One row interval a primitive drew: pixels lo..hi of row y (what PrimitiveCache keeps for it).
+/// One row interval a primitive drew: pixels lo..hi of row y (what addRecorded records).
 struct RowSpan {
     std::int32_t y, lo, hi;
+};
+
+/// One word of bits() a primitive drew into: the bits of `mask()` in word `index` (what
+/// PrimitiveCache keeps for it, so that a replay is one OR per word). 12 bytes, as a RowSpan.
+struct WordMask {
+    std::uint32_t index, low, high;
+    std::uint64_t mask() const { return std::uint64_t(low) | std::uint64_t(high) << 32; }
 };
 
 struct SilhouetteCounts {
@@ -52,11 +60,14 @@ public:
     /// Draw one primitive as add() does, but never skip it for covering only pixels already
     /// drawn, and append every row interval it draws to `spans` (replay() draws them again).
     void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, std::vector<RowSpan>& spans);
-    /// Draw row intervals that addRecorded() gave: the same pixels as drawing the primitive.
-    void replay(std::span<const RowSpan> spans) { replay(spans, boundsOf(spans)); }
-    /// replay() with the rectangle of rows and words the spans touch given (`bounds` =
-    /// boundsOf(spans), kept beside them in the cache), so no span pays for bookkeeping.
-    void replay(std::span<const RowSpan> spans, std::uint64_t bounds);
+    /// The words of bits() that `spans` (from addRecorded) set, in the order of the spans, one
+    /// entry per word (spans sharing a word share its entry), appended to `words`.
+    void wordMasks(std::span<const RowSpan> spans, std::vector<WordMask>& words) const;
+    /// Draw the words wordMasks() gave for a primitive's spans: the same pixels as drawing the
+    /// primitive. `bounds` = boundsOf(those spans), kept beside them in the cache, so that no
+    /// word pays for the bookkeeping of the rectangle written. Adds nothing to the work measure
+    /// (SilhouetteCounts::rows): a replay draws no piece.
+    void replay(std::span<const WordMask> words, std::uint64_t bounds);
     /// The rows and 64-pixel words `spans` touch, packed in one number (16 bits each: pictures
     /// are at most 16,384 pixels a side); 0 for no spans.
     static std::uint64_t boundsOf(std::span<const RowSpan> spans);

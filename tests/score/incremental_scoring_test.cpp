@@ -38,7 +38,9 @@ TEST(IncrementalScoring, RecordedRowsReplayToTheSamePixelsForEveryKindAndCamera)
                 replayed.addRecorded(p, &meshes, spans);
                 ASSERT_EQ(replayed.bits(), drawn.bits()) << "recording drew other pixels, primitive " << i;
                 replayed.clear();
-                replayed.replay(spans);
+                std::vector<WordMask> words;
+                replayed.wordMasks(spans, words);
+                replayed.replay(words, SilhouetteRaster::boundsOf(spans));
                 ASSERT_EQ(replayed.bits(), drawn.bits()) << "replay drew other pixels, primitive " << i;
                 const SilhouetteCounts a = drawn.score(target), b = replayed.score(target);
                 ASSERT_EQ(a.covered, b.covered);
