@@ -255,12 +255,18 @@ TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
     }
 }
 
+/// n x n x n voxels of 0.1 from `(x, y, z)`.
+GridSpec cubeOfVoxels(double x, double y, double z, int n) {
+    GridSpec grid;
+    grid.origin = {x, y, z};
+    grid.voxelSize = 0.1;
+    grid.nx = grid.ny = grid.nz = n;
+    return grid;
+}
+
 TEST(IncrementalScoring, VolumeScorerGivesTheSameCountsWithACacheAndItsCheckCatchesALie) {
     const Grammar g = parseGrammar(kTree, "tree.grammar");
-    GridSpec grid;
-    grid.origin = {-3.0, -0.5, -3.0};
-    grid.voxelSize = 0.1;
-    grid.nx = 60, grid.ny = 60, grid.nz = 60;
+    const GridSpec grid = cubeOfVoxels(-3.0, -0.5, -3.0, 60);
     Rng rng(8);
     const VolumeTarget target = test::randomTarget(grid, rng);
     VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
@@ -302,10 +308,7 @@ TEST(IncrementalScoring, AxisAlignedBoxesAreDrawnDirectlyAndNeverTouchTheCache) 
                                  (rotated ? "  rotate y 30\n" : "") +
                                  "  scale s\n  translate (0, 0, parent.size.z * 0.6)\n  box\n  child B prob 0.7 max 2\n}\n";
         const Grammar g = parseGrammar(text, "boxes.grammar");
-        GridSpec grid;
-        grid.origin = {-4.0, -4.0, -2.0};
-        grid.voxelSize = 0.1;
-        grid.nx = 80, grid.ny = 80, grid.nz = 80;
+        const GridSpec grid = cubeOfVoxels(-4.0, -4.0, -2.0, 80);
         Rng rng(3);
         const VolumeTarget target = test::randomTarget(grid, rng);
         VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
