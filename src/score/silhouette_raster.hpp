@@ -58,7 +58,8 @@ public:
         for (const Primitive& p : g.primitives) add(p, g.meshes);
     }
     /// Draw one primitive as add() does, but never skip it for covering only pixels already
-    /// drawn, and append every row interval it draws to `spans` (replay() draws them again).
+    /// drawn, and append every row interval it draws to `spans` (merged per row; as wordMasks()
+    /// they replay() to the same pixels).
     void addRecorded(const Primitive& p, const std::vector<MeshShape>* meshes, std::vector<RowSpan>& spans);
     /// The words of bits() that `spans` (from addRecorded) set, in the order of the spans, one
     /// entry per word (spans sharing a word share its entry), appended to `words`.
