@@ -10,6 +10,20 @@
 namespace shapevo {
 
 namespace {
+/// The 64-pixel words pixels lo..hi of one row cover, left to right: f(word, mask) for each
+/// (markRow ORs them in; wordMasks keeps them for a replay).
+template <class F>
+inline void forEachWordOf(int lo, int hi, F&& f) {
+    const int w0 = lo >> 6, w1 = hi >> 6;
+    const std::uint64_t head = ~0ULL << (lo & 63), tail = ~0ULL >> (63 - (hi & 63));
+    if (w0 == w1) {
+        f(w0, head & tail);
+        return;
+    }
+    f(w0, head);
+    for (int w = w0 + 1; w < w1; ++w) f(w, ~0ULL);
+    f(w1, tail);
+}
 
 /// q = floor(num / d), r = num - q d in [0, d), for d > 0 and |num| < 2^53: the estimate from the
 /// double reciprocal is within one of q (relative error about 2^-52), the remainder corrects it.
@@ -99,24 +113,16 @@ std::uint64_t SilhouetteRaster::boundsOf(std::span<const RowSpan> spans) {
 
 void SilhouetteRaster::wordMasks(std::span<const RowSpan> spans, std::vector<WordMask>& words) const {
     const std::size_t first = words.size();
-    auto put = [&](std::uint32_t index, std::uint64_t mask) {
-        if (words.size() > first && words.back().index == index) {  // spans of one row meeting in a word
-            mask |= words.back().mask();
-            words.pop_back();
-        }
-        words.push_back({index, std::uint32_t(mask), std::uint32_t(mask >> 32)});
-    };
     for (const RowSpan& r : spans) {
         const std::uint32_t row = std::uint32_t(r.y) * std::uint32_t(words_);
-        const int w0 = r.lo >> 6, w1 = r.hi >> 6;
-        const std::uint64_t head = ~0ULL << (r.lo & 63), tail = ~0ULL >> (63 - (r.hi & 63));
-        if (w0 == w1) {
-            put(row + std::uint32_t(w0), head & tail);
-            continue;
-        }
-        put(row + std::uint32_t(w0), head);
-        for (int w = w0 + 1; w < w1; ++w) put(row + std::uint32_t(w), ~0ULL);
-        put(row + std::uint32_t(w1), tail);
+        forEachWordOf(r.lo, r.hi, [&](int w, std::uint64_t mask) {
+            const std::uint32_t index = row + std::uint32_t(w);
+            if (words.size() > first && words.back().index == index) {  // spans of one row meeting in a word
+                words.back().low |= std::uint32_t(mask), words.back().high |= std::uint32_t(mask >> 32);
+                return;
+            }
+            words.push_back({index, std::uint32_t(mask), std::uint32_t(mask >> 32)});
+        });
     }
 }
 
@@ -129,16 +135,8 @@ void SilhouetteRaster::replay(std::span<const WordMask> words, std::uint64_t bou
 }
 
 inline void SilhouetteRaster::markRow(int y, int lo, int hi) {
-    const int w0 = lo >> 6, w1 = hi >> 6;
     std::uint64_t* words = &bits_[std::size_t(y) * std::size_t(words_)];
-    const std::uint64_t first = ~0ULL << (lo & 63), last = ~0ULL >> (63 - (hi & 63));
-    if (w0 == w1) {
-        words[w0] |= first & last;
-        return;
-    }
-    words[w0] |= first;
-    for (int w = w0 + 1; w < w1; ++w) words[w] = ~0ULL;
-    words[w1] |= last;
+    forEachWordOf(lo, hi, [&](int w, std::uint64_t mask) { words[w] |= mask; });
 }
 
 void SilhouetteRaster::fillConvex(std::span<const FixedPoint> hull) {
