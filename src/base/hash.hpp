@@ -52,4 +52,20 @@ private:
     void* state_;  ///< an XXH3_state_t, kept out of this header
 };
 
+/// A quick hash of `n` 32-bit words for in-memory tables (it picks a bucket; the table compares
+/// the words): inline, a multiply and two shifts per pair of words. Never stored or sent: it may
+/// change between versions, unlike hash64.
+inline std::uint64_t quickHash(const std::uint32_t* words, std::size_t n) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull ^ (n * 0xC2B2AE3D27D4EB4Full);
+    auto mix = [&h](std::uint64_t v) {
+        h = (h ^ v) * 0xFF51AFD7ED558CCDull;
+        h ^= h >> 29;
+    };
+    std::size_t i = 0;
+    for (; i + 2 <= n; i += 2) mix(std::uint64_t(words[i]) | std::uint64_t(words[i + 1]) << 32);
+    if (i < n) mix(words[i]);
+    h *= 0xC4CEB9FE1A85EC53ull;
+    return h ^ (h >> 32);
+}
+
 }  // namespace shapevo

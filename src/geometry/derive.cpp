@@ -144,6 +144,47 @@ namespace {
         scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame, g.usesPieceKeys ? scratch.pieceKeys[k] : key});
     }
 }
+/// With the memo: keep every open subtree whose last task is done (the stack is back to the
+/// size it had once the subtree's first task was popped).
+[[gnu::noinline]] void keepFinishedSubtrees(const Grammar& g, const Geometry& out,
+                                            DeriveScratch& scratch, std::size_t stackSize, std::size_t tasks) {
+    while (!scratch.open.empty() && stackSize <= scratch.open.back().height) {
+        const DeriveScratch::OpenSubtree& o = scratch.open.back();
+        const Appearance* looks = g.hasAppearance ? out.appearance.data() + o.first : nullptr;
+        scratch.memo->store(o.start, out.primitives.data() + o.first, looks,
+                            std::uint32_t(out.primitives.size() - o.first), std::uint32_t(tasks - o.tasks));
+        scratch.open.pop_back();
+    }
+}
+
+/// With the memo, at the first task of a gene's subtree (already counted in `tasks`): append
+/// what the memo kept for it and return true, if it kept it and it fits in what is left of the
+/// limits (so the full derivation would not have stopped inside it either); otherwise open the
+/// subtree, to be kept once derived, and return false.
+[[gnu::noinline]] bool reuseSubtree(const Grammar& g, const DeriveScratch::Task& task, Geometry& out,
+                                    DeriveScratch& scratch, SubtreeMemo& memo, std::size_t& tasks, std::size_t maxTasks,
+                                    std::size_t maxPrimitives) {
+    const Scope& s = scratch.scopes[task.scope];
+    const SubtreeMemo::Start start(memo.contentOf(task.gene), g.usesPieceKeys ? task.key : 0,
+                                   g.hasAppearance ? &scratch.looks[s.look] : nullptr, s);
+    SubtreeMemo::Found found;
+    const std::size_t first = out.primitives.size();
+    if (memo.find(start, found) && first + found.count <= maxPrimitives &&
+        tasks - 1 + found.tasks <= maxTasks) {
+        out.primitives.resize(first + found.count);
+        std::memcpy(static_cast<void*>(out.primitives.data() + first), found.primitives,
+                    std::size_t(found.count) * sizeof(Primitive));
+        if (g.hasAppearance) {
+            out.appearance.resize(first + found.count);
+            std::memcpy(static_cast<void*>(out.appearance.data() + first), found.looks,
+                        std::size_t(found.count) * sizeof(Appearance));
+        }
+        tasks += found.tasks - 1;
+        return true;
+    }
+    scratch.open.push_back({scratch.stack.size(), first, tasks - 1, start});
+    return false;
+}
 }  // namespace
 
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
@@ -172,12 +213,22 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
     scopes.push_back(Scope{});
     stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
     std::size_t tasks = 0;
-    while (!stack.empty()) {
-        if (++tasks > 4 * maxPrimitives + 1024) return DeriveStatus::Truncated;  // mirrors without boxes multiply too
+    const std::size_t maxTasks = 4 * maxPrimitives + 1024;  // mirrors without boxes multiply too
+    SubtreeMemo* const memo = g.textures.empty() ? scratch.memo.get() : nullptr;
+    scratch.open.clear();
+    if (memo) memo->identify(g, c);
+    for (;;) {
+        if (memo) [[unlikely]]
+            keepFinishedSubtrees(g, out, scratch, stack.size(), tasks);
+        if (stack.empty()) break;
+        if (++tasks > maxTasks) return DeriveStatus::Truncated;
         const DeriveScratch::Task task = stack.back();
         stack.pop_back();
         // Every task still on the stack refers to scopes at or below this task's own one.
         scopes.resize(task.scope + 1);
+        // A gene's subtree, from its first statement on its parent's scope: derived before?
+        if (memo && task.statement == 0 && task.end == UINT32_MAX && task.frame == kNoFrame && task.scope == task.parent)
+            if (reuseSubtree(g, task, out, scratch, *memo, tasks, maxTasks, maxPrimitives)) continue;
         const Rule& r = g.rules[c.rule(task.gene)];
         if (r.paramFloats > 0)
             std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));

@@ -1,10 +1,12 @@
 // derive: run the grammar's statements along a chromosome's derivation tree and collect the
 // primitives. Pure and deterministic: the same chromosome always gives the same geometry.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "genome/chromosome.hpp"
 #include "geometry/pieces.hpp"
+#include "geometry/subtree_memo.hpp"
 #include "shape/primitive.hpp"
 
 namespace shapevo {
@@ -34,6 +36,18 @@ struct DeriveScratch {
     std::vector<std::uint32_t> pieceKeys;    ///< the piece keys of the pieces being pushed (`per piece`)
     std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
+    /// Set: incremental derivation. Every gene's subtree is looked up before it is derived and
+    /// kept after (geometry/subtree_memo.hpp); the geometry is the same bit for bit. Not with
+    /// textures (their frames are numbered per derivation).
+    std::unique_ptr<SubtreeMemo> memo;
+    /// Subtrees being derived while the memo is on, to be kept when their last task is done.
+    struct OpenSubtree {
+        std::size_t height;      ///< the stack's size once its first task was popped: done when back to it
+        std::size_t first;       ///< its first primitive
+        std::size_t tasks;       ///< derive's task count before its first task
+        SubtreeMemo::Start start;
+    };
+    std::vector<OpenSubtree> open;
 };
 
 /// Every number of a primitive (centre, half extents; its axes follow from finite rotation

@@ -22,11 +22,15 @@ public:
     struct Workspace : ScoreWorkspace {
         /// cacheBytes > 0: keep the primitives' rows (incremental scoring, Scorer::setIncremental).
         explicit Workspace(const Camera& camera, std::size_t cacheBytes = 0) : raster(camera) {
-            if (cacheBytes > 0) cache.emplace(cacheBytes);
+            if (cacheBytes == 0) return;
+            derive.memo = std::make_unique<SubtreeMemo>(subtreeMemoBytes(cacheBytes));
+            cache.emplace(cacheBytes - subtreeMemoBytes(cacheBytes));
         }
         SilhouetteRaster raster;
         std::optional<PrimitiveCache<WordMask>> cache;
-        std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
+        std::size_t cacheBytesUsed() const override {
+            return ScoreWorkspace::cacheBytesUsed() + (cache ? cache->bytesUsed() : 0);
+        }
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache as...
         std::vector<WordMask> words;  ///< ...the words they set
         std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)

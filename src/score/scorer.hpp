@@ -7,7 +7,9 @@
 // evaluations, the same whatever the thread count.
 // Incremental scoring (setIncremental): a child is mostly its parent, so most of its primitives
 // are bit-identical to primitives scored before; their rows are replayed from a per-thread cache
-// (score/primitive_cache.hpp) instead of drawn again. Fitness and counts stay bit-identical.
+// (score/primitive_cache.hpp) instead of drawn again, and every gene's subtree derived before is
+// copied from a per-thread memo (geometry/subtree_memo.hpp) instead of derived again. Fitness and
+// counts stay bit-identical.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -24,11 +26,16 @@ namespace shapevo {
 struct ScoreWorkspace {
     virtual ~ScoreWorkspace() = default;
     DeriveStatus status = DeriveStatus::Complete;  ///< how the last model scored here derived
-    /// Bytes its incremental-scoring cache has written so far (0 without one).
-    virtual std::size_t cacheBytesUsed() const { return 0; }
+    /// Bytes its incremental-scoring cache and subtree memo have written so far (0 without them).
+    virtual std::size_t cacheBytesUsed() const { return derive.memo ? derive.memo->bytesUsed() : 0; }
     DeriveScratch derive;
     Geometry geometry;
+    Geometry checkGeometry;  ///< the checking mode's derivation without the memo
 };
+
+/// Of an incremental-scoring budget of `bytes` (score.cache_mb), the subtree memo's share (a
+/// quarter; geometry/subtree_memo.hpp); the rest is the primitive cache's.
+inline std::size_t subtreeMemoBytes(std::size_t bytes) { return bytes / 4; }
 
 /// The checking mode of incremental scoring found a model whose counts differ between the
 /// incremental and the full evaluation (what() names both).
@@ -90,6 +97,7 @@ protected:
     /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
     bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
         w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+        if (checkIncremental_ && w.derive.memo) checkDerivation(c, w);
         switch (w.status) {
         case DeriveStatus::Complete: return true;
         case DeriveStatus::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return true;
@@ -100,6 +108,9 @@ protected:
     }
 
 private:
+    /// Derive `c` again without the memo; throw IncrementalMismatch unless it gives w.geometry and w.status.
+    void checkDerivation(const Chromosome& c, ScoreWorkspace& w) const;
+
     std::size_t cacheBytes_ = 0;
     bool checkIncremental_ = false;
     mutable std::atomic<bool> cacheFull_{false};

@@ -18,11 +18,15 @@ public:
     struct Workspace : ScoreWorkspace {
         /// cacheBytes > 0: keep the primitives' voxel rows (incremental scoring, Scorer::setIncremental).
         explicit Workspace(const GridSpec& grid, std::size_t cacheBytes = 0) : voxelizer(grid) {
-            if (cacheBytes > 0) cache.emplace(cacheBytes);
+            if (cacheBytes == 0) return;
+            derive.memo = std::make_unique<SubtreeMemo>(subtreeMemoBytes(cacheBytes));
+            cache.emplace(cacheBytes - subtreeMemoBytes(cacheBytes));
         }
         Voxelizer voxelizer;
         std::optional<PrimitiveCache<VoxelRun>> cache;
-        std::size_t cacheBytesUsed() const override { return cache ? cache->bytesUsed() : 0; }
+        std::size_t cacheBytesUsed() const override {
+            return ScoreWorkspace::cacheBytesUsed() + (cache ? cache->bytesUsed() : 0);
+        }
         std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
         std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
     };

@@ -1,0 +1,111 @@
+// SubtreeMemo: what deriving one subtree of a chromosome made (its primitives, their looks and
+// the tasks it took), kept by the subtree's exact content and the scope it started on, so that a
+// child, which is mostly its parent, derives again only the subtree its operator changed
+// (incremental evaluation; derive.hpp uses it when DeriveScratch::memo is set).
+//
+// How: identify() gives every gene of a chromosome the number of its subtree's content, children
+// first: the same rule, the same parameters bit for bit and children of the same numbers (in slot
+// order) get the same number, found in a table of the contents seen before (hash consing); a new
+// content gets a number never given before. A subtree's output is then kept by its number and its
+// start (the scope's origin, axes and size, its look, the piece key, bit for bit).
+//
+// Promises:
+//  - Exact: numbers are compared, never only hashes: two subtrees share a number only if their
+//    contents are equal, and an output is found only for the same number and the same start. A
+//    gene's task starts on its parent's scope at its first statement with no let values
+//    (derive.cpp), so what derive makes of the subtree depends on nothing else.
+//  - Bounded: two rings of records with their tables of entries, at most `bytes` in all, in zero
+//    pages (base/zero_pages.hpp: memory is mapped as the rings first fill). Storing overwrites
+//    the oldest records; an entry whose records were overwritten is a miss (a forgotten content
+//    gets a new number), never a wrong answer.
+//  - Derived data only: a cold memo gives the same geometry as a warm one, only later.
+//  - No allocation once warm.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "base/zero_pages.hpp"
+#include "genome/chromosome.hpp"
+#include "geometry/pieces.hpp"
+#include "shape/primitive.hpp"
+
+namespace shapevo {
+
+class SubtreeMemo {
+public:
+    /// Where a subtree starts: its content's number, its piece key, look (with colours) and scope, as words.
+    struct Start {
+        static constexpr std::size_t kMaxWords = 3 + 5 + 15;
+        std::uint32_t words[kMaxWords];
+        std::uint32_t count = 0;
+        std::uint64_t hash = 0;
+        /// `look` is null for grammars without colours or materials.
+        Start(std::uint64_t content, std::uint32_t key, const Appearance* look, const Scope& s);
+    };
+    /// A stored subtree's output, valid until the next store().
+    struct Found {
+        const std::uint32_t* primitives = nullptr;  ///< `count` Primitives, bytewise
+        const std::uint32_t* looks = nullptr;       ///< `count` Appearances, bytewise (stored with looks only)
+        std::uint32_t count = 0;
+        std::uint32_t tasks = 0;  ///< derive's tasks for the subtree, its own first one included
+    };
+    struct Stats {
+        std::uint64_t hits = 0, misses = 0, stored = 0, tooLarge = 0, contents = 0;
+    };
+
+    explicit SubtreeMemo(std::size_t bytes);
+
+    /// Number every gene's subtree of `c` (contentOf); call before the lookups of one derivation.
+    void identify(const Grammar& g, const Chromosome& c);
+    /// After identify(c): the number of the content of the subtree at `gene`.
+    std::uint64_t contentOf(std::uint32_t gene) const { return contentAt_[gene]; }
+
+    /// The output stored for `start`; false if none.
+    bool find(const Start& start, Found& out);
+    /// Keep what the subtree started at `start` made: `count` primitives (and their looks, when
+    /// `looks` is not null) in `tasks` tasks. A subtree larger than an eighth of the ring is not kept.
+    void store(const Start& start, const Primitive* primitives, const Appearance* looks, std::uint32_t count,
+               std::uint32_t tasks);
+
+    const Stats& stats() const { return stats_; }
+    /// Bytes of entries and records written so far (what the system had to map).
+    std::size_t bytesUsed() const { return contents_.bytesUsed() + outputs_.bytesUsed(); }
+
+private:
+    /// Records of whole words in a ring, found through a table of 4-way buckets by their hash;
+    /// storing replaces the least recently used entry of the bucket.
+    class Ring {
+    public:
+        struct Entry {  // all zero: free
+            std::uint64_t hash, at, used, value;
+            std::uint32_t words, count;
+        };
+        Ring(std::size_t bytes);
+        /// The live entry of hash `h` whose first `n` words equal `key`, or null.
+        Entry* find(std::uint64_t h, const std::uint32_t* key, std::uint32_t n);
+        /// Room for `words` words (null if more than an eighth of the ring) and its entry, filled
+        /// with `h`; the caller writes both.
+        Entry* add(std::uint64_t h, std::size_t words, std::uint32_t*& records);
+        const std::uint32_t* records(const Entry& e) const { return &ring_[e.at % ring_.size()]; }
+        std::size_t bytesUsed() const {
+            return entries_.size() * sizeof(Entry) + std::min<std::uint64_t>(head_, ring_.size()) * 4;
+        }
+
+    private:
+        static constexpr std::size_t kWays = 4;
+        bool live(const Entry& e) const { return e.words > 0 && head_ - e.at <= ring_.size(); }
+        ZeroPages<Entry> entries_;
+        ZeroPages<std::uint32_t> ring_;
+        std::size_t mask_ = 0;
+        std::uint64_t head_ = 0, clock_ = 0;
+    };
+
+    Ring contents_, outputs_;
+    std::uint64_t lastNumber_ = 0;
+    std::vector<std::uint64_t> contentAt_;  ///< per word position of the last identify(): its gene's number
+    std::vector<std::uint32_t> genes_, key_;  // scratch
+    Stats stats_;
+};
+
+}  // namespace shapevo

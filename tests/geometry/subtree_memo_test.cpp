@@ -1,0 +1,209 @@
+// Incremental derivation (geometry/subtree_memo.hpp): with a memo, derive gives the very geometry
+// and status it gives without one, for every shipped grammar, every operator's children, limits
+// that truncate, a memo that wraps; children find their parents' unchanged subtrees; equal
+// contents get equal numbers wherever they are, different contents different ones.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "../small_tree_grammar.hpp"
+#include "../test_support.hpp"
+#include "genome/operators.hpp"
+#include "geometry/derive.hpp"
+#include "grammar/parser.hpp"
+
+namespace shapevo {
+namespace {
+
+/// Bit-identical primitives and looks, field by field (the struct has a padding byte).
+::testing::AssertionResult identical(const Geometry& a, const Geometry& b) {
+    if (a.primitives.size() != b.primitives.size())
+        return ::testing::AssertionFailure() << a.primitives.size() << " primitives against " << b.primitives.size();
+    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+        const Primitive &p = a.primitives[i], &q = b.primitives[i];
+        if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, 4) != 0 ||
+            std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 || std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 ||
+            std::memcmp(&p.half, &q.half, sizeof p.half) != 0 || std::memcmp(&p.taperZ, &q.taperZ, 4) != 0)
+            return ::testing::AssertionFailure() << "primitive " << i << " differs";
+    }
+    if (!(a.appearance == b.appearance)) return ::testing::AssertionFailure() << "looks differ";
+    return ::testing::AssertionSuccess();
+}
+
+/// Random models and a stream of their children by every operator (a GA's stream, in short).
+std::vector<Chromosome> modelsAndChildren(const Grammar& g, std::size_t count, std::uint64_t seed) {
+    Rng rng(seed);
+    const GenomeLimits limits{120};
+    GenomeScratch scratch;
+    std::vector<Chromosome> out;
+    for (std::uint32_t i = 0; i < 6; ++i) {
+        Chromosome c;
+        growRandomLength(g, c, rng, limits, 3 + 4 * i, 3 + 8 * i);
+        out.push_back(c);
+    }
+    while (out.size() < count) {
+        Chromosome child = out[out.size() - 1 - rng.below(6)];
+        switch (rng.below(5)) {
+        case 0: grow(g, child, rng, limits); break;
+        case 1: cut(g, child, rng, scratch); break;
+        case 2: alter(g, child, rng); break;
+        case 3: break;  // a duplicate
+        default: {
+            const Chromosome a = child, b = out[rng.below(std::uint32_t(out.size()))];
+            Chromosome childB;
+            crossover(g, a, b, child, childB, rng, limits, 5, scratch);
+        }
+        }
+        out.push_back(child);
+    }
+    return out;
+}
+
+std::vector<std::string> shippedGrammars() {
+    std::vector<std::string> paths;
+    for (const char* folder : {"grammars", "grammars/castlemaker"})
+        for (const auto& entry : std::filesystem::directory_iterator(test::sourcePath(folder))) {
+            const std::string ext = entry.path().extension().string();
+            if (ext == ".grammar" || ext == ".rule") paths.push_back(entry.path().string());
+        }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+TEST(SubtreeMemo, DerivesEveryShippedGrammarsChildrenBitForBitAsWithout) {
+    const std::vector<std::string> paths = shippedGrammars();
+    ASSERT_GE(paths.size(), 10u);
+    for (const std::string& path : paths) {
+        SCOPED_TRACE(path);
+        const Grammar g = loadGrammar(path);
+        DeriveScratch plain, memoized;
+        memoized.memo = std::make_unique<SubtreeMemo>(1 << 20);  // small: both rings wrap
+        Geometry a, b;
+        // As many models as take a moment: a rule file's one gene can make 100,000 primitives.
+        derive(g, modelsAndChildren(g, 1, 5).front(), a, plain);
+        const std::size_t count = std::clamp<std::size_t>(200000 / (a.primitives.size() + 1), 30, 600);
+        for (const Chromosome& c : modelsAndChildren(g, count, 5)) {
+            const DeriveStatus sa = derive(g, c, a, plain), sb = derive(g, c, b, memoized);
+            ASSERT_EQ(int(sa), int(sb));
+            ASSERT_TRUE(identical(a, b));
+        }
+        const SubtreeMemo::Stats& st = memoized.memo->stats();
+        // Children share subtrees (or one gene's output is too large to keep).
+        if (g.textures.empty()) EXPECT_GT(st.hits + st.tooLarge, 25u) << st.hits << " hits, " << st.tooLarge << " too large";
+    }
+}
+
+TEST(SubtreeMemo, PrimitiveAndTaskLimitsStopWhereTheyStopWithout) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    DeriveScratch plain, memoized;
+    memoized.memo = std::make_unique<SubtreeMemo>(4 << 20);
+    Geometry a, b;
+    int truncated = 0;
+    const std::vector<Chromosome> models = modelsAndChildren(g, 400, 9);
+    for (std::size_t limit : {1, 2, 3, 5, 8, 13, 40}) {
+        for (const Chromosome& c : models) {
+            const DeriveStatus sa = derive(g, c, a, plain, limit), sb = derive(g, c, b, memoized, limit);
+            ASSERT_EQ(int(sa), int(sb)) << "limit " << limit;
+            ASSERT_TRUE(identical(a, b)) << "limit " << limit;
+            truncated += sa == DeriveStatus::Truncated;
+        }
+        // and with no limit in between: what was kept under a limit is whole
+        for (std::size_t i = 0; i < models.size(); i += 7) {
+            derive(g, models[i], a, plain);
+            derive(g, models[i], b, memoized);
+            ASSERT_TRUE(identical(a, b));
+        }
+    }
+    EXPECT_GT(truncated, 500);
+}
+
+TEST(SubtreeMemo, ASubtreeKeptUnderNoLimitIsNotReusedWhereItsTasksWouldPassTheLimit) {
+    // Mirrors without boxes: eight tasks per gene and no primitive, so the task limit
+    // (4 * maxPrimitives + 1,024) stops the chain, not the primitive limit.
+    const Grammar g = parseGrammar(R"(
+start A
+rule A {
+  param x = uniform(0, 1)
+  child A prob 0.99
+  mirror x
+  mirror y
+  mirror z
+}
+)", "chain.grammar");
+    Rng rng(4);
+    Chromosome c;
+    growRandomLength(g, c, rng, GenomeLimits{400}, 300, 300);
+    ASSERT_EQ(c.genes, 300u);
+    DeriveScratch plain, memoized;
+    memoized.memo = std::make_unique<SubtreeMemo>(8 << 20);
+    Geometry a, b;
+    ASSERT_EQ(int(derive(g, c, b, memoized, 100000)), int(DeriveStatus::Complete));  // kept whole
+    for (std::size_t limit : {1, 50, 100000}) {
+        const DeriveStatus sa = derive(g, c, a, plain, limit), sb = derive(g, c, b, memoized, limit);
+        EXPECT_EQ(int(sa), int(sb)) << "limit " << limit;
+        EXPECT_EQ(int(sa), int(limit < 1000 ? DeriveStatus::Truncated : DeriveStatus::Complete)) << "limit " << limit;
+    }
+}
+
+TEST(SubtreeMemo, AChildFindsItsParentsUnchangedSubtrees) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    Rng rng(3);
+    Chromosome parent;
+    growRandomLength(g, parent, rng, GenomeLimits{200}, 60, 60);
+    DeriveScratch scratch;
+    scratch.memo = std::make_unique<SubtreeMemo>(8 << 20);
+    Geometry geometry;
+    derive(g, parent, geometry, scratch);
+    const SubtreeMemo::Stats first = scratch.memo->stats();
+    EXPECT_EQ(first.hits, 0u);
+    EXPECT_EQ(first.stored, parent.genes);  // one subtree per gene
+
+    derive(g, parent, geometry, scratch);  // the same model: its whole tree at once
+    EXPECT_EQ(scratch.memo->stats().hits, 1u);
+    EXPECT_EQ(scratch.memo->stats().misses, first.misses);
+
+    Chromosome child = parent;
+    ASSERT_TRUE(alter(g, child, rng));
+    const SubtreeMemo::Stats before = scratch.memo->stats();
+    derive(g, child, geometry, scratch);
+    const SubtreeMemo::Stats after = scratch.memo->stats();
+    // Only the altered gene and its ancestors are derived; everything hanging off them is found.
+    EXPECT_GT(after.hits, before.hits);
+    EXPECT_LT(after.stored - before.stored, 30u);
+}
+
+TEST(SubtreeMemo, EqualContentsShareANumberWhereverTheyAreAndOthersDoNot) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    Rng rng(21);
+    Chromosome a;
+    growRandomLength(g, a, rng, GenomeLimits{200}, 40, 40);
+    SubtreeMemo memo(8 << 20);
+    memo.identify(g, a);
+    const std::uint64_t root = memo.contentOf(0);
+    std::vector<std::uint64_t> numbers;
+    for (std::uint32_t pos = 0; pos < a.size(); pos += g.rules[a.rule(pos)].geneWords()) numbers.push_back(memo.contentOf(pos));
+    std::sort(numbers.begin(), numbers.end());
+    // Random parameters: no two subtrees of one tree are equal.
+    EXPECT_EQ(std::unique(numbers.begin(), numbers.end()), numbers.end());
+
+    memo.identify(g, a);  // seen before: the same numbers
+    EXPECT_EQ(memo.contentOf(0), root);
+
+    Chromosome b = a;
+    std::uint32_t gene = 0;
+    while (g.rules[b.rule(gene)].paramFloats == 0) gene += g.rules[b.rule(gene)].geneWords();
+    const Rule& r = g.rules[b.rule(gene)];
+    const std::uint64_t before = memo.contentOf(gene);
+    b.setParam(gene, r, 0, std::nextafter(b.param(gene, r, 0), 10.0f));  // one bit of one parameter
+    memo.identify(g, b);
+    EXPECT_NE(memo.contentOf(gene), before);
+    EXPECT_NE(memo.contentOf(0), root);  // and the root's content holds it
+    EXPECT_GT(memo.contentOf(0), numbers.back());  // a new content: a number never given before
+}
+
+}  // namespace
+}  // namespace shapevo
