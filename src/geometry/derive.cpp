@@ -180,6 +180,7 @@ namespace {
                         std::size_t(found.count) * sizeof(Appearance));
         }
         tasks += found.tasks - 1;
+        scratch.reused.push_back({std::uint32_t(first), found.count, start});
         return true;
     }
     scratch.open.push_back({scratch.stack.size(), first, tasks - 1, start});
@@ -189,6 +190,7 @@ namespace {
 
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
     out.clear();
+    scratch.reused.clear();
     out.meshes = &g.meshes;
     out.materialNames = &g.materialNames;
     out.textures = &g.textures;
@@ -226,8 +228,11 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
         stack.pop_back();
         // Every task still on the stack refers to scopes at or below this task's own one.
         scopes.resize(task.scope + 1);
-        // A gene's subtree, from its first statement on its parent's scope: derived before?
-        if (memo && task.statement == 0 && task.end == UINT32_MAX && task.frame == kNoFrame && task.scope == task.parent)
+        // A gene's subtree, from its first statement on its parent's scope: derived before? (Not
+        // the root's: the whole model recurs only as a duplicate, which search methods never
+        // score twice, and keeping it would copy every primitive of every model.)
+        if (memo && task.gene != 0 && task.statement == 0 && task.end == UINT32_MAX && task.frame == kNoFrame &&
+            task.scope == task.parent)
             if (reuseSubtree(g, task, out, scratch, *memo, tasks, maxTasks, maxPrimitives)) continue;
         const Rule& r = g.rules[c.rule(task.gene)];
         if (r.paramFloats > 0)

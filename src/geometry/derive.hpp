@@ -48,6 +48,13 @@ struct DeriveScratch {
         SubtreeMemo::Start start;
     };
     std::vector<OpenSubtree> open;
+    /// After a derivation with the memo: the subtrees it copied from the memo, in the order of
+    /// their primitives (disjoint ranges of Geometry::primitives); their starts name them exactly.
+    struct ReusedSubtree {
+        std::uint32_t first, count;
+        SubtreeMemo::Start start;
+    };
+    std::vector<ReusedSubtree> reused;
 };
 
 /// Every number of a primitive (centre, half extents; its axes follow from finite rotation

@@ -20,20 +20,37 @@ namespace shapevo {
 class ImageScorer final : public Scorer {
 public:
     struct Workspace : ScoreWorkspace {
-        /// cacheBytes > 0: keep the primitives' rows (incremental scoring, Scorer::setIncremental).
+        /// cacheBytes > 0: keep the primitives' rows (incremental scoring, Scorer::setIncremental):
+        /// a quarter for the subtree memo, a quarter for whole subtrees' words, half for primitives'.
         explicit Workspace(const Camera& camera, std::size_t cacheBytes = 0) : raster(camera) {
             if (cacheBytes == 0) return;
             derive.memo = std::make_unique<SubtreeMemo>(subtreeMemoBytes(cacheBytes));
-            cache.emplace(cacheBytes - subtreeMemoBytes(cacheBytes));
+            subtrees.emplace(subtreeMemoBytes(cacheBytes));
+            cache.emplace(cacheBytes - 2 * subtreeMemoBytes(cacheBytes));
         }
         SilhouetteRaster raster;
         std::optional<PrimitiveCache<WordMask>> cache;
+        /// The words whole subtrees set (their primitives' words merged: one OR per word), by the
+        /// start that names each subtree's primitives (DeriveScratch::reused).
+        std::optional<PrimitiveCache<WordMask, SubtreeKey>> subtrees;
         std::size_t cacheBytesUsed() const override {
-            return ScoreWorkspace::cacheBytesUsed() + (cache ? cache->bytesUsed() : 0);
+            return ScoreWorkspace::cacheBytesUsed() + (cache ? cache->bytesUsed() : 0) +
+                   (subtrees ? subtrees->bytesUsed() : 0);
         }
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache as...
         std::vector<WordMask> words;  ///< ...the words they set
         std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
+        /// Subtrees replayed whole (primitive index ranges), and those to keep whole once drawn
+        /// with the words their primitives set, gathered in `gathered`.
+        struct SubtreeRange {
+            std::uint32_t first, end;
+            std::uint64_t hash = 0, bounds = 0;
+            std::size_t from = 0;  ///< its words' start in `gathered`
+            SubtreeKey key;
+        };
+        std::vector<SubtreeRange> replayed, toKeep;
+        std::vector<WordMask> gathered;
+        std::vector<std::uint64_t> merged;  ///< one word per raster word, zero between merges
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that

@@ -25,34 +25,45 @@
 
 #include "base/hash.hpp"
 #include "base/zero_pages.hpp"
+#include "geometry/subtree_memo.hpp"
 #include "shape/primitive.hpp"
 
 namespace shapevo {
 
-/// A primitive's numbers packed without padding (the key of PrimitiveCache; compared bytewise).
+/// A primitive's numbers packed without padding (the key of PrimitiveCache; compared bytewise):
+/// its kind and mesh index in one word, then its 17 floats.
 struct PrimitiveKey {
-    static constexpr std::size_t kBytes = 1 + 2 + 4 * (1 + 3 + 9 + 3 + 1);
-    unsigned char bytes[kBytes];
+    static constexpr std::size_t kWords = 1 + (1 + 3 + 9 + 3 + 1);
+    std::uint32_t words[kWords];
     PrimitiveKey() = default;
     explicit PrimitiveKey(const Primitive& p) {
-        unsigned char* at = bytes;
-        auto put = [&](const void* v, std::size_t n) {
-            std::memcpy(at, v, n);
-            at += n;
-        };
-        put(&p.kind, 1);
-        put(&p.mesh, 2);
-        put(&p.taper, 4);
-        put(&p.centre[0], 12);
-        put(&p.axes[0][0], 36);
-        put(&p.half[0], 12);
-        put(&p.taperZ, 4);
+        words[0] = std::uint32_t(p.kind) | std::uint32_t(p.mesh) << 8;
+        std::memcpy(&words[1], &p.taper, 4);
+        std::memcpy(&words[2], &p.centre[0], 12);
+        std::memcpy(&words[5], &p.axes[0][0], 36);
+        std::memcpy(&words[14], &p.half[0], 12);
+        std::memcpy(&words[17], &p.taperZ, 4);
     }
-    std::uint64_t hash() const { return hash64(bytes, kBytes); }
-    bool operator==(const PrimitiveKey& o) const { return std::memcmp(bytes, o.bytes, kBytes) == 0; }
+    std::uint64_t hash() const { return quickHash(words, kWords); }
+    bool operator==(const PrimitiveKey& o) const { return std::memcmp(words, o.words, sizeof words) == 0; }
 };
 
-template <class Record>
+/// A subtree's primitives, as found by the derivation's memo (geometry/subtree_memo.hpp): its
+/// start, which names its output exactly (the key of a PrimitiveCache of whole subtrees).
+struct SubtreeKey {
+    std::uint32_t words[SubtreeMemo::Start::kMaxWords];
+    std::uint32_t count;
+    SubtreeKey() = default;
+    explicit SubtreeKey(const SubtreeMemo::Start& s) : count(s.count) {
+        std::memcpy(words, s.words, s.count * 4);
+        std::memset(words + s.count, 0, sizeof words - s.count * 4);
+    }
+    std::uint64_t hash() const { return quickHash(words, count); }
+    bool operator==(const SubtreeKey& o) const { return count == o.count && std::memcmp(words, o.words, count * 4) == 0; }
+};
+
+/// Records kept per key (a primitive's exact numbers by default; SubtreeKey for whole subtrees).
+template <class Record, class Key = PrimitiveKey>
 class PrimitiveCache {
 public:
     /// What a lookup finds: the records in the order they were written, and the number stored with them.
@@ -79,7 +90,7 @@ public:
     void prefetch(std::uint64_t h) const { __builtin_prefetch(&entries_[(h & mask_) * kWays]); }
 
     /// The records stored for `key` (hash `h` = key.hash()) into `out`; false if there are none.
-    bool find(const PrimitiveKey& key, std::uint64_t h, Found& out) {
+    bool find(const Key& key, std::uint64_t h, Found& out) {
         Entry* bucket = &entries_[(h & mask_) * kWays];
         for (std::size_t w = 0; w < kWays; ++w) {
             Entry& e = bucket[w];
@@ -104,7 +115,7 @@ public:
 
     /// Store `records` (and `extra`) for `key`, replacing the least recently used entry of its
     /// bucket. A primitive with more records than a quarter of the ring is not stored.
-    void store(const PrimitiveKey& key, std::uint64_t h, std::span<const Record> records, std::uint64_t extra) {
+    void store(const Key& key, std::uint64_t h, std::span<const Record> records, std::uint64_t extra) {
         const std::size_t n = records.size();
         const bool wantsMore = n > ringSize_ / 4 || (head_ - ringStart_ > ringSize_ &&
                                                       stale_ * 16 > stats_.hits + stats_.misses - lookupsAtGrowth_);
@@ -167,7 +178,7 @@ private:
     /// count of an entry that wrote no record (a primitive reaching no pixel or voxel)
     static constexpr std::uint32_t kEmpty = UINT32_MAX;
     struct Entry {  // all zero: free
-        PrimitiveKey key;
+        Key key;
         std::uint64_t hash, at, extra, used;
         std::uint32_t count;  ///< 0: free; kEmpty: stored with no records
     };
@@ -222,19 +233,21 @@ struct CacheProbe {
     std::uint64_t hash;
 };
 
-/// Draw every primitive through `cache`: `drawDirect(p)` first, which draws a primitive that is
-/// cheaper to draw than to look up and returns true (such primitives never touch the cache);
-/// then `replay(found)` for one stored before; otherwise `compute(p, records)` draws it,
-/// appending what it wrote to `records` (cleared first), and returns the number to keep with them
-/// (Found::extra). Drawing is order-independent (OR of rows), so the three may interleave.
+/// Draw every primitive through `cache`: `drawDirect(p, i)` first (i: its index), which draws a
+/// primitive that is cheaper to draw than to look up, or skips one drawn otherwise, and returns
+/// true (such primitives never touch the cache); then `replay(found, i)` for one stored before;
+/// otherwise `compute(p, records)` draws it, appending what it wrote to `records` (cleared
+/// first), and returns the number to keep with them (Found::extra), and `computed(records,
+/// extra, i)` sees what was kept. Drawing is order-independent (OR of rows), so they may
+/// interleave; replay and compute are called in the order of the primitives.
 /// `probes` and `records` are scratch space kept between calls (no allocation once warm).
-template <class Record, class DrawDirect, class Replay, class Compute>
+template <class Record, class DrawDirect, class Replay, class Compute, class Computed>
 void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive>& primitives,
                       std::vector<CacheProbe>& probes, std::vector<Record>& records, DrawDirect&& drawDirect,
-                      Replay&& replay, Compute&& compute) {
+                      Replay&& replay, Compute&& compute, Computed&& computed) {
     probes.clear();
     for (std::size_t i = 0; i < primitives.size(); ++i) {  // the lookups wait on memory: ask for it all first
-        if (drawDirect(primitives[i])) continue;
+        if (drawDirect(primitives[i], i)) continue;
         const std::uint64_t h = PrimitiveKey(primitives[i]).hash();
         cache.prefetch(h);
         probes.push_back({std::uint32_t(i), h});
@@ -244,12 +257,13 @@ void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive
         const Primitive& p = primitives[probe.index];
         const PrimitiveKey key(p);
         if (cache.find(key, probe.hash, found)) {
-            replay(found);
+            replay(found, probe.index);
             continue;
         }
         records.clear();
         const std::uint64_t extra = compute(p, records);
         cache.store(key, probe.hash, records, extra);
+        computed(std::span<const Record>(records), extra, probe.index);
     }
 }
 

@@ -8,9 +8,7 @@
 namespace shapevo {
 
 void Scorer::checkDerivation(const Chromosome& c, ScoreWorkspace& w) const {
-    std::unique_ptr<SubtreeMemo> memo = std::move(w.derive.memo);  // off for one derivation
-    const DeriveStatus status = derive(grammar(), c, w.checkGeometry, w.derive, maxPrimitives_);
-    w.derive.memo = std::move(memo);
+    const DeriveStatus status = derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);  // no memo
     const auto& a = w.geometry.primitives;
     const auto& b = w.checkGeometry.primitives;
     std::size_t differ = a.size() == b.size() ? a.size() : 0;

@@ -30,7 +30,8 @@ struct ScoreWorkspace {
     virtual std::size_t cacheBytesUsed() const { return derive.memo ? derive.memo->bytesUsed() : 0; }
     DeriveScratch derive;
     Geometry geometry;
-    Geometry checkGeometry;  ///< the checking mode's derivation without the memo
+    DeriveScratch checkDerive;  ///< the checking mode's derivation without the memo...
+    Geometry checkGeometry;     ///< ...and its geometry
 };
 
 /// Of an incremental-scoring budget of `bytes` (score.cache_mb), the subtree memo's share (a

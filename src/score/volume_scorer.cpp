@@ -9,12 +9,12 @@ VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
     VoxelCounts counts;
     drawThroughCache(
         *w.cache, w.geometry.primitives, w.probes, w.runs,
-        [&](const Primitive& p) {
+        [&](const Primitive& p, std::size_t) {
             if (!Voxelizer::drawsAsFastAsReplay(p)) return false;
             w.voxelizer.add(p, w.geometry.meshes, counts);
             return true;
         },
-        [&](const PrimitiveCache<VoxelRun>::Found& found) {
+        [&](const PrimitiveCache<VoxelRun>::Found& found, std::size_t) {
             w.voxelizer.replay(found.records);
             counts.outside += found.extra;  // voxel centres outside the grid count once per primitive
         },
@@ -22,7 +22,8 @@ VoxelCounts VolumeScorer::scoreCached(Workspace& w) const {
             const std::uint64_t outsideBefore = counts.outside;
             w.voxelizer.addRecorded(p, w.geometry.meshes, counts, runs);
             return counts.outside - outsideBefore;
-        });
+        },
+        [](std::span<const VoxelRun>, std::uint64_t, std::size_t) {});
     if (w.cache->full()) noteCacheFull();
     counts = w.voxelizer.countAgainst(target_, counts);
     if (checksIncremental()) {

@@ -86,14 +86,16 @@ TEST(SubtreeMemo, DerivesEveryShippedGrammarsChildrenBitForBitAsWithout) {
         // As many models as take a moment: a rule file's one gene can make 100,000 primitives.
         derive(g, modelsAndChildren(g, 1, 5).front(), a, plain);
         const std::size_t count = std::clamp<std::size_t>(200000 / (a.primitives.size() + 1), 30, 600);
+        std::uint32_t mostGenes = 0;
         for (const Chromosome& c : modelsAndChildren(g, count, 5)) {
             const DeriveStatus sa = derive(g, c, a, plain), sb = derive(g, c, b, memoized);
             ASSERT_EQ(int(sa), int(sb));
             ASSERT_TRUE(identical(a, b));
+            mostGenes = std::max(mostGenes, c.genes);
         }
+        // Children share subtrees: every gene's but the root's (some rule files make one gene).
         const SubtreeMemo::Stats& st = memoized.memo->stats();
-        // Children share subtrees (or one gene's output is too large to keep).
-        if (g.textures.empty()) EXPECT_GT(st.hits + st.tooLarge, 25u) << st.hits << " hits, " << st.tooLarge << " too large";
+        if (g.textures.empty() && mostGenes > 3) EXPECT_GT(st.hits, 25u);
     }
 }
 
@@ -160,11 +162,12 @@ TEST(SubtreeMemo, AChildFindsItsParentsUnchangedSubtrees) {
     derive(g, parent, geometry, scratch);
     const SubtreeMemo::Stats first = scratch.memo->stats();
     EXPECT_EQ(first.hits, 0u);
-    EXPECT_EQ(first.stored, parent.genes);  // one subtree per gene
+    EXPECT_EQ(first.stored, parent.genes - 1);  // one subtree per gene but the root (a whole model)
 
-    derive(g, parent, geometry, scratch);  // the same model: its whole tree at once
-    EXPECT_EQ(scratch.memo->stats().hits, 1u);
-    EXPECT_EQ(scratch.memo->stats().misses, first.misses);
+    derive(g, parent, geometry, scratch);  // the same model: the root's children's subtrees at once
+    EXPECT_GT(scratch.memo->stats().hits, 0u);
+    EXPECT_LE(scratch.memo->stats().hits, 3u);
+    EXPECT_EQ(scratch.memo->stats().stored, first.stored);
 
     Chromosome child = parent;
     ASSERT_TRUE(alter(g, child, rng));

@@ -13,6 +13,7 @@
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
 #include "../small_tree_grammar.hpp"
+#include "../test_support.hpp"
 #include "score/primitive_cache.hpp"
 #include "score/volume_scorer.hpp"
 #include "random_primitives.hpp"
@@ -223,6 +224,34 @@ TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOr
     }
     EXPECT_GT(c.cache->stats().hits, c.cache->stats().misses);  // children share most primitives
     EXPECT_GT(c.cache->stats().misses, 1000u);
+}
+
+TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
+    const Grammar g = loadGrammar(test::sourcePath("grammars/tree.grammar"));
+    const Camera camera = treeCamera();
+    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
+    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 * 7 + i % 160) % 5 ? 255 : 0;
+    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    cached.setIncremental(4 << 20, true);  // checking: any difference throws
+    auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
+    auto& c = static_cast<ImageScorer::Workspace&>(*wc);
+    Rng rng(5);
+    const GenomeLimits limits{300};
+    GenomeScratch scratch;
+    std::vector<Chromosome> models(4);
+    for (Chromosome& m : models) growRandomLength(g, m, rng, limits, 60, 120);
+    for (int i = 0; i < 2000; ++i) {
+        Chromosome& child = models[rng.below(4)];  // each model walks on by one operator
+        if (rng.below(2) == 0) alter(g, child, rng);
+        else if (!grow(g, child, rng, limits)) cut(g, child, rng, scratch);
+        SilhouetteCounts a, b;
+        ASSERT_EQ(full.fitness(child, static_cast<ImageScorer::Workspace&>(*wf), &a), cached.fitness(child, c, &b));
+        ASSERT_EQ(a.covered, b.covered);
+        ASSERT_EQ(a.hit, b.hit);
+    }
+    EXPECT_GT(c.subtrees->stats().hits, 1000u);  // whole subtrees replayed at once
+    EXPECT_GT(c.derive.memo->stats().hits, 1000u);  // and derived once
 }
 
 TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
