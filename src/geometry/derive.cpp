@@ -216,7 +216,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
     stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
     std::size_t tasks = 0;
     const std::size_t maxTasks = 4 * maxPrimitives + 1024;  // mirrors without boxes multiply too
-    SubtreeMemo* const memo = g.textures.empty() ? scratch.memo.get() : nullptr;
+    SubtreeMemo* const memo = g.textures.empty() && scratch.memo && scratch.memo->on() ? scratch.memo.get() : nullptr;
     scratch.open.clear();
     if (memo) memo->identify(g, c);
     for (;;) {

@@ -68,6 +68,11 @@ public:
     void store(const Start& start, const Primitive* primitives, const Appearance* looks, std::uint32_t count,
                std::uint32_t tasks);
 
+    /// Whether derive uses it (on until turnOff(): its owner may find it does not pay, as on a
+    /// spaceship's cheap boxes; results never depend on it, only the time).
+    bool on() const { return !off_; }
+    void turnOff() { off_ = true; }
+
     const Stats& stats() const { return stats_; }
     /// Bytes of entries and records written so far (what the system had to map).
     std::size_t bytesUsed() const { return contents_.bytesUsed() + outputs_.bytesUsed(); }
@@ -103,6 +108,7 @@ private:
 
     Ring contents_, outputs_;
     std::uint64_t lastNumber_ = 0;
+    bool off_ = false;
     std::vector<std::uint64_t> contentAt_;  ///< per word position of the last identify(): its gene's number
     std::vector<std::uint32_t> genes_, key_;  // scratch
     Stats stats_;

@@ -1,11 +1,33 @@
-// Scorer: the checking mode of incremental derivation (the rest of the interface is in the header).
+// Scorer: the trial and the checking mode of incremental derivation (the rest of the interface
+// is in the header).
 #include "score/scorer.hpp"
 
+#include <chrono>
 #include <string>
 
 #include "score/primitive_cache.hpp"
 
 namespace shapevo {
+
+DeriveStatus Scorer::deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const {
+    using Clock = std::chrono::steady_clock;
+    const std::uint32_t n = ++w.memoTrial;
+    if (n <= kMemoTrialStart || n % 8 != 0) return derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+    // Alternately first and second: whichever runs second finds the chromosome in the cache.
+    const bool memoFirst = n % 16 == 0;
+    DeriveStatus status = DeriveStatus::Complete;
+    const Clock::time_point t0 = Clock::now();
+    if (memoFirst) status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+    else derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);  // the same geometry, without
+    const Clock::time_point t1 = Clock::now();
+    if (memoFirst) derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);
+    else status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+    const Clock::time_point t2 = Clock::now();
+    w.memoSeconds += std::chrono::duration<double>(memoFirst ? t1 - t0 : t2 - t1).count();
+    w.plainSeconds += std::chrono::duration<double>(memoFirst ? t2 - t1 : t1 - t0).count();
+    if (n == kMemoTrialEnd && w.memoSeconds > w.plainSeconds) w.derive.memo->turnOff();
+    return status;
+}
 
 void Scorer::checkDerivation(const Chromosome& c, ScoreWorkspace& w) const {
     const DeriveStatus status = derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);  // no memo

@@ -30,7 +30,11 @@ struct ScoreWorkspace {
     virtual std::size_t cacheBytesUsed() const { return derive.memo ? derive.memo->bytesUsed() : 0; }
     DeriveScratch derive;
     Geometry geometry;
-    DeriveScratch checkDerive;  ///< the checking mode's derivation without the memo...
+    /// Derivations with the memo so far, and of the sampled ones the seconds with and without it
+    /// (Scorer::deriveCounted's trial: the memo stays on only where it is faster).
+    std::uint32_t memoTrial = 0;
+    double memoSeconds = 0, plainSeconds = 0;
+    DeriveScratch checkDerive;  ///< the checking mode's (and the trial's) derivation without the memo...
     Geometry checkGeometry;     ///< ...and its geometry
 };
 
@@ -97,7 +101,10 @@ protected:
     }
     /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
     bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
-        w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+        if (w.derive.memo && w.derive.memo->on() && w.memoTrial < kMemoTrialEnd) [[unlikely]]
+            w.status = deriveOnTrial(c, w);
+        else
+            w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
         if (checkIncremental_ && w.derive.memo) checkDerivation(c, w);
         switch (w.status) {
         case DeriveStatus::Complete: return true;
@@ -109,6 +116,11 @@ protected:
     }
 
 private:
+    /// The memo's trial: after kMemoTrialStart derivations (a warm memo), every 8th of the next
+    /// ones up to kMemoTrialEnd is derived both with and without the memo, timed; if the memo's
+    /// total is the larger, it is turned off for this workspace. Only the time depends on it.
+    static constexpr std::uint32_t kMemoTrialStart = 1024, kMemoTrialEnd = 3072;
+    DeriveStatus deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const;
     /// Derive `c` again without the memo; throw IncrementalMismatch unless it gives w.geometry and w.status.
     void checkDerivation(const Chromosome& c, ScoreWorkspace& w) const;
 

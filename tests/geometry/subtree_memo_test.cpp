@@ -179,6 +179,26 @@ TEST(SubtreeMemo, AChildFindsItsParentsUnchangedSubtrees) {
     EXPECT_LT(after.stored - before.stored, 30u);
 }
 
+TEST(SubtreeMemo, AMemoTurnedOffIsNeitherAskedNorFilled) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const std::vector<Chromosome> models = modelsAndChildren(g, 50, 2);
+    DeriveScratch plain, memoized;
+    memoized.memo = std::make_unique<SubtreeMemo>(4 << 20);
+    Geometry a, b;
+    for (const Chromosome& c : models) derive(g, c, b, memoized);
+    const SubtreeMemo::Stats before = memoized.memo->stats();
+    ASSERT_GT(before.stored, 0u);
+    memoized.memo->turnOff();
+    for (const Chromosome& c : models) {
+        derive(g, c, a, plain);
+        derive(g, c, b, memoized);
+        ASSERT_TRUE(identical(a, b));
+        EXPECT_TRUE(memoized.reused.empty());
+    }
+    EXPECT_EQ(memoized.memo->stats().hits + memoized.memo->stats().misses, before.hits + before.misses);
+    EXPECT_EQ(memoized.memo->stats().stored, before.stored);
+}
+
 TEST(SubtreeMemo, EqualContentsShareANumberWhereverTheyAreAndOthersDoNot) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     Rng rng(21);
