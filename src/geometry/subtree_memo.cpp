@@ -34,12 +34,16 @@ SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const Appear
 }
 
 SubtreeMemo::Ring::Ring(std::size_t bytes) {
-    bytes = std::max<std::size_t>(bytes, 128 * 1024);
+    static_assert(sizeof(Entry) % 8 == 0);
+    bytes = std::max<std::size_t>(bytes, 128 * 1024) / 8 * 8;
     std::size_t buckets = 1;
     while (buckets * 2 * kWays * sizeof(Entry) <= bytes / 8) buckets *= 2;
-    entries_ = ZeroPages<Entry>(buckets * kWays);
     mask_ = buckets - 1;
-    ring_ = ZeroPages<std::uint32_t>((bytes - buckets * kWays * sizeof(Entry)) / 4);
+    const std::size_t tableBytes = buckets * kWays * sizeof(Entry);
+    memory_ = ZeroPages<std::uint64_t>(bytes / 8);
+    entries_ = reinterpret_cast<Entry*>(&memory_[0]);
+    ring_ = reinterpret_cast<std::uint32_t*>(&memory_[tableBytes / 8]);
+    ringSize_ = (bytes - tableBytes) / 4;
 }
 
 SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::find(std::uint64_t h, const std::uint32_t* key, std::uint32_t n) {
@@ -54,7 +58,7 @@ SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::find(std::uint64_t h, const std::ui
 }
 
 SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::add(std::uint64_t h, std::size_t words, std::uint32_t*& records) {
-    const std::size_t size = ring_.size();
+    const std::size_t size = ringSize_;
     if (words == 0 || words > size / 8) return nullptr;
     if (head_ % size + words > size) head_ += size - head_ % size;  // contiguous: skip the ring's tail
     const std::uint64_t at = head_;

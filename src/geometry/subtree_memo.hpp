@@ -92,16 +92,20 @@ private:
         /// Room for `words` words (null if more than an eighth of the ring) and its entry, filled
         /// with `h`; the caller writes both.
         Entry* add(std::uint64_t h, std::size_t words, std::uint32_t*& records);
-        const std::uint32_t* records(const Entry& e) const { return &ring_[e.at % ring_.size()]; }
+        const std::uint32_t* records(const Entry& e) const { return &ring_[e.at % ringSize_]; }
         std::size_t bytesUsed() const {
-            return entries_.size() * sizeof(Entry) + std::min<std::uint64_t>(head_, ring_.size()) * 4;
+            return (mask_ + 1) * kWays * sizeof(Entry) + std::min<std::uint64_t>(head_, ringSize_) * 4;
         }
 
     private:
         static constexpr std::size_t kWays = 4;
-        bool live(const Entry& e) const { return e.words > 0 && head_ - e.at <= ring_.size(); }
-        ZeroPages<Entry> entries_;
-        ZeroPages<std::uint32_t> ring_;
+        bool live(const Entry& e) const { return e.words > 0 && head_ - e.at <= ringSize_; }
+        // Entries and ring in one mapping: large enough for huge pages (base/zero_pages.hpp), so
+        // that the table's scattered first touches cost a few page faults, not one per 4 KB.
+        ZeroPages<std::uint64_t> memory_;
+        Entry* entries_ = nullptr;
+        std::uint32_t* ring_ = nullptr;
+        std::size_t ringSize_ = 0;
         std::size_t mask_ = 0;
         std::uint64_t head_ = 0, clock_ = 0;
     };
