@@ -1,7 +1,7 @@
 // IncrementalSettings: the [score] keys of incremental scoring (Scorer::setIncremental).
-//   score.incremental       = true   replay the rows of primitives scored before (false: draw every one)
-//   score.cache_mb          = 64     the cache's size per evaluation thread, in MiB; past it the
-//                                    oldest primitives are forgotten and drawn again when they return
+//   score.incremental       = true   reuse subtrees and primitives derived and drawn before (false: derive and draw every one)
+//   score.cache_mb          = 128    the caches' size per evaluation thread, in MiB (half for
+//                                    primitives); past it the oldest are forgotten and drawn again
 //   score.check_incremental = false  also score every model the full way; stop on any difference
 #pragma once
 #include <cstddef>
@@ -10,7 +10,7 @@ namespace shapevo {
 
 struct IncrementalSettings {
     bool enabled = true;
-    double cacheMb = 64;
+    double cacheMb = 128;
     bool check = false;
     /// The cache bytes per thread that Scorer::setIncremental takes (0: off).
     std::size_t cacheBytes() const { return enabled ? std::size_t(cacheMb * 1024 * 1024) : 0; }

@@ -119,7 +119,7 @@ private:
     /// The memo's trial: after kMemoTrialStart derivations (a warm memo), every 8th of the next
     /// ones up to kMemoTrialEnd is derived both with and without the memo, timed; if the memo's
     /// total is the larger, it is turned off for this workspace. Only the time depends on it.
-    static constexpr std::uint32_t kMemoTrialStart = 256, kMemoTrialEnd = 768;
+    static constexpr std::uint32_t kMemoTrialStart = 2048, kMemoTrialEnd = 3072;
     DeriveStatus deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const;
     /// Derive `c` again without the memo; throw IncrementalMismatch unless it gives w.geometry and w.status.
     void checkDerivation(const Chromosome& c, ScoreWorkspace& w) const;

@@ -96,7 +96,7 @@ TEST(IncrementalCheck, SeededRunsAreByteIdenticalWithTheSwitchOnAndOff) {
 TEST(IncrementalCheck, AFullCacheIsSaidOnceAndChangesNothing) {
     TempDir dir;
     std::string best[2], curve[2], output[2];
-    const char* sizes[2] = {"1", "64"};
+    const char* sizes[2] = {"1", "128"};  // tiny, and the default
     for (int i = 0; i < 2; ++i) {
         const std::string out = dir.file(std::string("mb") + sizes[i]);
         const auto r = runShapevo("run " + sourcePath("configs/tree-logo.toml") +
