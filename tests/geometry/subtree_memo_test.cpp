@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../model_stream.hpp"
 #include "../small_tree_grammar.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
@@ -38,28 +39,13 @@ namespace {
 std::vector<Chromosome> modelsAndChildren(const Grammar& g, std::size_t count, std::uint64_t seed) {
     Rng rng(seed);
     const GenomeLimits limits{120};
-    GenomeScratch scratch;
     std::vector<Chromosome> out;
     for (std::uint32_t i = 0; i < 6; ++i) {
         Chromosome c;
         growRandomLength(g, c, rng, limits, 3 + 4 * i, 3 + 8 * i);
         out.push_back(c);
     }
-    while (out.size() < count) {
-        Chromosome child = out[out.size() - 1 - rng.below(6)];
-        switch (rng.below(5)) {
-        case 0: grow(g, child, rng, limits); break;
-        case 1: cut(g, child, rng, scratch); break;
-        case 2: alter(g, child, rng); break;
-        case 3: break;  // a duplicate
-        default: {
-            const Chromosome a = child, b = out[rng.below(std::uint32_t(out.size()))];
-            Chromosome childB;
-            crossover(g, a, b, child, childB, rng, limits, 5, scratch);
-        }
-        }
-        out.push_back(child);
-    }
+    test::appendChildren(g, out, count, rng, limits, 6, true);
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include "genome/operators.hpp"
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
+#include "../model_stream.hpp"
 #include "../small_tree_grammar.hpp"
 #include "../test_support.hpp"
 #include "score/primitive_cache.hpp"
@@ -178,7 +179,6 @@ Camera treeCamera() {
 std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
     Rng rng(17);
     const GenomeLimits limits{200};
-    GenomeScratch scratch;
     std::vector<Chromosome> out;
     for (std::size_t i = 0; i < 8; ++i) {
         Chromosome c;
@@ -186,20 +186,7 @@ std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
         }
         out.push_back(c);
     }
-    while (out.size() < count) {
-        Chromosome child = out[out.size() - 1 - rng.below(8)];
-        switch (rng.below(4)) {
-        case 0: grow(g, child, rng, limits); break;
-        case 1: cut(g, child, rng, scratch); break;
-        case 2: alter(g, child, rng); break;
-        default: {
-            const Chromosome a = child, b = out[rng.below(std::uint32_t(out.size()))];
-            Chromosome childB;
-            crossover(g, a, b, child, childB, rng, limits, 5, scratch);
-        }
-        }
-        out.push_back(child);
-    }
+    test::appendChildren(g, out, count, rng, limits, 8, false);
     return out;
 }
 
