@@ -18,9 +18,9 @@ public:
     struct Workspace : ScoreWorkspace {
         /// cacheBytes > 0: keep the primitives' voxel rows (incremental scoring, Scorer::setIncremental).
         explicit Workspace(const GridSpec& grid, std::size_t cacheBytes = 0) : voxelizer(grid) {
-            if (cacheBytes == 0) return;
-            derive.memo = std::make_unique<SubtreeMemo>(subtreeMemoBytes(cacheBytes));
-            cache.emplace(cacheBytes - subtreeMemoBytes(cacheBytes));
+            // No subtree memo here: a voxel grid's scoring dwarfs derivation, and the memo's
+            // first memory cost a spaceship more than it saved (README "Incremental evaluation").
+            if (cacheBytes > 0) cache.emplace(cacheBytes);
         }
         Voxelizer voxelizer;
         std::optional<PrimitiveCache<VoxelRun>> cache;
