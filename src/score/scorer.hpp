@@ -39,7 +39,8 @@ struct ScoreWorkspace {
 };
 
 /// Of an incremental-scoring budget of `bytes` (score.cache_mb), the subtree memo's share (a
-/// quarter; geometry/subtree_memo.hpp); the rest is the primitive cache's.
+/// quarter; geometry/subtree_memo.hpp). The image scorer gives another quarter to whole subtrees'
+/// words and the rest to its primitive cache; the volume scorer has no memo.
 inline std::size_t subtreeMemoBytes(std::size_t bytes) { return bytes / 4; }
 
 /// The checking mode of incremental scoring found a model whose counts differ between the
