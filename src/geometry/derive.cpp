@@ -172,9 +172,10 @@ namespace {
     if (memo.find(start, found) && first + found.count <= maxPrimitives &&
         tasks - 1 + found.tasks <= maxTasks) {
         out.primitives.resize(first + found.count);
-        std::memcpy(static_cast<void*>(out.primitives.data() + first), found.primitives,
-                    std::size_t(found.count) * sizeof(Primitive));
-        if (g.hasAppearance) {
+        if (found.count > 0)  // (data() may be null when there are none)
+            std::memcpy(static_cast<void*>(out.primitives.data() + first), found.primitives,
+                        std::size_t(found.count) * sizeof(Primitive));
+        if (g.hasAppearance && found.count > 0) {
             out.appearance.resize(first + found.count);
             std::memcpy(static_cast<void*>(out.appearance.data() + first), found.looks,
                         std::size_t(found.count) * sizeof(Appearance));

@@ -100,7 +100,7 @@ void SubtreeMemo::identify(const Grammar& g, const Chromosome& c) {
             *key++ = std::uint32_t(child);
             *key++ = std::uint32_t(child >> 32);
         }
-        std::memcpy(key, &c.words[Chromosome::paramWord(pos, r)], std::size_t(r.paramFloats) * 4);
+        std::memcpy(key, c.words.data() + Chromosome::paramWord(pos, r), std::size_t(r.paramFloats) * 4);
         const std::uint64_t h = quickHash(key_.data(), n);
         if (const Ring::Entry* e = contents_.find(h, key_.data(), n); e && e->words == n) {
             contentAt_[pos] = e->value;
@@ -141,8 +141,9 @@ void SubtreeMemo::store(const Start& start, const Primitive* primitives, const A
     }
     std::memcpy(rec, start.words, start.count * 4);
     rec += start.count;
-    std::memcpy(rec, primitives, std::size_t(count) * sizeof(Primitive));
-    if (looks) std::memcpy(rec + std::size_t(count) * kPrimitiveWords, looks, std::size_t(count) * sizeof(Appearance));
+    if (count > 0) std::memcpy(rec, primitives, std::size_t(count) * sizeof(Primitive));  // (null when none)
+    if (looks && count > 0)
+        std::memcpy(rec + std::size_t(count) * kPrimitiveWords, looks, std::size_t(count) * sizeof(Appearance));
     e->value = tasks;
     e->count = count;
     ++stats_.stored;
