@@ -6,6 +6,8 @@
 //  - BM_ImageScoreCylinders: the same trees with cylinders for leaves too (all one kind).
 //  - BM_LargeTree/<part>: one 50,000-gene tree chromosome (every branch has three children,
 //    breadth first); part 0 = derive + score (ImageScorer::fitness), 1 = derive only, 2 = score only.
+//  - BM_LargeTreeChild/op:<k>/incremental:<0|1>: children of that tree by one operator (0 alter,
+//    1 grow, 2 cut), scored in full or incrementally after the parent (issue 15's 0.5 ms line).
 //  - BM_RasterizeKind/kind:<k>: SilhouetteRaster::add + score of 20 random rotated primitives of
 //    one kind (0 box, 1 cylinder, 2 cone, 3 sphere, 5 roof, 6 paraboloid; half extents 0.1..0.5
 //    around the tree's place in the view, fixed seed), to compare the kinds' outline costs.
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "genome/operators.hpp"
+#include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
 
@@ -198,6 +201,50 @@ void BM_LargeTree(benchmark::State& state) {
     state.SetLabel(part == 0 ? "derive + score" : part == 1 ? "derive only" : "score only");
 }
 
+/// Children of the 50,000-gene tree, one operator each (0 alter: new parameters for one random
+/// gene; 1 grow: a new subtree; 2 cut: a subtree removed), scored in full or incrementally
+/// (score.cache_mb's default, 128 MB, on one workspace that has scored the parent first). Making
+/// the child (a 50,000-gene copy and the operator) is not timed. Counters: ms per child, the
+/// cache memory written, and the share of primitives the child's derivation copied from its memo.
+void BM_LargeTreeChild(benchmark::State& state) {
+    const int op = int(state.range(0));
+    const bool incremental = state.range(1) != 0;
+    const Camera camera = paperCamera();
+    const Grammar& g = tree(false);
+    const ImageScorer scorer(g, camera, mickey(), VolumeFitnessSettings{});
+    static const Chromosome parent = largeTree(50000);
+    ImageScorer::Workspace ws(camera, incremental ? std::size_t(128) << 20 : 0);
+    if (state.range(1) == 2) ws.derive.memo->turnOff();  // the primitive caches alone
+    SilhouetteCounts counts;
+    scorer.fitness(parent, ws, &counts);  // the parent: a warm cache, as in a run
+    Rng rng(11);
+    GenomeScratch scratch;
+    const GenomeLimits limits{60000};
+    Chromosome child;
+    std::uint64_t primitives = 0, copied = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        do {
+            child = parent;
+        } while (!(op == 0 ? alter(g, child, rng) : op == 1 ? grow(g, child, rng, limits) : cut(g, child, rng, scratch)));
+        state.ResumeTiming();
+        benchmark::DoNotOptimize(scorer.fitness(child, ws, &counts));
+        primitives += ws.geometry.primitives.size();
+        for (const DeriveScratch::ReusedSubtree& r : ws.derive.reused) copied += r.count;
+    }
+    const double n = double(state.iterations());
+    if (ws.derive.memo) {
+        const SubtreeMemo::Stats m = ws.derive.memo->stats();
+        state.counters["memo_hits"] = double(m.hits) / n;
+        state.counters["memo_misses"] = double(m.misses) / n;
+        state.counters["memo_too_large"] = double(m.tooLarge);
+    }
+    state.counters["primitives"] = double(primitives) / n;
+    state.counters["copied"] = primitives ? double(copied) / double(primitives) : 0.0;
+    state.counters["cache_MB"] = double(ws.cacheBytesUsed()) / (1 << 20);
+    state.SetLabel(std::string(op == 0 ? "alter" : op == 1 ? "grow" : "cut") + (!incremental ? ", full" : state.range(1) == 1 ? ", incremental" : ", incremental without the memo"));
+}
+
 double between(Rng& rng, double lo, double hi) { return lo + (hi - lo) * rng.uniform(); }
 
 void BM_RasterizeKind(benchmark::State& state) {
@@ -240,6 +287,8 @@ BENCHMARK(BM_ImageScore);
 BENCHMARK(BM_ImageScoreCylinders);
 BENCHMARK(BM_ImageDeriveScore);
 BENCHMARK(BM_LargeTree)->ArgName("part")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+// op x {full, incremental}: the two modes of one operator next to each other
+BENCHMARK(BM_LargeTreeChild)->ArgNames({"op", "incremental"})->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -8,6 +8,15 @@
 
 namespace shapevo::test {
 
+/// A root gene of the grammar's start rule with every optional child slot left empty, its
+/// parameters drawn from the prior with `seed`.
+inline Chromosome rootOnly(const Grammar& g, std::uint64_t seed = 1) {
+    Rng rng(seed);
+    Chromosome c;
+    plantRoot(g, c, rng);
+    return c;
+}
+
 /// Append children to `models` until it holds `count`: each one made from one of the last
 /// `recent` models by a random operator (crossover with any earlier model); with `duplicates`,
 /// one in five is an unchanged copy.

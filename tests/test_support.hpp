@@ -1,10 +1,15 @@
 // Helpers shared by the tests: paths into the source tree and a temporary folder per test.
 #pragma once
 #include <filesystem>
+#include <functional>
+#include <sstream>
+#include <vector>
 #include <unistd.h>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "base/input_error.hpp"
 
 namespace shapevo::test {
 
@@ -122,6 +127,35 @@ inline std::string configWithGrammar(const TempDir& dir, const std::string& gram
     replaceAll("\"../targets/", "\"" + sourcePath("targets/"));
     writeFile(dir.file(name + ".toml"), cfg);
     return dir.file(name + ".toml");
+}
+
+/// The lines of `text`, without their line ends.
+inline std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+}
+
+/// n right-leaning additions "1 + (1 + (...))": an expression that needs an evaluation stack of n + 1.
+inline std::string rightNested(int n) {
+    std::string s = "1";
+    for (int i = 0; i < n; ++i) s = "1 + (" + s + ")";
+    return s;
+}
+
+/// Runs `f`, expects an InputError, checks that its message contains every fragment, returns it.
+inline std::string expectInputError(const std::function<void()>& f, const std::vector<std::string>& fragments) {
+    try {
+        f();
+        ADD_FAILURE() << "no InputError thrown";
+    } catch (const InputError& e) {
+        for (const auto& fragment : fragments)
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos)
+                << "message '" << e.what() << "' lacks '" << fragment << "'";
+        return e.what();
+    }
+    return "";
 }
 
 }  // namespace shapevo::test

@@ -47,8 +47,8 @@ void ImageScorer::drawCached(Workspace& w) const {
     PrimitiveCache<WordMask, SubtreeKey>::Found whole;
     for (const DeriveScratch::ReusedSubtree& r : w.derive.reused) {
         if (r.count < kWholeSubtreeMin) continue;
-        Workspace::SubtreeRange range{r.first, r.first + r.count, 0, 0, 0, SubtreeKey(r.start)};
-        range.hash = range.key.hash();
+        // The start's hash is the key's (both quickHash of the same words): not computed twice.
+        const Workspace::SubtreeRange range{r.first, r.first + r.count, r.start.hash, 0, 0, SubtreeKey(r.start)};
         if (w.subtrees->find(range.key, range.hash, whole)) {
             w.raster.replay(whole.records, whole.extra);
             w.replayed.push_back(range);

@@ -58,6 +58,7 @@ struct SubtreeKey {
         std::memcpy(words, s.words, s.count * 4);
         std::memset(words + s.count, 0, sizeof words - s.count * 4);
     }
+    /// Equal to the start's own hash (SubtreeMemo::Start::hash), which callers may use instead.
     std::uint64_t hash() const { return quickHash(words, count); }
     bool operator==(const SubtreeKey& o) const { return count == o.count && std::memcmp(words, o.words, count * 4) == 0; }
 };

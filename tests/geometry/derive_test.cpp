@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "../geometry_compare.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
@@ -13,17 +14,8 @@
 namespace shapevo {
 namespace {
 
-/// Bit-identical primitives (field by field: the struct has padding bytes).
-bool identical(const Geometry& a, const Geometry& b) {
-    if (a.primitives.size() != b.primitives.size()) return false;
-    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
-        const Primitive &p = a.primitives[i], &q = b.primitives[i];
-        if (p.kind != q.kind || std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 ||
-            std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 || std::memcmp(&p.half, &q.half, sizeof p.half) != 0)
-            return false;
-    }
-    return true;
-}
+using test::identical;
+
 
 void expectNear(const glm::vec3& a, const glm::vec3& b) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], 1e-5f) << "component " << i;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "../model_stream.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
@@ -16,12 +17,8 @@
 namespace shapevo {
 namespace {
 
-Chromosome rootOnly(const Grammar& g) {
-    Rng rng(1);
-    Chromosome c;
-    plantRoot(g, c, rng);
-    return c;
-}
+using test::rootOnly;
+
 
 /// A box, then a child rule whose scale is `scale`.
 Grammar withChildScale(const std::string& scale) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "../model_stream.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
@@ -14,13 +15,8 @@
 namespace shapevo {
 namespace {
 
-/// A root gene of `start` with every optional child slot left empty, params from the prior.
-Chromosome rootOnly(const Grammar& g, std::uint64_t seed = 1) {
-    Rng rng(seed);
-    Chromosome c;
-    plantRoot(g, c, rng);
-    return c;
-}
+using test::rootOnly;
+
 
 TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
     const Grammar g = parseGrammar(

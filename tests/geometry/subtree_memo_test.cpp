@@ -12,6 +12,7 @@
 
 #include "../model_stream.hpp"
 #include "../small_tree_grammar.hpp"
+#include "../geometry_compare.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
@@ -20,20 +21,8 @@
 namespace shapevo {
 namespace {
 
-/// Bit-identical primitives and looks, field by field (the struct has a padding byte).
-::testing::AssertionResult identical(const Geometry& a, const Geometry& b) {
-    if (a.primitives.size() != b.primitives.size())
-        return ::testing::AssertionFailure() << a.primitives.size() << " primitives against " << b.primitives.size();
-    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
-        const Primitive &p = a.primitives[i], &q = b.primitives[i];
-        if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, 4) != 0 ||
-            std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 || std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 ||
-            std::memcmp(&p.half, &q.half, sizeof p.half) != 0 || std::memcmp(&p.taperZ, &q.taperZ, 4) != 0)
-            return ::testing::AssertionFailure() << "primitive " << i << " differs";
-    }
-    if (!(a.appearance == b.appearance)) return ::testing::AssertionFailure() << "looks differ";
-    return ::testing::AssertionSuccess();
-}
+using test::identical;
+
 
 /// Random models and a stream of their children by every operator (a GA's stream, in short).
 std::vector<Chromosome> modelsAndChildren(const Grammar& g, std::size_t count, std::uint64_t seed) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "../test_support.hpp"
 #include "grammar/expression.hpp"
 #include "grammar/parser.hpp"
 #include "base/input_error.hpp"
@@ -166,25 +167,19 @@ TEST(GrammarExpression, DivisionByZeroFollowsIeee) {
     EXPECT_TRUE(std::isnan(evalScalar("sqrt(-1)")));
 }
 
-// Nesting n right-leaning additions "1+(1+(...))" needs a stack of n + 1.
-std::string rightNested(int n) {
-    std::string s = "1";
-    for (int i = 0; i < n; ++i) s = "1 + (" + s + ")";
-    return s;
-}
 
 TEST(GrammarExpression, MaxStackRecordsTheDeepestExpression) {
-    const Grammar g = parseGrammar(ruleAround("rotate x " + rightNested(4)), "expr.grammar");
+    const Grammar g = parseGrammar(ruleAround("rotate x " + test::rightNested(4)), "expr.grammar");
     EXPECT_EQ(g.maxStack, 5);
-    EXPECT_FLOAT_EQ(evalScalar(rightNested(4)), 5.0f);
+    EXPECT_FLOAT_EQ(evalScalar(test::rightNested(4)), 5.0f);
 }
 
 TEST(GrammarExpression, StackOfExactlyTheLimitIsAccepted) {
-    const std::string e = rightNested(kMaxExpressionStack - 1);
+    const std::string e = test::rightNested(kMaxExpressionStack - 1);
     const Grammar g = parseGrammar(ruleAround("rotate x " + e), "expr.grammar");
     EXPECT_EQ(g.maxStack, kMaxExpressionStack);
     EXPECT_FLOAT_EQ(evalScalar(e), float(kMaxExpressionStack));
-    EXPECT_THROW(parseGrammar(ruleAround("rotate x " + rightNested(kMaxExpressionStack)), "expr.grammar"), InputError);
+    EXPECT_THROW(parseGrammar(ruleAround("rotate x " + test::rightNested(kMaxExpressionStack)), "expr.grammar"), InputError);
 }
 
 TEST(GrammarExpression, LongLeftLeaningChainsNeedLittleStack) {

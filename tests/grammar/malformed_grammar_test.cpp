@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_support.hpp"
 #include "grammar/expression.hpp"
 #include "grammar/parser.hpp"
 #include "base/input_error.hpp"
@@ -24,12 +25,6 @@ std::ostream& operator<<(std::ostream& os, const Malformed& m) { return os << m.
 // A one-rule grammar "start A / rule A {" whose body starts on line 3, column 3.
 std::string body(const std::string& lines) { return "start A\nrule A {\n" + lines + "\n}\n"; }
 
-// n right-leaning additions "1 + (1 + (...))": needs an evaluation stack of n + 1.
-std::string rightNested(int n) {
-    std::string s = "1";
-    for (int i = 0; i < n; ++i) s = "1 + (" + s + ")";
-    return s;
-}
 
 const std::vector<Malformed>& cases() {
     static const std::vector<Malformed> all = {
@@ -210,7 +205,7 @@ const std::vector<Malformed>& cases() {
         {"FunctionTooFewArguments", body("  rotate x min(1)"), "bad.grammar:3:17", "expected ',' between the arguments of min, found ')'"},
         {"FunctionTooManyArguments", body("  rotate x abs(1, 2)"), "bad.grammar:3:17",
          "expected ')' after the 1 argument(s) of abs, found ','"},
-        {"ExpressionStackTooDeep", body("  rotate x " + rightNested(kMaxExpressionStack)), "bad.grammar:3:12",
+        {"ExpressionStackTooDeep", body("  rotate x " + test::rightNested(kMaxExpressionStack)), "bad.grammar:3:12",
          "expression is too deeply nested (needs a stack of 33, the limit is 32)"},
         {"ExpressionNestingTooDeep", body("  rotate x " + std::string(100, '(') + "1" + std::string(100, ')')), "bad.grammar:3:76",
          "expression is nested too deeply (more than 64 levels"},

@@ -44,7 +44,7 @@ std::string chain(int handles) {  // L -> H0 -> H1 -> ... -> H<handles>, each on
     return s + "H" + std::to_string(handles) + " -> insert_volume(1, 1, 1, 0, 0, 1);\n";
 }
 
-const std::vector<MalformedRule>& cases() {
+const std::vector<MalformedRule>& ruleCases() {
     static const std::vector<MalformedRule> all = {
         // --- functions and their arguments ------------------------------------------------
         {"UnknownFunction", lotThen("L -> extrud(3) {A};\n" + kA), "bad.rule:2:6",
@@ -178,7 +178,7 @@ TEST_P(RuleMalformed, IsRejectedWithItsPlaceAndMessage) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(RuleCases, RuleMalformed, ::testing::ValuesIn(cases()),
+INSTANTIATE_TEST_SUITE_P(RuleCases, RuleMalformed, ::testing::ValuesIn(ruleCases()),
                          [](const ::testing::TestParamInfo<MalformedRule>& info) { return std::string(info.param.name); });
 
 // --- cases with other files: includes, OBJs, textures, inserted rule files -----------------
@@ -256,9 +256,9 @@ INSTANTIATE_TEST_SUITE_P(RuleFileCases, RuleFilesMalformed, ::testing::ValuesIn(
                          [](const ::testing::TestParamInfo<MalformedFiles>& info) { return std::string(info.param.name); });
 
 TEST(RuleMalformedCases, AtLeastThirtyDistinctCases) {
-    EXPECT_GE(cases().size() + fileCases().size(), 30u);
+    EXPECT_GE(ruleCases().size() + fileCases().size(), 30u);
     std::vector<std::string> names;
-    for (const MalformedRule& m : cases()) names.push_back(m.name);
+    for (const MalformedRule& m : ruleCases()) names.push_back(m.name);
     for (const MalformedFiles& m : fileCases()) names.push_back(m.name);
     std::sort(names.begin(), names.end());
     EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "case names must be unique";

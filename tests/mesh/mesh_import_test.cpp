@@ -25,23 +25,12 @@
 namespace shapevo {
 namespace {
 
+using test::expectInputError;
+
 using test::cubeMesh;
 using test::TempDir;
 using test::writeFile;
 
-/// Runs `f`, expects an InputError, checks its message contains every fragment, returns it.
-std::string expectInputError(const std::function<void()>& f, const std::vector<std::string>& fragments) {
-    try {
-        f();
-        ADD_FAILURE() << "no InputError thrown";
-    } catch (const InputError& e) {
-        for (const auto& fragment : fragments)
-            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos)
-                << "message '" << e.what() << "' lacks '" << fragment << "'";
-        return e.what();
-    }
-    return "";
-}
 
 /// The read mesh is the cube of half size `h` moved by `move`: 12 triangles, closed, outward
 /// (volume (2h)^3 > 0), the same bounds.

@@ -15,6 +15,8 @@
 namespace shapevo {
 namespace {
 
+using test::expectInputError;
+
 using test::cubeMesh;
 using test::TempDir;
 using test::writeFile;
@@ -108,17 +110,6 @@ void expectSameTriangleGeometry(const Mesh& expected, const Mesh& actual) {
             EXPECT_EQ(expected.vertices[expected.triangles[t][k]], actual.vertices[actual.triangles[t][k]]) << t;
 }
 
-/// Runs `f`, expects an InputError, and checks that its message contains every fragment.
-void expectInputError(const std::function<void()>& f, const std::vector<std::string>& fragments) {
-    try {
-        f();
-        ADD_FAILURE() << "no InputError thrown";
-    } catch (const InputError& e) {
-        for (const auto& fragment : fragments)
-            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos)
-                << "message '" << e.what() << "' lacks '" << fragment << "'";
-    }
-}
 
 // ---- round trips ----
 

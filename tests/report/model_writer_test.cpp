@@ -43,12 +43,6 @@ Geometry colouredModel() {
     return g;
 }
 
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-}
 
 struct ObjFile {
     std::string mtllib;
@@ -61,7 +55,7 @@ struct ObjFile {
 ObjFile readObj(const std::string& path) {
     ObjFile f;
     std::string current;
-    for (const std::string& l : lines(test::readFile(path))) {
+    for (const std::string& l : test::splitLines(test::readFile(path))) {
         std::istringstream in(l);
         std::string key;
         in >> key;
@@ -86,7 +80,7 @@ ObjFile readObj(const std::string& path) {
 /// newmtl name -> Kd, in file order.
 std::vector<std::pair<std::string, glm::vec3>> readMtl(const std::string& path) {
     std::vector<std::pair<std::string, glm::vec3>> out;
-    for (const std::string& l : lines(test::readFile(path))) {
+    for (const std::string& l : test::splitLines(test::readFile(path))) {
         std::istringstream in(l);
         std::string key;
         in >> key;
@@ -210,7 +204,7 @@ TEST(ObjWriter, ColouredObjNamedLikeItsMtlIsRefused) {
 std::pair<std::vector<std::string>, std::size_t> plyHeader(const std::string& bytes) {
     const std::size_t end = bytes.find("end_header\n");
     EXPECT_NE(end, std::string::npos);
-    return {lines(bytes.substr(0, end + 10)), end + 11};
+    return {test::splitLines(bytes.substr(0, end + 10)), end + 11};
 }
 
 TEST(PlyWriter, HeaderDeclaresUcharRedGreenBlueAfterXyz) {

@@ -39,12 +39,6 @@ Mesh texturedModel() {
     return tessellate(geometry);  // holds copies of what it needs from the grammar
 }
 
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-}
 
 std::size_t countPrefix(const std::vector<std::string>& ls, const std::string& prefix) {
     return std::size_t(std::count_if(ls.begin(), ls.end(), [&](const std::string& l) { return l.rfind(prefix, 0) == 0; }));
@@ -57,7 +51,7 @@ TEST(ObjTexture, VtLinesFacesWithUvIndicesAndMapKdWithTheImageCopied) {
     const Mesh mesh = texturedModel();
     ASSERT_EQ(mesh.textures.size(), 1u);
     writeObj(mesh, dir.file("m.obj"));
-    const auto obj = lines(test::readFile(dir.file("m.obj")));
+    const auto obj = test::splitLines(test::readFile(dir.file("m.obj")));
     EXPECT_EQ(countPrefix(obj, "v "), mesh.vertices.size());
     EXPECT_EQ(countPrefix(obj, "vt "), mesh.vertices.size()) << "one UV per vertex";
     EXPECT_EQ(countPrefix(obj, "f "), mesh.triangles.size());
@@ -80,7 +74,7 @@ TEST(ObjTexture, VtLinesFacesWithUvIndicesAndMapKdWithTheImageCopied) {
             EXPECT_EQ(corner.substr(0, slash), corner.substr(slash + 1)) << "vertex and UV share an index: " << l;
         }
     }
-    const auto mtl = lines(test::readFile(dir.file("m.mtl")));
+    const auto mtl = test::splitLines(test::readFile(dir.file("m.mtl")));
     const auto textured = std::find(mtl.begin(), mtl.end(), "newmtl wall_bricks");
     ASSERT_NE(textured, mtl.end());
     EXPECT_EQ(*(textured + 1), "Kd 1 1 1");
@@ -104,7 +98,7 @@ TEST(ObjTexture, AnIdenticalImageIsUsedAndADifferentOneIsNeverReplaced) {
     EXPECT_EQ(test::readFile((dir.path() / "c" / "bricks.png").string()), "someone else's picture");
     EXPECT_EQ(test::readFile((dir.path() / "c" / "bricks_2.png").string()), "and another one");
     EXPECT_EQ(test::readFile((dir.path() / "c" / "bricks_3.png").string()), test::readFile(kBricks));
-    const auto mtl = lines(test::readFile((dir.path() / "c" / "m.mtl").string()));
+    const auto mtl = test::splitLines(test::readFile((dir.path() / "c" / "m.mtl").string()));
     EXPECT_NE(std::find(mtl.begin(), mtl.end(), "map_Kd bricks_3.png"), mtl.end());
 }
 

@@ -20,7 +20,7 @@ RunSettings parse(const std::string& extra, const std::vector<std::string>& over
     return parseConfig(kImage + extra, "/configs/x.toml", overrides);
 }
 
-InputError errorOf(const std::string& extra, const std::vector<std::string>& overrides = {}) {
+InputError imageKeyError(const std::string& extra, const std::vector<std::string>& overrides = {}) {
     try {
         parse(extra, overrides);
     } catch (const InputError& e) {
@@ -51,12 +51,12 @@ TEST(ImageTargetKeys, FitDefaultsToContainAndCoverToDark) {
 TEST(ImageTargetKeys, EveryFitIsAcceptedByNameAndAnotherNamesTheKey) {
     for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
         EXPECT_EQ(parse(std::string("fit = \"") + targetFitName(f) + "\"\n").image->fit, f);
-    const InputError e = errorOf("fit = \"fill\"\n");
+    const InputError e = imageKeyError("fit = \"fill\"\n");
     EXPECT_EQ(e.file(), "/configs/x.toml");
     EXPECT_EQ(e.where(), "5:7");
     EXPECT_NE(e.message().find("target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"fill\""), std::string::npos)
         << e.message();
-    const InputError set = errorOf("", {"target.fit=squash"});
+    const InputError set = imageKeyError("", {"target.fit=squash"});
     EXPECT_EQ(set.file(), "--set");
     EXPECT_NE(set.message().find("target.fit"), std::string::npos) << set.message();
     EXPECT_EQ(parse("", {"target.fit=stretch"}).image->fit, TargetFit::Stretch);
@@ -66,9 +66,9 @@ TEST(ImageTargetKeys, ScaleIsAShareOfTheFrameForContainAndStretchOnly) {
     EXPECT_EQ(parse("").image->scale, 1.0);
     EXPECT_EQ(parse("scale = 0.6\n").image->scale, 0.6);
     EXPECT_EQ(parse("scale = 0.5\nfit = \"stretch\"\n").image->scale, 0.5);
-    EXPECT_NE(errorOf("scale = 0\n").message().find("target.scale"), std::string::npos);
-    EXPECT_NE(errorOf("scale = 1.5\n").message().find("target.scale"), std::string::npos);
-    const InputError cover = errorOf("scale = 0.5\nfit = \"cover\"\n");
+    EXPECT_NE(imageKeyError("scale = 0\n").message().find("target.scale"), std::string::npos);
+    EXPECT_NE(imageKeyError("scale = 1.5\n").message().find("target.scale"), std::string::npos);
+    const InputError cover = imageKeyError("scale = 0.5\nfit = \"cover\"\n");
     EXPECT_NE(cover.message().find("only target.fit = \"contain\" or \"stretch\""), std::string::npos) << cover.message();
 }
 
@@ -78,17 +78,17 @@ TEST(ImageTargetKeys, CoverPresetsSetTheRangesAndKeepTheAlphaThreshold) {
     expectRule(parse("cover = \"opaque\"\nalpha_threshold = 10\n").image->rule, PixelRule::forCover(TargetCover::Opaque, 10));
     expectRule(parse("alpha_threshold = 10\ncover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light, 10));
     expectRule(parse("cover = \"dark\"\n", {"target.cover=opaque"}).image->rule, PixelRule::forCover(TargetCover::Opaque));
-    const InputError e = errorOf("cover = \"alpha\"\n");
+    const InputError e = imageKeyError("cover = \"alpha\"\n");
     EXPECT_EQ(e.where(), "5:9");
     EXPECT_NE(e.message().find("target.cover must be \"dark\", \"light\" or \"opaque\", got \"alpha\""), std::string::npos)
         << e.message();
 }
 
 TEST(ImageTargetKeys, CoverAndAnExplicitLuminanceRangeTogetherAreAnErrorNamingBoth) {
-    const InputError e = errorOf("cover = \"light\"\nhit_max = 100\n");
+    const InputError e = imageKeyError("cover = \"light\"\nhit_max = 100\n");
     EXPECT_EQ(e.where(), "6:11");  // the later of the two keys
     EXPECT_NE(e.message().find("target.cover and target.hit_max both say which pixels to cover"), std::string::npos) << e.message();
-    const InputError set = errorOf("avoid_min = 200\n", {"target.cover=opaque"});
+    const InputError set = imageKeyError("avoid_min = 200\n", {"target.cover=opaque"});
     EXPECT_EQ(set.file(), "--set");
     EXPECT_NE(set.message().find("target.avoid_min"), std::string::npos) << set.message();
     // without cover the ranges work as before

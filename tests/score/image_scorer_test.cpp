@@ -9,11 +9,10 @@
 #include "grammar/parser.hpp"
 #include "score/image_scorer.hpp"
 #include "../small_tree_grammar.hpp"
+#include "silhouette_test_util.hpp"
 
 namespace shapevo {
 namespace {
-
-const char* const kTree = test::kSmallTree;
 
 Chromosome grown(const Grammar& g, std::uint32_t genes, std::uint64_t seed) {
     Rng rng(seed);
@@ -24,13 +23,6 @@ Chromosome grown(const Grammar& g, std::uint32_t genes, std::uint64_t seed) {
     return c;
 }
 
-Camera treeCamera() {
-    CameraSpec s;
-    s.width = 160, s.height = 120;
-    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
-    return Camera::compile(s, "test");
-}
-
 /// The mask as a target: model pixels black (hit), the rest white (avoid).
 ImageTarget targetFromMask(const std::vector<std::uint8_t>& mask, int w, int h) {
     std::vector<std::uint8_t> lum(mask.size()), alpha(mask.size(), 255);
@@ -39,8 +31,8 @@ ImageTarget targetFromMask(const std::vector<std::uint8_t>& mask, int w, int h) 
 }
 
 TEST(ImageScorer, ModelMatchingItsOwnSilhouetteScoresPerfectly) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
-    const Camera camera = treeCamera();
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const Camera camera = test::smallTreeCamera();
     const Chromosome model = grown(g, 30, 5);
     ImageScorer::Workspace ws(camera);
     std::vector<std::uint8_t> mask;
@@ -64,8 +56,8 @@ TEST(ImageScorer, ModelMatchingItsOwnSilhouetteScoresPerfectly) {
 }
 
 TEST(ImageScorer, WorkspaceReuseLeavesNothingBehindAndCountsEqualDirectDrawing) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
-    const Camera camera = treeCamera();
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const Camera camera = test::smallTreeCamera();
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;  // diagonal stripes
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
@@ -102,9 +94,9 @@ TEST(ImageScorer, WorkspaceReuseLeavesNothingBehindAndCountsEqualDirectDrawing) 
 }
 
 TEST(ImageScorer, TargetOfAnotherSizeIsRefused) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const ImageTarget small = makeImageTarget(4, 4, std::vector<std::uint8_t>(16, 0), std::vector<std::uint8_t>(16, 255), PixelRule{});
-    EXPECT_THROW(ImageScorer(g, treeCamera(), small, VolumeFitnessSettings{}), std::invalid_argument);
+    EXPECT_THROW(ImageScorer(g, test::smallTreeCamera(), small, VolumeFitnessSettings{}), std::invalid_argument);
 }
 
 }  // namespace

@@ -166,15 +166,6 @@ TEST(IncrementalScoring, OverwrittenRecordsAreMissesNeverWrongRecords) {
     EXPECT_EQ(cache.stats().stored, prims.size());
 }
 
-const char* const kTree = test::kSmallTree;
-
-Camera treeCamera() {
-    CameraSpec s;
-    s.width = 160, s.height = 120;
-    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
-    return Camera::compile(s, "test");
-}
-
 /// Random trees and their mutated and crossed children (the shape of a GA's stream of models).
 std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
     Rng rng(17);
@@ -191,8 +182,8 @@ std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
 }
 
 TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOrWarm) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
-    const Camera camera = treeCamera();
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const Camera camera = test::smallTreeCamera();
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
@@ -215,7 +206,7 @@ TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOr
 
 TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/tree.grammar"));
-    const Camera camera = treeCamera();
+    const Camera camera = test::smallTreeCamera();
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 * 7 + i % 160) % 5 ? 255 : 0;
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
@@ -241,9 +232,25 @@ TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
     EXPECT_GT(c.derive.memo->stats().hits, 1000u);  // and derived once
 }
 
+TEST(IncrementalScoring, AWholeSubtreesKeyHashesAsItsStart) {
+    // drawCached takes the start's hash for its key's: the two must never differ.
+    Rng rng(5);
+    const Appearance look{{0.25f, 0.5f, 1.0f}, 2};
+    for (int i = 0; i < 200; ++i) {
+        Scope s;
+        auto u = [&](double lo, double hi) { return float(lo + (hi - lo) * rng.uniform()); };
+        s.origin = {u(-5, 5), u(-5, 5), u(-5, 5)};
+        s.size = {u(0, 3), u(0, 3), u(0, 3)};
+        s.axes[1][2] = u(-1, 1);
+        s.look = rng.below(4);
+        const SubtreeMemo::Start start(rng.below(1000000), rng.below(16), i % 2 ? &look : nullptr, s);
+        EXPECT_EQ(SubtreeKey(start).hash(), start.hash) << i;
+    }
+}
+
 TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
-    const Camera camera = treeCamera();
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const Camera camera = test::smallTreeCamera();
     std::vector<std::uint8_t> lum(160 * 120, 0), alpha(160 * 120, 255);
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
     ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
@@ -281,7 +288,7 @@ GridSpec cubeOfVoxels(double x, double y, double z, int n) {
 }
 
 TEST(IncrementalScoring, VolumeScorerGivesTheSameCountsWithACacheAndItsCheckCatchesALie) {
-    const Grammar g = parseGrammar(kTree, "tree.grammar");
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const GridSpec grid = cubeOfVoxels(-3.0, -0.5, -3.0, 60);
     Rng rng(8);
     const VolumeTarget target = test::randomTarget(grid, rng);

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "genome/random.hpp"
+#include "score/camera.hpp"
 #include "score/silhouette_raster.hpp"
 
 #include "random_primitives.hpp"
@@ -16,6 +17,14 @@
 namespace shapevo::test {
 
 using Mask = std::vector<std::uint8_t>;
+
+/// A 160 x 120 perspective camera that sees the whole of test::kSmallTree's trees.
+inline Camera smallTreeCamera() {
+    CameraSpec s;
+    s.width = 160, s.height = 120;
+    s.eye = {0.0, 1.5, 9.0}, s.lookAt = {0.0, 1.5, 0.0};
+    return Camera::compile(s, "test");
+}
 
 inline std::int64_t orient(FixedPoint o, FixedPoint a, FixedPoint b) {
     return (std::int64_t(a.x) - o.x) * (std::int64_t(b.y) - o.y) - (std::int64_t(a.y) - o.y) * (std::int64_t(b.x) - o.x);

@@ -14,7 +14,6 @@ namespace shapevo::crl {
 namespace {
 
 std::string p(const std::string& e) { return "(" + e + ")"; }
-std::string num(double v) { return number(v); }
 
 /// Scale the frame by (sx, sy) across and by h up, about the centre of its base (the thesis's
 /// T * diag(sx, sy, h)).
@@ -36,7 +35,7 @@ std::vector<std::string> shares(Call& c, std::size_t first, std::size_t n, const
     if (constant) {
         if (std::fabs(sum - 100.0) > 1e-3)
             c.fail(c.args[first].where, std::string("the percentages of ") + what + " add up to " + shown(sum) + ", not 100");
-        for (std::size_t k = first; k < first + n; ++k) out.push_back(num(c.args[k].value / 100.0));
+        for (std::size_t k = first; k < first + n; ++k) out.push_back(number(c.args[k].value / 100.0));
         return out;
     }
     std::string total;
@@ -109,7 +108,7 @@ int constantCount(Call& c, std::size_t k, int lo, int hi, const char* what) {
 
 std::vector<std::string> equalShares(Call& c, std::size_t k) {
     const int n = constantCount(c, k, 0, 255, k == 0 ? "lot_split's number of splits in x" : "lot_split's number of splits in y") + 1;
-    return std::vector<std::string>(std::size_t(n), num(1.0 / n));
+    return std::vector<std::string>(std::size_t(n), number(1.0 / n));
 }
 
 // --- lot rules (§3.7.1) ----------------------------------------------------------------------
@@ -212,9 +211,9 @@ void comp(Call& c) {
     const double t = std::tan(M_PI / n);
     for (int k = 0; k < n; ++k) {
         const double phi = -M_PI / 2 + 2 * M_PI * k / n, cs = std::cos(phi), sn = std::sin(phi);
-        c.line("[ translate (scope.size.x * " + num(0.5 * cs) + ", 0, scope.size.z * " + num(-0.5 * sn) + ") rotate y atan2(scope.size.z * " +
-               num(cs) + ", scope.size.x * " + num(-sn) + ") * 57.29577951308232 size (" + num(2 * t) + " * sqrt(scope.size.x * scope.size.x * " +
-               num(0.25 * sn * sn) + " + scope.size.z * scope.size.z * " + num(0.25 * cs * cs) + "), scope.size.y, 1) " + side(k) + " ]");
+        c.line("[ translate (scope.size.x * " + number(0.5 * cs) + ", 0, scope.size.z * " + number(-0.5 * sn) + ") rotate y atan2(scope.size.z * " +
+               number(cs) + ", scope.size.x * " + number(-sn) + ") * 57.29577951308232 size (" + number(2 * t) + " * sqrt(scope.size.x * scope.size.x * " +
+               number(0.25 * sn * sn) + " + scope.size.z * scope.size.z * " + number(0.25 * cs * cs) + "), scope.size.y, 1) " + side(k) + " ]");
     }
 }
 // --- subdivisions and splits ----------------------------------------------------------------
@@ -378,7 +377,7 @@ void insert(Call& c) {
     const bool ruleFile = name.size() > 5 && name.compare(name.size() - 5, 5, ".rule") == 0;
     const std::string file = fileFor(c.t, a[0].where, name, ruleFile ? "rule file" : "OBJ");
     if (keepHeight) {  // not_scale_z: the object keeps its own height
-        const std::string h = num(ruleFile ? 1.0 : objectHeight(c.t, a[0].where, file));
+        const std::string h = number(ruleFile ? 1.0 : objectHeight(c.t, a[0].where, file));
         c.line("translate (0, (" + h + " - scope.size.y) * 0.5, 0) size (scope.size.x, " + h + ", scope.size.z)");
     }
     if (textured && !ruleFile) c.line("color (0.8, 0.8, 0.8) material \"\"");  // its own look: shapevo's default

@@ -30,7 +30,6 @@ namespace shapevo::crl {
 namespace fs = std::filesystem;
 
 namespace {
-std::string num(double v) { return number(v); }
 std::string at(const Location& l) { return std::to_string(l.line) + ":" + std::to_string(l.column); }
 [[noreturn]] void failAt(const Location& l, const std::string& what) { throw InputError(l.file, at(l), what); }
 
@@ -83,7 +82,7 @@ public:
             cur_->push_back({d->where, "]"});
         }
         end();
-        for (const Attr* a : u.attrs) write({a->where, "attr " + u.prefix + a->name + " = " + num(a->value)});
+        for (const Attr* a : u.attrs) write({a->where, "attr " + u.prefix + a->name + " = " + number(a->value)});
         for (const Line& l : attrLines_) write(l);
         write({Location{path, 1, 1}, "start crl__model"});
         for (const Line& l : rulesText_) write(l);
@@ -134,7 +133,7 @@ public:
         insertingNames_.push_back(file);
         const std::string path = (mainDir_ / file).generic_string();
         load(u, readText(path, from, "inserted rule file", file), path, &from);
-        for (const Attr* a : u.attrs) attrLines_.push_back({a->where, "attr " + u.prefix + a->name + " = " + num(a->value)});
+        for (const Attr* a : u.attrs) attrLines_.push_back({a->where, "attr " + u.prefix + a->name + " = " + number(a->value)});
         std::vector<Line>* saved = cur_;
         const Location savedWhere = where_;
         Unit* savedUnit = unit_;
@@ -427,7 +426,7 @@ private:
                         const Application& a = d.alternatives[k];
                         if (a.probability <= 0) continue;
                         const std::string name = u.prefix + h + "__s" + std::to_string(i + 1) + "a" + std::to_string(k + 1);
-                        slot += std::string(slot == "child" ? " " : " | ") + "[" + num(a.probability) + "] " + name;
+                        slot += std::string(slot == "child" ? " " : " | ") + "[" + number(a.probability) + "] " + name;
                         begin(name, a.where);
                         emitApplication(u, a, false);
                         end();
@@ -441,7 +440,7 @@ private:
                         const Application& a = d.alternatives[k];
                         cumulative += a.probability;
                         where_ = a.where;
-                        if (k + 1 < d.alternatives.size()) line("case (" + pick + " < " + num(cumulative) + ") {");
+                        if (k + 1 < d.alternatives.size()) line("case (" + pick + " < " + number(cumulative) + ") {");
                         else line("else {");
                         emitApplication(u, a, false);
                         where_ = a.where;
@@ -464,7 +463,7 @@ private:
                 if (it == u.attrValue.end()) failAt(b.where, "unknown attr '" + shortened(b.text) + "' (attrs are defined with attr name = value;)");
                 return std::pair{u.prefix + b.text, it->second};
             }
-            return std::pair{num(b.number), b.number};
+            return std::pair{number(b.number), b.number};
         };
         if (type == ArgType::String) {
             if (a.kind != ArgKind::String)
@@ -550,9 +549,9 @@ private:
         for (std::size_t k = 0; k < boxes.size(); ++k) {
             const Box& b = boxes[k];
             where_ = u.lots[k]->where;
-            line("[ translate (scope.size.x * " + num((b.x1 + b.x2) / 2 / w - (x1 + x2) / 2 / w) + ", 0, scope.size.z * " +
-                 num(-((b.y1 + b.y2) / 2 / d - (y1 + y2) / 2 / d)) + ") size (scope.size.x * " + num((b.x2 - b.x1) / w) +
-                 ", scope.size.y, scope.size.z * " + num((b.y2 - b.y1) / d) + ") " + u.prefix + u.lots[k]->predecessor + " ]");
+            line("[ translate (scope.size.x * " + number((b.x1 + b.x2) / 2 / w - (x1 + x2) / 2 / w) + ", 0, scope.size.z * " +
+                 number(-((b.y1 + b.y2) / 2 / d - (y1 + y2) / 2 / d)) + ") size (scope.size.x * " + number((b.x2 - b.x1) / w) +
+                 ", scope.size.y, scope.size.z * " + number((b.y2 - b.y1) / d) + ") " + u.prefix + u.lots[k]->predecessor + " ]");
         }
         end();
     }

@@ -1,0 +1,27 @@
+// identical(a, b): two derived geometries hold the same primitives and looks bit for bit (for the
+// derive tests: a memo, a scratch reused or a second derivation must change nothing).
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "geometry/derive.hpp"
+
+namespace shapevo::test {
+
+/// Bit-identical primitives and looks, field by field (the struct has a padding byte).
+inline ::testing::AssertionResult identical(const Geometry& a, const Geometry& b) {
+    if (a.primitives.size() != b.primitives.size())
+        return ::testing::AssertionFailure() << a.primitives.size() << " primitives against " << b.primitives.size();
+    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+        const Primitive &p = a.primitives[i], &q = b.primitives[i];
+        if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, 4) != 0 ||
+            std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 || std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 ||
+            std::memcmp(&p.half, &q.half, sizeof p.half) != 0 || std::memcmp(&p.taperZ, &q.taperZ, 4) != 0)
+            return ::testing::AssertionFailure() << "primitive " << i << " differs";
+    }
+    if (!(a.appearance == b.appearance)) return ::testing::AssertionFailure() << "looks differ";
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace shapevo::test
