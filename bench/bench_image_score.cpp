@@ -6,8 +6,10 @@
 //  - BM_ImageScoreCylinders: the same trees with cylinders for leaves too (all one kind).
 //  - BM_LargeTree/<part>: one 50,000-gene tree chromosome (every branch has three children,
 //    breadth first); part 0 = derive + score (ImageScorer::fitness), 1 = derive only, 2 = score only.
-//  - BM_LargeTreeChild/op:<k>/incremental:<0|1>: children of that tree by one operator (0 alter,
-//    1 grow, 2 cut), scored in full or incrementally after the parent (issue 15's 0.5 ms line).
+//  - BM_LargeTreeChild/op:<k>/incremental:<0|1|2>/genes:<n>: children of such a tree of n genes by
+//    one operator (0 alter, 1 grow, 2 cut), scored in full (0), incrementally (1) or incrementally
+//    without the subtree memo (2), after the parent and enough children to warm the caches
+//    (issue 15's 0.5 ms line). SHAPEVO_BENCH_CACHE_MB=512 sets score.cache_mb (default 128).
 //  - BM_RasterizeKind/kind:<k>: SilhouetteRaster::add + score of 20 random rotated primitives of
 //    one kind (0 box, 1 cylinder, 2 cone, 3 sphere, 5 roof, 6 paraboloid; half extents 0.1..0.5
 //    around the tree's place in the view, fixed seed), to compare the kinds' outline costs.
@@ -17,6 +19,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -212,27 +216,48 @@ void BM_LargeTreeChild(benchmark::State& state) {
     const Camera camera = paperCamera();
     const Grammar& g = tree(false);
     const ImageScorer scorer(g, camera, mickey(), VolumeFitnessSettings{});
-    static const Chromosome parent = largeTree(50000);
-    ImageScorer::Workspace ws(camera, incremental ? std::size_t(128) << 20 : 0);
+    static std::map<std::int64_t, Chromosome> parents;
+    if (!parents.count(state.range(2))) parents[state.range(2)] = largeTree(std::uint32_t(state.range(2)));
+    const Chromosome& parent = parents[state.range(2)];
+    const char* mb = std::getenv("SHAPEVO_BENCH_CACHE_MB");  // score.cache_mb (default 128)
+    ImageScorer::Workspace ws(camera, incremental ? std::size_t(mb ? std::atoi(mb) : 128) << 20 : 0);
     if (state.range(1) == 2) ws.derive.memo->turnOff();  // the primitive caches alone
     SilhouetteCounts counts;
-    scorer.fitness(parent, ws, &counts);  // the parent: a warm cache, as in a run
     Rng rng(11);
     GenomeScratch scratch;
     const GenomeLimits limits{60000};
     Chromosome child;
-    std::uint64_t primitives = 0, copied = 0;
-    for (auto _ : state) {
-        state.PauseTiming();
+    auto makeChild = [&] {
         do {
             child = parent;
         } while (!(op == 0 ? alter(g, child, rng) : op == 1 ? grow(g, child, rng, limits) : cut(g, child, rng, scratch)));
+    };
+    // Warm, as in a run: the parent, then children until the caches have grown to their size
+    // (each growth forgets what they held), twice as many as the last growth took.
+    std::size_t warm = 0;
+    for (std::size_t last = 0; warm < 2 * last + 8; ++warm) {
+        const std::size_t before = ws.cacheBytesUsed();
+        makeChild();
+        scorer.fitness(warm == 0 ? parent : child, ws, &counts);
+        if (ws.cacheBytesUsed() > before + (1 << 20)) last = warm;
+    }
+    const auto statsBefore = ws.cache ? ws.cache->stats() : PrimitiveCache<WordMask>::Stats{};
+    std::uint64_t primitives = 0, copied = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        makeChild();
         state.ResumeTiming();
         benchmark::DoNotOptimize(scorer.fitness(child, ws, &counts));
         primitives += ws.geometry.primitives.size();
         for (const DeriveScratch::ReusedSubtree& r : ws.derive.reused) copied += r.count;
     }
     const double n = double(state.iterations());
+    if (ws.cache) {
+        state.counters["cache_hits"] = double(ws.cache->stats().hits - statsBefore.hits) / n;
+        state.counters["cache_misses"] = double(ws.cache->stats().misses - statsBefore.misses) / n;
+        state.counters["warm_children"] = double(warm);
+        state.counters["cache_full"] = ws.cache->full();
+    }
     if (ws.derive.memo) {
         const SubtreeMemo::Stats m = ws.derive.memo->stats();
         state.counters["memo_hits"] = double(m.hits) / n;
@@ -288,7 +313,7 @@ BENCHMARK(BM_ImageScoreCylinders);
 BENCHMARK(BM_ImageDeriveScore);
 BENCHMARK(BM_LargeTree)->ArgName("part")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 // op x {full, incremental}: the two modes of one operator next to each other
-BENCHMARK(BM_LargeTreeChild)->ArgNames({"op", "incremental"})->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LargeTreeChild)->ArgNames({"op", "incremental", "genes"})->ArgsProduct({{0, 1, 2}, {0, 1, 2}, {50000, 10000}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

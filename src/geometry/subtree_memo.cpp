@@ -33,11 +33,11 @@ SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const Appear
     hash = quickHash(words, count);
 }
 
-SubtreeMemo::Ring::Ring(std::size_t bytes) {
+SubtreeMemo::Ring::Ring(std::size_t bytes, std::size_t maxTableBytes) {
     static_assert(sizeof(Entry) % 8 == 0);
     bytes = std::max<std::size_t>(bytes, 128 * 1024) / 8 * 8;
     std::size_t buckets = 1;
-    while (buckets * 2 * kWays * sizeof(Entry) <= bytes / 8) buckets *= 2;
+    while (buckets * 2 * kWays * sizeof(Entry) <= std::min(maxTableBytes, bytes / 8 * 7)) buckets *= 2;
     mask_ = buckets - 1;
     const std::size_t tableBytes = buckets * kWays * sizeof(Entry);
     memory_ = ZeroPages<std::uint64_t>(bytes / 8);
@@ -52,9 +52,20 @@ SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::find(std::uint64_t h, const std::ui
         Entry& e = bucket[w];
         if (e.hash != h || !live(e) || e.words < n || std::memcmp(records(e), key, std::size_t(n) * 4) != 0) continue;
         e.used = ++clock_;
+        if (head_ - e.at > ringSize_ / 2) moveToHead(e);
         return &e;
     }
     return nullptr;
+}
+
+void SubtreeMemo::Ring::moveToHead(Entry& e) {
+    const std::size_t size = ringSize_;
+    if (head_ % size + e.words > size) head_ += size - head_ % size;  // contiguous: skip the ring's tail
+    // Still intact: skipping writes nothing, and the records were live. They may overlap their
+    // new place (when about to be overwritten): memmove.
+    std::memmove(&ring_[head_ % size], &ring_[e.at % size], std::size_t(e.words) * 4);
+    e.at = head_;
+    head_ += e.words;
 }
 
 SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::add(std::uint64_t h, std::size_t words, std::uint32_t*& records) {
@@ -78,11 +89,15 @@ SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::add(std::uint64_t h, std::size_t wo
     return victim;
 }
 
-// A quarter of the bytes for contents (a dozen words per gene), the rest for outputs (a few
-// hundred words per subtree).
-SubtreeMemo::SubtreeMemo(std::size_t bytes) : contents_(bytes / 4), outputs_(bytes - bytes / 4) {}
+// A quarter of the bytes for contents, the rest for outputs. A content is a dozen words, about
+// its entry's size, so up to half of its ring's bytes are entries: 32 MB keeps 65,536 contents
+// (with an eighth, as for outputs, 8,192: a 10,000-gene model forgot 4,000 of its contents
+// between one derivation and the next, and found almost none of its subtrees). An output is a
+// few hundred words: an eighth of its bytes are entries.
+SubtreeMemo::SubtreeMemo(std::size_t bytes) : contents_(bytes / 4, bytes / 16 * 3), outputs_(bytes - bytes / 4, bytes / 32 * 3) {}
 
 void SubtreeMemo::identify(const Grammar& g, const Chromosome& c) {
+    storedWords_ = 0;
     if (contentAt_.size() < c.size()) contentAt_.resize(c.size());
     genes_.clear();
     for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) genes_.push_back(pos);
@@ -133,6 +148,11 @@ bool SubtreeMemo::find(const Start& start, Found& out) {
 void SubtreeMemo::store(const Start& start, const Primitive* primitives, const Appearance* looks, std::uint32_t count,
                         std::uint32_t tasks) {
     const std::size_t words = start.count + std::size_t(count) * (kPrimitiveWords + (looks ? kLookWords : 0));
+    storedWords_ += words;
+    if (storedWords_ > outputs_.ringWords() && !off_) {  // this model outgrows the memo (see the header)
+        stats_.outgrown = true;
+        turnOff();
+    }
     std::uint32_t* rec = nullptr;
     Ring::Entry* e = outputs_.add(start.hash, words, rec);
     if (!e) {

@@ -16,9 +16,15 @@
 //    (derive.cpp), so what derive makes of the subtree depends on nothing else.
 //  - Bounded: two rings of records with their tables of entries, at most `bytes` in all, in zero
 //    pages (base/zero_pages.hpp: memory is mapped as the rings first fill). Storing overwrites
-//    the oldest records; an entry whose records were overwritten is a miss (a forgotten content
-//    gets a new number), never a wrong answer.
+//    the oldest records, and records found in the older half of a ring move to its head (so a
+//    subtree every child uses is never forgotten); an entry whose records were overwritten is a
+//    miss (a forgotten content gets a new number), never a wrong answer.
 //  - Derived data only: a cold memo gives the same geometry as a warm one, only later.
+//  - It steps aside for models it cannot hold: each primitive is kept once per subtree around it
+//    (once per ancestor gene), so a derivation that stores more than the output ring holds
+//    overwrites its own subtrees before any child can find them (a 50,000-gene tree stores ~66 MB
+//    against a 24 MB ring: no hit at all, and a child scored 3x slower than without). Such a
+//    derivation turns the memo off (on() false, Stats::outgrown) for good.
 //  - No allocation once warm.
 #pragma once
 #include <cstddef>
@@ -52,6 +58,7 @@ public:
     };
     struct Stats {
         std::uint64_t hits = 0, misses = 0, stored = 0, tooLarge = 0, contents = 0;
+        bool outgrown = false;  ///< a derivation stored more than the ring holds: turned off
     };
 
     explicit SubtreeMemo(std::size_t bytes);
@@ -86,13 +93,18 @@ private:
             std::uint64_t hash, at, used, value;
             std::uint32_t words, count;
         };
-        Ring(std::size_t bytes);
-        /// The live entry of hash `h` whose first `n` words equal `key`, or null.
+        /// About `bytes` in all, at most `maxTableBytes` of it for the table of entries.
+        Ring(std::size_t bytes, std::size_t maxTableBytes);
+        /// The live entry of hash `h` whose first `n` words equal `key`, or null. An entry found
+        /// in the older half of the ring has its records moved to the head first: what is used
+        /// stays (least recently used, not first stored, is overwritten), each record moved at
+        /// most once per half ring written.
         Entry* find(std::uint64_t h, const std::uint32_t* key, std::uint32_t n);
         /// Room for `words` words (null if more than an eighth of the ring) and its entry, filled
         /// with `h`; the caller writes both.
         Entry* add(std::uint64_t h, std::size_t words, std::uint32_t*& records);
         const std::uint32_t* records(const Entry& e) const { return &ring_[e.at % ringSize_]; }
+        std::size_t ringWords() const { return ringSize_; }
         std::size_t bytesUsed() const {
             return (mask_ + 1) * kWays * sizeof(Entry) + std::min<std::uint64_t>(head_, ringSize_) * 4;
         }
@@ -100,6 +112,7 @@ private:
     private:
         static constexpr std::size_t kWays = 4;
         bool live(const Entry& e) const { return e.words > 0 && head_ - e.at <= ringSize_; }
+        void moveToHead(Entry& e);
         // Entries and ring in one mapping: large enough for huge pages (base/zero_pages.hpp), so
         // that the table's scattered first touches cost a few page faults, not one per 4 KB.
         ZeroPages<std::uint64_t> memory_;
@@ -113,6 +126,7 @@ private:
     Ring contents_, outputs_;
     std::uint64_t lastNumber_ = 0;
     bool off_ = false;
+    std::uint64_t storedWords_ = 0;  ///< by store() since the last identify()
     std::vector<std::uint64_t> contentAt_;  ///< per word position of the last identify(): its gene's number
     std::vector<std::uint32_t> genes_, key_;  // scratch
     Stats stats_;

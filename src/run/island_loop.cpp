@@ -359,7 +359,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
                 saidCacheFull = true;
                 log << "shapevo: rank " << mpi.rank() << ": incremental scoring has filled score.cache_mb = " << s.incremental.cacheMb
                     << " at generation " << ga.generation()
-                    << "; the primitives it cannot keep are drawn the full way from now on (results are the same; raise score.cache_mb for speed)\n";
+                    << "; the primitives it cannot keep, and models too large for it, are drawn the full way from now on (results are the same; raise score.cache_mb for speed)\n";
             }
             stop = afterGeneration();
         } else {  // async only: done with its generations, waiting for the others (the run's end)

@@ -76,7 +76,9 @@ public:
             return kWorstFitness;
         }
         SilhouetteCounts counts;
-        if (w.cache) {
+        const bool cached = w.cache && w.cache->holds(w.geometry.primitives.size());
+        if (w.cache && !cached) noteCacheFull();  // a model larger than the cache: the full way
+        if (cached) {
             drawCached(w);
             counts = w.raster.score(target_);
             if (checksIncremental()) checkAgainstFull(w, counts);

@@ -55,22 +55,32 @@ TEST(SubtreeMemo, DerivesEveryShippedGrammarsChildrenBitForBitAsWithout) {
     for (const std::string& path : paths) {
         SCOPED_TRACE(path);
         const Grammar g = loadGrammar(path);
-        DeriveScratch plain, memoized;
-        memoized.memo = std::make_unique<SubtreeMemo>(1 << 20);  // small: both rings wrap
         Geometry a, b;
         // As many models as take a moment: a rule file's one gene can make 100,000 primitives.
+        DeriveScratch plain;
         derive(g, modelsAndChildren(g, 1, 5).front(), a, plain);
         const std::size_t count = std::clamp<std::size_t>(200000 / (a.primitives.size() + 1), 30, 600);
-        std::uint32_t mostGenes = 0;
-        for (const Chromosome& c : modelsAndChildren(g, count, 5)) {
-            const DeriveStatus sa = derive(g, c, a, plain), sb = derive(g, c, b, memoized);
-            ASSERT_EQ(int(sa), int(sb));
-            ASSERT_TRUE(identical(a, b));
-            mostGenes = std::max(mostGenes, c.genes);
+        // The smallest memo that holds one model's subtrees (else it turns itself off), so that
+        // its rings wrap over the models: 1 MB, or 4 MB for models as large as a building's.
+        bool held = false;
+        for (const std::size_t bytes : {std::size_t(1) << 20, std::size_t(4) << 20}) {
+            DeriveScratch memoized;
+            memoized.memo = std::make_unique<SubtreeMemo>(bytes);
+            std::uint32_t mostGenes = 0;
+            for (const Chromosome& c : modelsAndChildren(g, count, 5)) {
+                const DeriveStatus sa = derive(g, c, a, plain), sb = derive(g, c, b, memoized);
+                ASSERT_EQ(int(sa), int(sb));
+                ASSERT_TRUE(identical(a, b));
+                mostGenes = std::max(mostGenes, c.genes);
+            }
+            const SubtreeMemo::Stats& st = memoized.memo->stats();
+            if (st.outgrown) continue;
+            // Children share subtrees: every gene's but the root's (some rule files make one gene).
+            if (g.textures.empty() && mostGenes > 3) EXPECT_GT(st.hits, 25u);
+            held = true;
+            break;
         }
-        // Children share subtrees: every gene's but the root's (some rule files make one gene).
-        const SubtreeMemo::Stats& st = memoized.memo->stats();
-        if (g.textures.empty() && mostGenes > 3) EXPECT_GT(st.hits, 25u);
+        EXPECT_TRUE(held) << "a 4 MB memo holds no model of this grammar";
     }
 }
 
@@ -172,6 +182,31 @@ TEST(SubtreeMemo, AMemoTurnedOffIsNeitherAskedNorFilled) {
     }
     EXPECT_EQ(memoized.memo->stats().hits + memoized.memo->stats().misses, before.hits + before.misses);
     EXPECT_EQ(memoized.memo->stats().stored, before.stored);
+}
+
+TEST(SubtreeMemo, AModelWhoseSubtreesOutgrowTheMemoTurnsItOffAndDerivesTheSame) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    Rng rng(8);
+    Chromosome small, large;
+    growRandomLength(g, small, rng, GenomeLimits{200}, 20, 20);
+    growRandomLength(g, large, rng, GenomeLimits{3000}, 2000, 2000);
+    DeriveScratch plain, memoized;
+    memoized.memo = std::make_unique<SubtreeMemo>(256 << 10);  // outputs: ~48,000 words
+    Geometry a, b;
+    for (int i = 0; i < 3; ++i) derive(g, small, b, memoized);
+    EXPECT_TRUE(memoized.memo->on());  // a small model fits: kept and found
+    EXPECT_GT(memoized.memo->stats().hits, 0u);
+    EXPECT_FALSE(memoized.memo->stats().outgrown);
+
+    derive(g, large, a, plain);
+    derive(g, large, b, memoized);  // every primitive once per ancestor: more than the ring holds
+    ASSERT_TRUE(identical(a, b));
+    EXPECT_TRUE(memoized.memo->stats().outgrown);
+    EXPECT_FALSE(memoized.memo->on());
+    const SubtreeMemo::Stats after = memoized.memo->stats();
+    derive(g, large, b, memoized);  // off for good: neither asked nor filled
+    ASSERT_TRUE(identical(a, b));
+    EXPECT_EQ(memoized.memo->stats().hits + memoized.memo->stats().misses, after.hits + after.misses);
 }
 
 TEST(SubtreeMemo, EqualContentsShareANumberWhereverTheyAreAndOthersDoNot) {

@@ -232,6 +232,40 @@ TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
     EXPECT_GT(c.derive.memo->stats().hits, 1000u);  // and derived once
 }
 
+TEST(IncrementalScoring, AModelLargerThanTheCacheHoldsIsDrawnTheFullWayAndSaidSo) {
+    const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
+    const Camera camera = test::smallTreeCamera();
+    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
+    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
+    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    cached.setIncremental(64 << 10, true);  // the smallest cache: it holds models of a few dozen primitives
+    auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
+    auto& f = static_cast<ImageScorer::Workspace&>(*wf);
+    auto& c = static_cast<ImageScorer::Workspace&>(*wc);
+    Rng rng(4);
+    Chromosome small, large;
+    growRandomLength(g, small, rng, GenomeLimits{200}, 6, 6);
+    growRandomLength(g, large, rng, GenomeLimits{3000}, 1500, 1500);
+    SilhouetteCounts a, b;
+    derive(g, large, f.geometry, f.derive);
+    ASSERT_FALSE(c.cache->holds(f.geometry.primitives.size()));
+    derive(g, small, f.geometry, f.derive);
+    ASSERT_TRUE(c.cache->holds(f.geometry.primitives.size()));
+
+    EXPECT_EQ(full.fitness(small, f, &a), cached.fitness(small, c, &b));
+    EXPECT_EQ(a.covered, b.covered);
+    const std::uint64_t lookups = c.cache->stats().hits + c.cache->stats().misses;
+    EXPECT_GT(lookups, 0u);
+    EXPECT_FALSE(cached.cacheFull());
+
+    EXPECT_EQ(full.fitness(large, f, &a), cached.fitness(large, c, &b));
+    EXPECT_EQ(a.covered, b.covered);
+    EXPECT_EQ(a.hit, b.hit);
+    EXPECT_EQ(c.cache->stats().hits + c.cache->stats().misses, lookups);  // not one lookup
+    EXPECT_TRUE(cached.cacheFull());  // said once by the run
+}
+
 TEST(IncrementalScoring, AWholeSubtreesKeyHashesAsItsStart) {
     // drawCached takes the start's hash for its key's: the two must never differ.
     Rng rng(5);
