@@ -181,12 +181,17 @@ std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
     return out;
 }
 
+/// A 160 x 120 target (test::smallTreeCamera's size) of diagonal stripes: a third of it to hit.
+ImageTarget stripedTarget() {
+    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
+    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
+    return makeImageTarget(160, 120, lum, alpha, PixelRule{});
+}
+
 TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOrWarm) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const Camera camera = test::smallTreeCamera();
-    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
-    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
-    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    const ImageTarget target = stripedTarget();
     ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
     cached.setIncremental(1 << 20, true);  // small: it wraps; checking: any difference throws
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
@@ -235,9 +240,7 @@ TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
 TEST(IncrementalScoring, AModelLargerThanTheCacheHoldsIsDrawnTheFullWayAndSaidSo) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const Camera camera = test::smallTreeCamera();
-    std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
-    for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;
-    const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
+    const ImageTarget target = stripedTarget();
     ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
     cached.setIncremental(64 << 10, true);  // the smallest cache: it holds models of a few dozen primitives
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
