@@ -90,10 +90,11 @@ SubtreeMemo::Ring::Entry* SubtreeMemo::Ring::add(std::uint64_t h, std::size_t wo
 }
 
 // A quarter of the bytes for contents, the rest for outputs. A content is a dozen words, about
-// its entry's size, so up to half of its ring's bytes are entries: 32 MB keeps 65,536 contents
-// (with an eighth, as for outputs, 8,192: a 10,000-gene model forgot 4,000 of its contents
-// between one derivation and the next, and found almost none of its subtrees). An output is a
-// few hundred words: an eighth of its bytes are entries.
+// its entry's size, and a forgotten one renumbers all its ancestors, so up to three quarters of
+// the contents' bytes are entries, so buckets stay far from full: 32 MB has 131,072 (with an eighth,
+// as for outputs, 8,192 entries: a 10,000-gene model got ~4,000 new numbers between one
+// derivation of it and the next, and found almost none of its subtrees). An output is a few
+// hundred words: an eighth of its bytes are entries.
 SubtreeMemo::SubtreeMemo(std::size_t bytes) : contents_(bytes / 4, bytes / 16 * 3), outputs_(bytes - bytes / 4, bytes / 32 * 3) {}
 
 void SubtreeMemo::identify(const Grammar& g, const Chromosome& c) {
