@@ -14,6 +14,8 @@
 namespace shapevo::test {
 
 inline std::string sourcePath(const std::string& relative) { return std::string(SHAPEVO_SOURCE_DIR) + "/" + relative; }
+/// The spaceship scene's config, the one most CLI tests run.
+inline std::string spaceshipConfig() { return sourcePath("configs/spaceship.toml"); }
 
 /// A fresh empty directory under the system temp dir, removed when the object goes away.
 class TempDir {

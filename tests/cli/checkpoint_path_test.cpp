@@ -17,11 +17,11 @@ using test::TempDir;
 
 namespace fs = std::filesystem;
 
-const std::string kSmall = " --set ga.population=20 --set ga.generations=4 --set ga.elitism=4 -q";
+const std::string kSmallCheckpoint = " --set ga.population=20 --set ga.generations=4 --set ga.elitism=4 -q";
 
 /// A finished spaceship run in `dir`/run; its end-of-run checkpoint is checkpoint-000004.
 void runSmall(const TempDir& dir) {
-    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall);
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmallCheckpoint);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     ASSERT_TRUE(fs::exists(dir.file("run/checkpoint-000004/island-0000.h5")));
 }

@@ -30,7 +30,7 @@ std::string castleConfig(const TempDir& dir, const std::string& rule) {
     return dir.file("crl.toml");
 }
 
-const std::string kSmall = " --set ga.population=16 --set ga.elitism=2 --set run.wall_time=0 -q";
+const std::string kSmallCrl = " --set ga.population=16 --set ga.elitism=2 --set run.wall_time=0 -q";
 
 TEST(CrlCommands, ARuleFileRunsResumesExportsAndEvaluates) {
     TempDir dir;
@@ -40,9 +40,9 @@ TEST(CrlCommands, ARuleFileRunsResumesExportsAndEvaluates) {
               "Lot -> corners(0.2, 0.2, 1, 1, 1, 1) {Tower};\nTower -> extrude(rand(2, 9)) {T};\n"
               "T -> [0.5] insert_cylinder(1, 1, 1, 16), [0.5] insert_volume(1, 1, 1, 0, 0, 1);\n");
     const std::string cfg = castleConfig(dir, dir.file("castle.rule"));
-    auto r = runShapevo("run " + cfg + " --out " + dir.file("whole") + " --set ga.generations=6" + kSmall);
+    auto r = runShapevo("run " + cfg + " --out " + dir.file("whole") + " --set ga.generations=6" + kSmallCrl);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    r = runShapevo("run " + cfg + " --out " + dir.file("split") + " --set ga.generations=3" + kSmall);
+    r = runShapevo("run " + cfg + " --out " + dir.file("split") + " --set ga.generations=3" + kSmallCrl);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     r = runShapevo("resume " + dir.file("split") + " --generations 6 -q");
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -13,7 +13,7 @@ using test::runShapevo;
 using test::sourcePath;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=30 --set ga.generations=6 --set ga.elitism=6 -q";
+const std::string kSmallEvaluate = " --set ga.population=30 --set ga.generations=6 --set ga.elitism=6 -q";
 
 /// The text of `key`'s value in summary.json (a number, as written).
 std::string summaryValue(const std::string& summary, const std::string& key) {
@@ -37,7 +37,7 @@ void expectEvaluateMatchesRun(const std::string& config, const std::string& over
                               const std::string& evalOverrides) {
     TempDir dir;
     const std::string cfg = sourcePath("configs/" + config);
-    const auto run = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmall + overrides);
+    const auto run = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmallEvaluate + overrides);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const std::string summary = readFile(dir.file("run/summary.json"));
     const auto r = runShapevo("evaluate " + cfg + " " + dir.file("run/best.genome") + evalOverrides);
@@ -62,7 +62,7 @@ TEST(Evaluate, SetOverridesScoreAsInTheRun) {
     // and they matter: the same genome without them scores otherwise
     TempDir dir;
     const std::string cfg = sourcePath("configs/spaceship.toml");
-    ASSERT_EQ(runShapevo("run " + cfg + " --out " + dir.file("run") + kSmall + weighted).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --out " + dir.file("run") + kSmallEvaluate + weighted).exitCode, 0);
     const auto plain = runShapevo("evaluate " + cfg + " " + dir.file("run/best.genome"));
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     EXPECT_NE(evaluated(plain.output, "fitness"), summaryValue(readFile(dir.file("run/summary.json")), "best_fitness"));

@@ -17,7 +17,7 @@ using test::sourcePath;
 using test::TempDir;
 using test::writeFile;
 
-const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set ga.generations=8 -q";
+const std::string kSmallFinite = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set ga.generations=8 -q";
 
 /// A config for `grammar` (written next to it) with the spaceship's target.
 std::string configFor(const TempDir& dir, const std::string& grammar) { return test::configWithGrammar(dir, grammar); }
@@ -27,7 +27,7 @@ TEST(FiniteGeometry, SometimesNonFiniteModelsEvolveAreCountedAndNeverExported) {
     const std::string cfg = configFor(dir, "start A\nrule A {\n  size (1, 0.5, 1.5)\n  box\n  child B prob 0.3\n  child C prob 0.7\n}\n"
                                            "rule C {\n  translate (0, 0, 1)\n  box\n  child C prob 0.5\n}\n"
                                            "rule B {\n  param p = uniform(0, 1)\n  scale (1 / (p * 0), sqrt(-1 - p * p), 1 / 0)\n  box\n}\n");
-    const auto r = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmall);
+    const auto r = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmallFinite);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string summary = readFile(dir.file("run/summary.json"));
     EXPECT_EQ(summary.find("\"non_finite_models\": 0,"), std::string::npos) << summary;
@@ -40,7 +40,7 @@ TEST(FiniteGeometry, SometimesNonFiniteModelsEvolveAreCountedAndNeverExported) {
 TEST(FiniteGeometry, AGrammarThatIsNeverFiniteIsRefusedAtTheStartNamingTheRule) {
     TempDir dir;
     const std::string cfg = configFor(dir, "start A\nrule A {\n  child B\n}\nrule B {\n  scale (1e30, 1, 1)\n  box\n}\n");
-    const auto r = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmall);
+    const auto r = runShapevo("run " + cfg + " --out " + dir.file("run") + kSmallFinite);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("rule B"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("non-finite"), std::string::npos) << r.output;
@@ -49,7 +49,7 @@ TEST(FiniteGeometry, AGrammarThatIsNeverFiniteIsRefusedAtTheStartNamingTheRule) 
 
 TEST(FiniteGeometry, ReachingThePrimitiveLimitIsReportedNeverSilent) {
     TempDir dir;
-    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall +
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmallFinite +
                               " --set genome.max_primitives=3");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string summary = readFile(dir.file("run/summary.json"));

@@ -15,13 +15,13 @@ using test::runShapevo;
 using test::sourcePath;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=30 --set ga.generations=6 --set ga.elitism=6 -q";
+const std::string kSmallImage = " --set ga.population=30 --set ga.generations=6 --set ga.elitism=6 -q";
 
 TEST(ImageRun, SketchAndLogoScenesWriteOverlayCurveAndSilhouetteIoU) {
     TempDir dir;
     for (const char* scene : {"tree-sketch", "tree-logo", "city-whale"}) {
         const std::string out = dir.file(scene);
-        const auto r = runShapevo("run " + sourcePath(std::string("configs/") + scene + ".toml") + " --out " + out + kSmall);
+        const auto r = runShapevo("run " + sourcePath(std::string("configs/") + scene + ".toml") + " --out " + out + kSmallImage);
         ASSERT_EQ(r.exitCode, 0) << scene << ": " << r.output;
         for (const char* f : {"best-overlay.png", "best.png", "best.glb", "best.obj", "curve.svg", "curve.png", "summary.json"})
             EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << scene << " " << f;
@@ -46,7 +46,7 @@ TEST(ImageRun, ResumedImageRunEqualsTheUninterruptedOne) {
 
 TEST(ImageRun, ExportWritesTheOverlayAndRefusesVoxelsOfAnImageRun) {
     TempDir dir;
-    ASSERT_EQ(runShapevo("run " + sourcePath("configs/tree-sketch.toml") + " --out " + dir.file("run") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + sourcePath("configs/tree-sketch.toml") + " --out " + dir.file("run") + kSmallImage).exitCode, 0);
     const auto png = runShapevo("export " + dir.file("run") + " --best -o " + dir.file("o.png"));
     EXPECT_EQ(png.exitCode, 0) << png.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file("o.png")));

@@ -25,18 +25,18 @@ using test::readFile;
 using test::runShapevo;
 using test::runShapevoMpi;
 using test::sourcePath;
+using test::spaceshipConfig;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
+const std::string kSmallIslands = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
                            " --set migration.count=3 --set checkpoint.interval=10 --set checkpoint.keep=10 -q";
 
-std::string config() { return sourcePath("configs/spaceship.toml"); }
 
 
 TEST(Islands, SeededTwoRankRunRepeatsByteForByte) {
     TempDir dir;
     for (const char* run : {"a", "b"}) {
-        const auto r = runShapevoMpi(2, "run " + config() + " --seed 5 --set ga.generations=12 --out " + dir.file(run) + kSmall);
+        const auto r = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 5 --set ga.generations=12 --out " + dir.file(run) + kSmallIslands);
         ASSERT_EQ(r.exitCode, 0) << r.output;
     }
     EXPECT_EQ(curveWithoutTime(readFile(dir.file("a/curve.csv"))), curveWithoutTime(readFile(dir.file("b/curve.csv"))));
@@ -47,9 +47,9 @@ TEST(Islands, SeededTwoRankRunRepeatsByteForByte) {
 
 TEST(Islands, ResumedRunEqualsTheUninterruptedOne) {
     TempDir dir;
-    auto whole = runShapevoMpi(2, "run " + config() + " --seed 9 --set ga.generations=40 --out " + dir.file("whole") + kSmall);
+    auto whole = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 9 --set ga.generations=40 --out " + dir.file("whole") + kSmallIslands);
     ASSERT_EQ(whole.exitCode, 0) << whole.output;
-    auto half = runShapevoMpi(2, "run " + config() + " --seed 9 --set ga.generations=20 --out " + dir.file("half") + kSmall);
+    auto half = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 9 --set ga.generations=20 --out " + dir.file("half") + kSmallIslands);
     ASSERT_EQ(half.exitCode, 0) << half.output;
     auto rest = runShapevoMpi(2, "resume " + dir.file("half") + " --generations 40 -q");
     ASSERT_EQ(rest.exitCode, 0) << rest.output;
@@ -60,22 +60,22 @@ TEST(Islands, ResumedRunEqualsTheUninterruptedOne) {
 
 TEST(Islands, FourRanksOnTwoCoresComplete) {
     TempDir dir;
-    const auto r = runShapevoMpi(4, "run " + config() + " --set ga.generations=6 --set run.threads=1 --out " + dir.file("r") + kSmall);
+    const auto r = runShapevoMpi(4, "run " + spaceshipConfig() + " --set ga.generations=6 --set run.threads=1 --out " + dir.file("r") + kSmallIslands);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file("r/checkpoint-000006/island-0003.h5")));
 }
 
 TEST(Islands, AsyncMigrationCompletesUnderOversubscription) {
     TempDir dir;
-    const auto r = runShapevoMpi(4, "run " + config() + " --set ga.generations=15 --set migration.mode=async"
-                                     " --set migration.interval=1 --set run.threads=1 --out " + dir.file("r") + kSmall);
+    const auto r = runShapevoMpi(4, "run " + spaceshipConfig() + " --set ga.generations=15 --set migration.mode=async"
+                                     " --set migration.interval=1 --set run.threads=1 --out " + dir.file("r") + kSmallIslands);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file("r/summary.json")));
 }
 
 TEST(Islands, SyncRunsDoNotDependOnThreadsOrOnHowOftenTheIslandsMeet) {
     TempDir dir;
-    const std::string base = "run " + config() + " --seed 3 --set ga.generations=25" + kSmall;
+    const std::string base = "run " + spaceshipConfig() + " --seed 3 --set ga.generations=25" + kSmallIslands;
     ASSERT_EQ(runShapevoMpi(2, base + " --set run.threads=1 --out " + dir.file("a")).exitCode, 0);
     ASSERT_EQ(runShapevoMpi(2, base + " --set run.threads=2 --set migration.meeting_interval=1 --out " + dir.file("b")).exitCode, 0);
     ASSERT_EQ(runShapevoMpi(2, base + " --set migration.meeting_interval=7 --out " + dir.file("c")).exitCode, 0);
@@ -89,7 +89,7 @@ TEST(Islands, SyncRunsDoNotDependOnThreadsOrOnHowOftenTheIslandsMeet) {
 
 TEST(Islands, SummaryAndProgressLineGiveTheWaiting) {
     TempDir dir;
-    const auto r = runShapevoMpi(2, "run " + config() + " --set ga.generations=30 --set run.threads=1 --out " + dir.file("r") +
+    const auto r = runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=30 --set run.threads=1 --out " + dir.file("r") +
                                         " --set ga.population=30 --set ga.elitism=4");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("% (max "), std::string::npos) << r.output;
@@ -105,7 +105,7 @@ TEST(Islands, SummaryAndProgressLineGiveTheWaiting) {
 
 TEST(Islands, AsyncRunShowsTheAgeOfItsFiguresCheckpointsAndResumes) {
     TempDir dir;
-    const auto r = runShapevoMpi(2, "run " + config() + " --set ga.generations=40 --set migration.mode=async"
+    const auto r = runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=40 --set migration.mode=async"
                                      " --set run.threads=1 --set checkpoint.interval=10 --out " + dir.file("r") +
                                      " --set ga.population=30 --set ga.elitism=4");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -121,7 +121,7 @@ TEST(Islands, AsyncRunShowsTheAgeOfItsFiguresCheckpointsAndResumes) {
 
 TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {
     TempDir dir;
-    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=3 --out " + dir.file("r") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=3 --out " + dir.file("r") + kSmallIslands).exitCode, 0);
     const auto r = runShapevo("resume " + dir.file("r") + " --generations 6");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("holds 2 island(s) but 1 rank(s) were started"), std::string::npos) << r.output;
@@ -129,7 +129,7 @@ TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {
 
 TEST(Islands, DamagedNewestCheckpointIsNamedAndThePreviousOneIsUsed) {
     TempDir dir;
-    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=20 --out " + dir.file("r") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=20 --out " + dir.file("r") + kSmallIslands).exitCode, 0);
     // truncate one island file of the newest checkpoint (20); 10 must be used instead
     const std::string victim = dir.file("r/checkpoint-000020/island-0001.h5");
     std::filesystem::resize_file(victim, std::filesystem::file_size(victim) / 2);
@@ -142,7 +142,7 @@ TEST(Islands, DamagedNewestCheckpointIsNamedAndThePreviousOneIsUsed) {
 
 TEST(Islands, ExportWritesTheBestModelOfAnyCheckpoint) {
     TempDir dir;
-    ASSERT_EQ(runShapevoMpi(2, "run " + config() + " --set ga.generations=10 --out " + dir.file("r") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=10 --out " + dir.file("r") + kSmallIslands).exitCode, 0);
     const auto fromRun = runShapevo("export " + dir.file("r") + " --best -o " + dir.file("a.obj"));
     ASSERT_EQ(fromRun.exitCode, 0) << fromRun.output;
     // the newest checkpoint's best is the run's best: same mesh as best.obj
@@ -158,11 +158,11 @@ TEST(Islands, ExportWritesTheBestModelOfAnyCheckpoint) {
 
 TEST(Islands, TargetFitnessAndWallTimeStopEveryRankTogether) {
     TempDir dir;
-    const auto target = runShapevoMpi(2, "run " + config() + " --set ga.generations=100000 --set run.target_fitness=0.95"
+    const auto target = runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=100000 --set run.target_fitness=0.95"
                                              " --out " + dir.file("t") + " --set ga.population=30 --set ga.elitism=4");
     ASSERT_EQ(target.exitCode, 0) << target.output;
     EXPECT_NE(target.output.find("done after reaching the target fitness"), std::string::npos) << target.output;
-    const auto wall = runShapevoMpi(2, "run " + config() + " --set ga.generations=100000000 --set run.wall_time=0.5"
+    const auto wall = runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=100000000 --set run.wall_time=0.5"
                                            " --out " + dir.file("w") + " --set ga.population=30 --set ga.elitism=4 -q");
     ASSERT_EQ(wall.exitCode, 0) << wall.output;
     // it stopped long before the limit, with a checkpoint of the generation it stopped at

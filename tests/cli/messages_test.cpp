@@ -19,9 +19,9 @@ using test::writeFile;
 
 namespace fs = std::filesystem;
 
-const std::string kSmall = " --set ga.population=10 --set ga.generations=2 --set ga.elitism=2 --set ga.tournament=3 -q";
+const std::string kSmallMessages = " --set ga.population=10 --set ga.generations=2 --set ga.elitism=2 --set ga.tournament=3 -q";
 
-void expectInputError(const test::CommandResult& r, const std::string& fragment) {
+void expectErrorSaying(const test::CommandResult& r, const std::string& fragment) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("shapevo: error: " + fragment), std::string::npos) << "expected '" << fragment << "' in: " << r.output;
 }
@@ -33,8 +33,8 @@ TEST(Messages, ATruncatedTargetSaysItIsTruncated) {
         const std::string vdb = dir.file("cut-" + std::to_string(bytes) + ".vdb");
         writeFile(vdb, whole.substr(0, bytes));
         const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --set target.fill='\"" + vdb + "\"' --out " +
-                                  dir.file("out") + kSmall);
-        expectInputError(r, vdb + ": ");
+                                  dir.file("out") + kSmallMessages);
+        expectErrorSaying(r, vdb + ": ");
         EXPECT_NE(r.output.find("truncated or unreadable"), std::string::npos) << bytes << ": " << r.output;
         EXPECT_EQ(r.output.find("no float grid"), std::string::npos) << bytes << ": " << r.output;
         EXPECT_LT(r.output.size(), 400u) << bytes << ": " << r.output;
@@ -46,26 +46,26 @@ TEST(Messages, AConfigPathThatIsAFolderSaysItIsAFolder) {
     TempDir dir;
     fs::create_directories(dir.file("configs"));
     const auto r = runShapevo("run " + dir.file("configs") + " -q");
-    expectInputError(r, dir.file("configs") + ": is a folder, not a config file");
+    expectErrorSaying(r, dir.file("configs") + ": is a folder, not a config file");
     EXPECT_EQ(r.output.find("missing [grammar]"), std::string::npos) << r.output;
-    expectInputError(runShapevo("evaluate " + dir.file("configs") + " " + sourcePath("targets/spaceship-reachable.genome")),
+    expectErrorSaying(runShapevo("evaluate " + dir.file("configs") + " " + sourcePath("targets/spaceship-reachable.genome")),
                      dir.file("configs") + ": is a folder");
 }
 
 TEST(Messages, ARuleBrokenByASetIsBlamedOnTheSetNotOnTheFile) {
     TempDir dir;
     const std::string cfg = sourcePath("configs/spaceship.toml");  // elitism = 30
-    expectInputError(runShapevo("run " + cfg + " --set ga.population=20 --out " + dir.file("a") + " -q"),
+    expectErrorSaying(runShapevo("run " + cfg + " --set ga.population=20 --out " + dir.file("a") + " -q"),
                      "--set: elitism must be smaller than population (ga.elitism = 30, ga.population = 20)");
-    expectInputError(runShapevo("run " + cfg + " --set score.length_max=10 --out " + dir.file("a") + " -q"),
+    expectErrorSaying(runShapevo("run " + cfg + " --set score.length_max=10 --out " + dir.file("a") + " -q"),
                      "--set: length_max must be greater than length_optimal");
-    expectInputError(runShapevo("run " + sourcePath("configs/tree-sketch.toml") + " --set camera.fov_degrees=180 --out " +
+    expectErrorSaying(runShapevo("run " + sourcePath("configs/tree-sketch.toml") + " --set camera.fov_degrees=180 --out " +
                                 dir.file("a") + " -q"),
                      "--set:camera.fov_degrees: ");
     // the same rule broken in the file names the file's line
     writeFile(dir.file("c.toml"), "[grammar]\nfile = \"" + sourcePath("grammars/spaceship.grammar") + "\"\n[target]\nfill = \"" +
                                       sourcePath("targets/spaceship-reachable.vdb") + "\"\n[ga]\npopulation = 20\n");
-    expectInputError(runShapevo("run " + dir.file("c.toml") + " --out " + dir.file("a") + " -q"),
+    expectErrorSaying(runShapevo("run " + dir.file("c.toml") + " --out " + dir.file("a") + " -q"),
                      dir.file("c.toml") + ":6:14: elitism must be smaller than population");
     EXPECT_FALSE(fs::exists(dir.file("a")));
 }
@@ -93,7 +93,7 @@ TEST(Messages, AHugeBadStringIsCutShort) {
 TEST(Messages, WarningsGoToStderrNeverToStdout) {
     TempDir dir;
     const std::string cfg = sourcePath("configs/spaceship.toml");
-    ASSERT_EQ(runShapevo("run " + cfg + " --out " + dir.file("r") + " --set checkpoint.interval=1 --set checkpoint.keep=5" + kSmall)
+    ASSERT_EQ(runShapevo("run " + cfg + " --out " + dir.file("r") + " --set checkpoint.interval=1 --set checkpoint.keep=5" + kSmallMessages)
                   .exitCode,
               0);
     // damage the newest checkpoint: resume says so (a warning) and goes on from the one before

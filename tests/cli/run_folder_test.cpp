@@ -24,13 +24,13 @@ namespace fs = std::filesystem;
 using test::readFile;
 using test::runCommand;
 using test::sourcePath;
+using test::spaceshipConfig;
 using test::TempDir;
 using test::writeFile;
 
-const std::string kSmall = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
+const std::string kSmallRunFolder = " --set ga.population=30 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
                            " --set migration.count=3 --set checkpoint.interval=10 --set checkpoint.keep=10 -q";
 
-std::string config() { return sourcePath("configs/spaceship.toml"); }
 
 /// shapevo under `timeout 120` (exit 124 if it hangs), on `ranks` MPI ranks (0: no mpirun).
 test::CommandResult shapevo(int ranks, const std::string& args) {
@@ -59,7 +59,7 @@ TEST(RunFolder, ForgedIslandOnOneRankNeverHangsAndEveryRankFallsBack) {
     for (bool rebuildManifest : {false, true}) {
         TempDir dir;
         const std::string run = dir.file("run");
-        ASSERT_EQ(shapevo(2, "run " + config() + " --seed 3 --set ga.generations=20 --out " + run + kSmall).exitCode, 0);
+        ASSERT_EQ(shapevo(2, "run " + spaceshipConfig() + " --seed 3 --set ga.generations=20 --out " + run + kSmallRunFolder).exitCode, 0);
         const std::string k = run + "/checkpoint-000020";
         dropFromManifest(k, "island-0001.h5");
         xorBytes(k + "/island-0001.h5", 1000, 1007, 0x5a);
@@ -75,9 +75,9 @@ TEST(RunFolder, ForgedIslandOnOneRankNeverHangsAndEveryRankFallsBack) {
 TEST(RunFolder, AnotherRunsCheckpointIsRefusedByNameAndNeverPrunedOrAdopted) {
     TempDir dir;
     const std::string a = dir.file("a"), b = dir.file("b");
-    ASSERT_EQ(shapevo(0, "run " + config() + " --seed 1 --set ga.generations=10 --out " + a + kSmall +
+    ASSERT_EQ(shapevo(0, "run " + spaceshipConfig() + " --seed 1 --set ga.generations=10 --out " + a + kSmallRunFolder +
                              " --set checkpoint.keep=1").exitCode, 0);
-    ASSERT_EQ(shapevo(0, "run " + config() + " --seed 2 --set ga.generations=70 --out " + b + kSmall).exitCode, 0);
+    ASSERT_EQ(shapevo(0, "run " + spaceshipConfig() + " --seed 2 --set ga.generations=70 --out " + b + kSmallRunFolder).exitCode, 0);
     fs::copy(b + "/checkpoint-000070", a + "/checkpoint-000070", fs::copy_options::recursive);
     const std::string foreign = readFile(a + "/checkpoint-000070/run.h5");
     const auto plain = shapevo(0, "resume " + a + " --generations 20 -q");
@@ -91,7 +91,7 @@ TEST(RunFolder, AnotherRunsCheckpointIsRefusedByNameAndNeverPrunedOrAdopted) {
 TEST(RunFolder, ASecondWriterIsRefusedNamingTheHolder) {
     TempDir dir;
     const std::string run = dir.file("run");
-    ASSERT_EQ(shapevo(0, "run " + config() + " --set ga.generations=10 --out " + run + kSmall).exitCode, 0);
+    ASSERT_EQ(shapevo(0, "run " + spaceshipConfig() + " --set ga.generations=10 --out " + run + kSmallRunFolder).exitCode, 0);
     {
         const RunFolderLock held(run);  // this test process is "the other shapevo"
         const auto r = shapevo(0, "resume " + run + " --generations 20 -q");
@@ -108,7 +108,7 @@ TEST(RunFolder, ACheckpointThatCannotBeWrittenStopsTheRunWithExitOne) {
     // Files may grow to 16 KiB: the run folder's small files fit, an island file does not
     // (write() fails with EFBIG; SIGXFSZ is ignored as the shell's trap sets it).
     const auto r = runCommand("sh -c 'trap \"\" XFSZ; ulimit -f 16; exec timeout 120 " + std::string(SHAPEVO_BIN) + " run " +
-                              config() + " --set ga.generations=30 --out " + run + kSmall + " --set checkpoint.interval=5'");
+                              spaceshipConfig() + " --set ga.generations=30 --out " + run + kSmallRunFolder + " --set checkpoint.interval=5'");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("checkpoint at generation 5 could not be written"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("there is no complete checkpoint of this run yet"), std::string::npos) << r.output;
@@ -118,7 +118,7 @@ TEST(RunFolder, ACheckpointThatCannotBeWrittenStopsTheRunWithExitOne) {
 TEST(RunFolder, TheSeedGivenOnTheCommandLineSurvivesAResume) {
     TempDir dir;
     const std::string run = dir.file("run");
-    ASSERT_EQ(shapevo(0, "run " + config() + " --seed 99 --set ga.generations=10 --out " + run + kSmall).exitCode, 0);
+    ASSERT_EQ(shapevo(0, "run " + spaceshipConfig() + " --seed 99 --set ga.generations=10 --out " + run + kSmallRunFolder).exitCode, 0);
     ASSERT_EQ(shapevo(0, "resume " + run + " --generations 20 -q").exitCode, 0);
     EXPECT_NE(readFile(run + "/summary.json").find("\"seed\": 99"), std::string::npos) << readFile(run + "/summary.json");
 }
@@ -136,7 +136,7 @@ std::string meshRun(const TempDir& dir) {
 TEST(RunFolder, AChangedMeshIsRefusedByNameUnlessAllowedAndThenRecorded) {
     TempDir dir;
     const std::string cfg = meshRun(dir), run = dir.file("run");
-    ASSERT_EQ(shapevo(0, "run " + cfg + " --set ga.generations=10 --out " + run + kSmall).exitCode, 0);
+    ASSERT_EQ(shapevo(0, "run " + cfg + " --set ga.generations=10 --out " + run + kSmallRunFolder).exitCode, 0);
     writeFile(dir.file("part.obj"), readFile(dir.file("part.obj")) + "# changed\n");
     const auto refused = shapevo(0, "resume " + run + " --generations 20 -q");
     EXPECT_EQ(refused.exitCode, 2) << refused.output;
@@ -154,7 +154,7 @@ TEST(RunFolder, SigintAndSighupCheckpointAndExitZero) {
         const std::string run = dir.file("run");
         test::CommandResult r;
         std::thread runner([&] {
-            r = runCommand(std::string(SHAPEVO_BIN) + " run " + config() + " --set ga.generations=100000 --out " + run + kSmall);
+            r = runCommand(std::string(SHAPEVO_BIN) + " run " + spaceshipConfig() + " --set ga.generations=100000 --out " + run + kSmallRunFolder);
         });
         // wait until the run is under way (its first checkpoint), then signal the shapevo process only
         for (int i = 0; i < 1200 && !fs::exists(run + "/checkpoint-000010"); ++i)

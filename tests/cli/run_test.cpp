@@ -16,13 +16,13 @@ using test::runShapevo;
 using test::sourcePath;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=40 --set ga.generations=8 --set ga.elitism=6 -q";
+const std::string kSmallRun = " --set ga.population=40 --set ga.generations=8 --set ga.elitism=6 -q";
 
 
 TEST(Run, WritesEveryOutputFile) {
     TempDir dir;
     // the paper's GA: its evaluation count is exact, 40 + 7 x (40 - 6)
-    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmall +
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --out " + dir.file("run") + kSmallRun +
                               " --set search.method=ga");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f : {"best.obj", "best.ply", "best.genome", "curve.csv", "summary.json", "config.toml", "spaceship.grammar"})
@@ -55,9 +55,9 @@ TEST(Run, ProgressLinePerGeneration) {
 TEST(Determinism, SameSeedGivesIdenticalGenomeAndCurveWithOneOrTwoThreads) {
     TempDir dir;
     const std::string cfg = sourcePath("configs/spaceship.toml");
-    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 1 --out " + dir.file("a") + kSmall).exitCode, 0);
-    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 2 --out " + dir.file("b") + kSmall).exitCode, 0);
-    ASSERT_EQ(runShapevo("run " + cfg + " --seed 43 --threads 2 --out " + dir.file("c") + kSmall).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 1 --out " + dir.file("a") + kSmallRun).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 42 --threads 2 --out " + dir.file("b") + kSmallRun).exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + cfg + " --seed 43 --threads 2 --out " + dir.file("c") + kSmallRun).exitCode, 0);
     EXPECT_EQ(readFile(dir.file("a/best.genome")), readFile(dir.file("b/best.genome")));
     EXPECT_EQ(readFile(dir.file("a/best.obj")), readFile(dir.file("b/best.obj")));
     EXPECT_EQ(curveWithoutTime(readFile(dir.file("a/curve.csv"))), curveWithoutTime(readFile(dir.file("b/curve.csv"))));

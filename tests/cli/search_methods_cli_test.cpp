@@ -17,15 +17,15 @@ namespace {
 using test::curveWithoutTime;
 using test::expectSameIslands;
 using test::readFile;
+using test::spaceshipConfig;
 using test::runShapevo;
 using test::runShapevoMpi;
 using test::sourcePath;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=24 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
+const std::string kSmallMethods = " --set ga.population=24 --set ga.elitism=4 --set ga.tournament=5 --set migration.interval=3"
                            " --set migration.count=3 --set checkpoint.interval=5 --set checkpoint.keep=10 -q";
 
-std::string config() { return sourcePath("configs/spaceship.toml"); }
 
 class SearchMethodCli : public ::testing::TestWithParam<const char*> {};
 
@@ -33,11 +33,11 @@ TEST_P(SearchMethodCli, TwoIslandRunResumedFromItsCheckpointEqualsTheUninterrupt
     TempDir dir;
     const std::string method = std::string(" --set search.method=") + GetParam();
     const std::string extra = std::string(GetParam()) == "rjmcmc" ? " --set search.rjmcmc_delayed_rejection=true" : "";
-    auto whole = runShapevoMpi(2, "run " + config() + " --seed 4 --set ga.generations=14 --out " + dir.file("whole") + method +
-                                      extra + kSmall);
+    auto whole = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 4 --set ga.generations=14 --out " + dir.file("whole") + method +
+                                      extra + kSmallMethods);
     ASSERT_EQ(whole.exitCode, 0) << whole.output;
-    auto half = runShapevoMpi(2, "run " + config() + " --seed 4 --set ga.generations=7 --out " + dir.file("half") + method +
-                                     extra + kSmall);
+    auto half = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 4 --set ga.generations=7 --out " + dir.file("half") + method +
+                                     extra + kSmallMethods);
     ASSERT_EQ(half.exitCode, 0) << half.output;
     auto rest = runShapevoMpi(2, "resume " + dir.file("half") + " --generations 14 -q");
     ASSERT_EQ(rest.exitCode, 0) << rest.output;
@@ -60,14 +60,14 @@ INSTANTIATE_TEST_SUITE_P(Methods, SearchMethodCli, ::testing::ValuesIn(baselineM
 
 TEST(SearchMethodCli, UnknownMethodOrKeyIsAnInputError) {
     TempDir dir;
-    const auto bad = runShapevo("run " + config() + " --set search.method=annealing --out " + dir.file("a") + " -q");
+    const auto bad = runShapevo("run " + spaceshipConfig() + " --set search.method=annealing --out " + dir.file("a") + " -q");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
     EXPECT_NE(bad.output.find("search.method must be \"hybrid\", \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"annealing\""),
               std::string::npos) << bad.output;
-    const auto key = runShapevo("run " + config() + " --set search.rjmcmc_temprature=1 --out " + dir.file("b") + " -q");
+    const auto key = runShapevo("run " + spaceshipConfig() + " --set search.rjmcmc_temprature=1 --out " + dir.file("b") + " -q");
     EXPECT_EQ(key.exitCode, 2) << key.output;
     EXPECT_NE(key.output.find("unknown key 'rjmcmc_temprature' in [search]"), std::string::npos) << key.output;
-    const auto flag = runShapevo("run " + config() + " --set search.rjmcmc_delayed_rejection=1 --out " + dir.file("c") + " -q");
+    const auto flag = runShapevo("run " + spaceshipConfig() + " --set search.rjmcmc_delayed_rejection=1 --out " + dir.file("c") + " -q");
     EXPECT_EQ(flag.exitCode, 2) << flag.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("a")));
 }

@@ -16,11 +16,11 @@ using test::runShapevo;
 using test::sourcePath;
 using test::TempDir;
 
-const std::string kSmall = " --set ga.population=20 --set ga.generations=3 --set ga.elitism=2 -q";
+const std::string kSmallSeed = " --set ga.population=20 --set ga.generations=3 --set ga.elitism=2 -q";
 
 TEST(SeedOption, IsWrittenIntoTheRunsConfigAndKeptByResume) {
     TempDir dir;
-    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --seed 99 --out " + dir.file("a") + kSmall);
+    const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --seed 99 --out " + dir.file("a") + kSmallSeed);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string config = readFile(dir.file("a/config.toml"));
     EXPECT_EQ(parseConfig(config, dir.file("a/config.toml")).seed, 99u) << config;
@@ -34,7 +34,7 @@ TEST(SeedOption, IsWrittenIntoTheRunsConfigAndKeptByResume) {
 TEST(SeedOption, TheLargestSeedAConfigHoldsIsKeptExactly) {
     TempDir dir;
     const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --seed 9223372036854775807 --out " +
-                              dir.file("a") + kSmall);
+                              dir.file("a") + kSmallSeed);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(parseConfig(readFile(dir.file("a/config.toml")), "config.toml").seed, 9223372036854775807u);
     EXPECT_NE(readFile(dir.file("a/summary.json")).find("\"seed\": 9223372036854775807,"), std::string::npos);
@@ -44,7 +44,7 @@ TEST(SeedOption, BeyondWhatAConfigHoldsIsAnErrorNotSaturated) {
     TempDir dir;
     for (const std::string seed : {"18446744073709551616", "18446744073709551615", "9223372036854775808", "-1", "12abc"}) {
         const std::string out = dir.file("out-" + seed);
-        const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --seed " + seed + " --out " + out + kSmall);
+        const auto r = runShapevo("run " + sourcePath("configs/spaceship.toml") + " --seed " + seed + " --out " + out + kSmallSeed);
         EXPECT_EQ(r.exitCode, 2) << seed << ": " << r.output;
         EXPECT_NE(r.output.find("shapevo: error: --seed: "), std::string::npos) << seed << ": " << r.output;
         EXPECT_FALSE(std::filesystem::exists(out)) << seed;
