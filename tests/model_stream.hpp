@@ -1,5 +1,6 @@
-// A stream of models the way a GA makes them, for the incremental-evaluation tests: children of
-// the last few models by grow, cut, alter and crossover (and, if asked, exact duplicates).
+// Models for the incremental-evaluation and derive tests: a root alone (rootOnly), and a stream
+// of models the way a GA makes them: children of the last few models by grow, cut, alter and
+// crossover (and, if asked, exact duplicates).
 #pragma once
 #include <cstdint>
 #include <vector>

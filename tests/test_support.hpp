@@ -1,4 +1,5 @@
-// Helpers shared by the tests: paths into the source tree and a temporary folder per test.
+// Helpers shared by the tests: paths into the source tree, a temporary folder per test, running
+// the binary, and small text and error checks (splitLines, rightNested, expectInputError).
 #pragma once
 #include <filesystem>
 #include <functional>
