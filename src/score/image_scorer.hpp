@@ -76,9 +76,7 @@ public:
             return kWorstFitness;
         }
         SilhouetteCounts counts;
-        const bool cached = w.cache && w.cache->holds(w.geometry.primitives.size());
-        if (w.cache && !cached) noteCacheFull();  // a model larger than the cache: the full way
-        if (cached) {
+        if (throughCache(w.cache, w.geometry.primitives.size())) {
             drawCached(w);
             counts = w.raster.score(target_);
             if (checksIncremental()) checkAgainstFull(w, counts);

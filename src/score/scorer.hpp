@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "genome/chromosome.hpp"
@@ -99,6 +100,16 @@ public:
 protected:
     void noteCacheFull() const {
         if (!cacheFull_.load(std::memory_order_relaxed)) cacheFull_.store(true, std::memory_order_relaxed);
+    }
+    /// Whether a model of `primitives` primitives goes through the workspace's primitive cache:
+    /// there is one and it holds the model (PrimitiveCache::holds). A model larger than it is
+    /// drawn the full way, and the cache counts as full (said once by the run).
+    template <class Cache>
+    bool throughCache(const std::optional<Cache>& cache, std::size_t primitives) const {
+        if (!cache) return false;
+        if (cache->holds(primitives)) return true;
+        noteCacheFull();
+        return false;
     }
     /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
     bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {

@@ -48,9 +48,8 @@ public:
             if (countsOut) *countsOut = VoxelCounts{};
             return kWorstFitness;
         }
-        const bool cached = w.cache && w.cache->holds(w.geometry.primitives.size());
-        if (w.cache && !cached) noteCacheFull();  // a model larger than the cache: the full way
-        const VoxelCounts counts = cached ? scoreCached(w) : w.voxelizer.score(w.geometry, target_);
+        const VoxelCounts counts = throughCache(w.cache, w.geometry.primitives.size()) ? scoreCached(w)
+                                                                                       : w.voxelizer.score(w.geometry, target_);
         if (countsOut) *countsOut = counts;
         return volumeFitness(settings_, counts, target_.fillCount, c.genes);
     }
