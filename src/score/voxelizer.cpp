@@ -45,21 +45,26 @@ void Voxelizer::markRows(long z, long y0, long y1, long lo, long hi) {
     }
 }
 
-void Voxelizer::addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
+void Voxelizer::addRows(long y0, long y1, long z, long lo, long hi, VoxelCounts& counts) {
     const long nx = grid_.nx;
-    if (z < 0 || z >= grid_.nz || y < 0 || y >= grid_.ny) {
-        counts.outside += std::uint64_t(hi - lo + 1);
+    const std::uint64_t length = std::uint64_t(hi - lo + 1), rows = std::uint64_t(y1 - y0 + 1);
+    if (z < 0 || z >= grid_.nz) {
+        counts.outside += rows * length;
         return;
     }
+    const long gy0 = std::max(y0, 0L), gy1 = std::min(y1, long(grid_.ny) - 1);
+    const std::uint64_t inGrid = gy0 <= gy1 ? std::uint64_t(gy1 - gy0 + 1) : 0;
+    counts.outside += (rows - inGrid) * length;
+    if (inGrid == 0) return;
     if (lo < 0) {
-        counts.outside += std::uint64_t(std::min(hi, -1L) - lo + 1);
+        counts.outside += inGrid * std::uint64_t(std::min(hi, -1L) - lo + 1);
         lo = 0;
     }
     if (hi >= nx) {
-        counts.outside += std::uint64_t(hi - std::max(lo, nx) + 1);
+        counts.outside += inGrid * std::uint64_t(hi - std::max(lo, nx) + 1);
         hi = nx - 1;
     }
-    if (lo <= hi) markRows(z, y, y, lo, hi);
+    if (lo <= hi) markRows(z, gy0, gy1, lo, hi);
 }
 
 bool Voxelizer::indexBounds(const double c[3], const double reach[3], long first[3], long last[3]) const {

@@ -11,6 +11,7 @@
 // Bookkeeping is per z slice: the range of rows [yMin, yMax] written since the last count, so
 // counting and clearing sweep contiguous memory and touch nothing else.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -65,8 +66,25 @@ public:
     /// Index ranges [first, last] per axis of the voxels within `reach` of `c` (plus one voxel of
     /// padding), clamped to the halo; false if that is empty (or NaN).
     bool indexBounds(const double c[3], const double reach[3], long first[3], long last[3]) const;
-    /// Cover [lo, hi] of row (y, z), counting what falls outside the grid.
-    void addRow(long y, long z, long lo, long hi, VoxelCounts& counts);
+    /// Cover [lo, hi] of row (y, z), counting what falls outside the grid. (addRows for one row,
+    /// written out: the round kinds call it for every row, and the products cost 2 % there.)
+    void addRow(long y, long z, long lo, long hi, VoxelCounts& counts) {
+        if (z < 0 || z >= grid_.nz || y < 0 || y >= grid_.ny) {
+            counts.outside += std::uint64_t(hi - lo + 1);
+            return;
+        }
+        if (lo < 0) {
+            counts.outside += std::uint64_t(std::min(hi, -1L) - lo + 1);
+            lo = 0;
+        }
+        if (hi >= grid_.nx) {
+            counts.outside += std::uint64_t(hi - std::max(lo, long(grid_.nx)) + 1);
+            hi = grid_.nx - 1;
+        }
+        if (lo <= hi) markRows(z, y, y, lo, hi);
+    }
+    /// Cover [lo, hi] of rows y0..y1 of slice z (as addRow on each, in one run).
+    void addRows(long y0, long y1, long z, long lo, long hi, VoxelCounts& counts);
     /// OR the same x-interval [lo, hi] (inside the grid) into rows y0..y1 of slice z.
     void markRows(long z, long y0, long y1, long lo, long hi);
     /// Kind K's reusable work space (K::VoxelScratch).

@@ -108,9 +108,10 @@ struct Totals {
 };
 
 /// `primitives` random primitives of `kinds` (cycled), in models of one to four, compared with
-/// the brute force: bit rows after add(), then every count of score().
+/// the brute force: bit rows after add(), then every count of score(). `turned`: every frame is
+/// turned about one grid axis instead.
 Totals compareWithBruteForce(const std::vector<PrimitiveKind>& kinds, const GridSpec& grid, int primitives,
-                             std::uint64_t seed, bool gridAligned = false) {
+                             std::uint64_t seed, bool gridAligned = false, bool turned = false) {
     Rng rng(seed);
     const VolumeTarget target = test::randomTarget(grid, rng);
     const std::vector<MeshShape> meshes = {test::octahedron(), test::lPrism()};
@@ -123,6 +124,7 @@ Totals compareWithBruteForce(const std::vector<PrimitiveKind>& kinds, const Grid
         const int n = std::min(1 + int(rng.below(4)), primitives - made);
         for (int i = 0; i < n; ++i, ++made) {
             Primitive p = test::randomPrimitive(kinds[std::size_t(made) % kinds.size()], grid, rng, 2, gridAligned);
+            if (turned) p.axes = test::randomTurnAboutGridAxis(rng);
             if (i > 0 && rng.below(2))  // near the previous one, so that they overlap
                 for (int j = 0; j < 3; ++j) p.centre[j] = geometry.primitives.back().centre[j] + float(0.4 * rng.uniform() - 0.2);
             geometry.primitives.push_back(p);
@@ -198,6 +200,12 @@ TEST(PrimitiveVoxelizerExactness, ThousandRandomRoofsWithRidgesApexesAndFrustaMa
 
 TEST(PrimitiveVoxelizerExactness, ThousandRandomParaboloidsMatchBruteForceVoxelByVoxel) {
     expectEveryTerm(compareWithBruteForce({PrimitiveKind::Paraboloid}, testGrid(), 1000, 32));
+}
+
+TEST(PrimitiveVoxelizerExactness, ThousandBoxesTurnedAboutOneGridAxisMatchBruteForce) {
+    // The box voxelizer intersects the slabs without a y component once per z: turns about y
+    // (buildings), x and z, by quarter turns, almost quarter turns and any angle.
+    expectEveryTerm(compareWithBruteForce({PrimitiveKind::Box}, testGrid(), 1000, 34, false, true));
 }
 
 TEST(PrimitiveVoxelizerExactness, ModelsMixingAllKindsMatchBruteForceIncludingOverlapsBetweenKinds) {

@@ -43,6 +43,22 @@ inline glm::mat3 randomAxisAligned(Rng& rng) {
     return a;
 }
 
+/// Axes turned about one random grid axis (a building turned about the vertical): the turned
+/// axes have an exact zero on the turning axis. The angle is a multiple of 90 degrees, within
+/// 1e-5 of one (rows almost along a face), or uniform.
+inline glm::mat3 randomTurnAboutGridAxis(Rng& rng) {
+    const int axis = int(rng.below(3)), u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const std::uint32_t style = rng.below(3);
+    const double quarter = 1.5707963267948966 * double(rng.below(4));
+    const double angle = style == 0 ? quarter : style == 1 ? quarter + 1e-5 * (2 * rng.uniform() - 1) : 6.283185307179586 * rng.uniform();
+    const float c = float(std::cos(angle)), s = float(std::sin(angle));
+    glm::mat3 a(0.0f);
+    a[axis][axis] = 1.0f;
+    a[u][u] = c, a[u][v] = s;
+    a[v][u] = -s, a[v][v] = c;
+    return a;
+}
+
 /// A random primitive of `kind` around `grid`: styles 0-1 rotated, 2 axis-aligned, 3 axis-aligned
 /// and grid-aligned (centre on a voxel centre or corner, half extents in half voxels, so surfaces
 /// pass exactly through voxel centres); centres may leave the grid; one frame axis in four is

@@ -1,6 +1,7 @@
 // The Box kind: `box` in a grammar (no arguments). Solid |u.x| <= 1, |u.y| <= 1, |u.z| <= 1 in
 // the frame's unit coordinates: BoxFrame (shape/box_frame.hpp) is its exact voxel-centre test.
-// Voxel rows: per row the intersection of three slabs' exact index intervals; a box whose axes
+// Voxel rows: per row the intersection of three slabs' exact index intervals (the slabs that do
+// not vary with y once per z slice; neighbouring rows alike go in as one run); a box whose axes
 // are grid axes is one box of index ranges (no per-row work). Silhouette: its 8 corners, of which
 // the fast path keeps the silhouette vertices. Surface: 8 vertices, 12 triangles.
 #pragma once
@@ -75,25 +76,48 @@ struct BoxKind {
             for (long z = gz0; z <= gz1; ++z) rows.markRows(z, gy0, gy1, gx0, gx1);
             return;
         }
+        // A slab whose axis has no y (or z) component gives every row of a z (or y) the same
+        // term: the product is an exact zero, and adding a zero changes no value (at most the sign
+        // of a zero, which no test below can see). So the slabs without y are intersected once per
+        // z, and only the others row by row: a box turned about the vertical axis, as every
+        // building is, costs one cheap test per row instead of three intervals.
         const SlabLine slab[3] = {SlabLine::of(b, 0, 0, grid), SlabLine::of(b, 1, 0, grid), SlabLine::of(b, 2, 0, grid)};
-        auto rowInterval = [&](double cy, double cz, long& lo, long& hi) {
-            lo = first[0];
-            hi = last[0];
-            for (int k = 0; k < 3; ++k) {
-                long l, h;
-                if (!slabInterval(slab[k], b.rowTerm(k, cy, cz), grid, lo, hi, l, h)) return false;
-                lo = l;
-                hi = h;
-            }
-            return true;
-        };
+        int perZ[3], perRow[3], nPerZ = 0, nPerRow = 0;
+        for (int k = 0; k < 3; ++k) (b.a[k][1] == 0.0 ? perZ[nPerZ++] : perRow[nPerRow++]) = k;
+        const double anyY = grid.centre(1, first[1]);
+        const std::uint64_t rowsPerZ = std::uint64_t(last[1] - first[1] + 1);
         for (long z = first[2]; z <= last[2]; ++z) {
             const double cz = grid.centre(2, z);
+            long zlo = first[0], zhi = last[0];
+            bool any = true;
+            for (int i = 0; i < nPerZ && any; ++i) {
+                const int k = perZ[i];
+                any = slabInterval(slab[k], b.rowTerm(k, anyY, cz), grid, zlo, zhi, zlo, zhi);
+            }
+            if (!any) {
+                counts.rows += rowsPerZ;
+                continue;
+            }
+            // Neighbouring rows with the same interval go in as one run (all of a z's rows, for a
+            // building): fewer, longer runs to write and, when recording, to keep.
+            long runY0 = 0, runY1 = -1, runLo = 0, runHi = -1;
             for (long y = first[1]; y <= last[1]; ++y) {
                 ++counts.rows;
-                long lo, hi;
-                if (rowInterval(grid.centre(1, y), cz, lo, hi)) rows.addRow(y, z, lo, hi, counts);
+                const double cy = grid.centre(1, y);
+                long lo = zlo, hi = zhi;
+                bool row = true;
+                for (int i = 0; i < nPerRow && row; ++i) {
+                    const int k = perRow[i];
+                    row = slabInterval(slab[k], b.rowTerm(k, cy, cz), grid, lo, hi, lo, hi);
+                }
+                if (row && runY1 == y - 1 && lo == runLo && hi == runHi) {
+                    runY1 = y;
+                    continue;
+                }
+                if (runY1 >= runY0) rows.addRows(runY0, runY1, z, runLo, runHi, counts);
+                runY0 = y, runY1 = row ? y : y - 1, runLo = lo, runHi = hi;
             }
+            if (runY1 >= runY0) rows.addRows(runY0, runY1, z, runLo, runHi, counts);
         }
     }
 
