@@ -18,8 +18,9 @@
 namespace shapevo {
 
 /// Layout version written to every checkpoint file's schema_version attribute.
-/// 3: the curve has an iou column (2: six curve columns; 1: FNV-like checksums, before XXH3-64).
-inline constexpr std::uint32_t kCheckpointSchemaVersion = 3;
+/// 4: island files hold the migrants not yet joined (/migrants); 3: the curve has an iou column
+/// (2: six curve columns; 1: FNV-like checksums, before XXH3-64).
+inline constexpr std::uint32_t kCheckpointSchemaVersion = 4;
 /// The oldest layout still read: schema 2 files resume, their curve rows without an IoU (NaN).
 inline constexpr std::uint32_t kOldestReadableSchemaVersion = 2;
 

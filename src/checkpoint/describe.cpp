@@ -71,7 +71,7 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
                       " evaluations\n",
                       m.curve.size(), last.generation, last.best, last.mean, last.std, last.evaluations);
     }
-    out << "  island  individuals         best         mean      genes  curve rows   file size\n";
+    out << "  island  individuals         best         mean      genes  curve rows  arriving   file size\n";
     for (int r = 0; r < m.ranks; ++r) {
         const std::string path = (fs::path(folder) / islandFileName(r)).string();
         const IslandState s = readIslandFile(path, grammar, anyLength);
@@ -83,8 +83,9 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
         const std::size_t n = s.population.size();
         const std::string best = n ? format("%12.6g", s.population.fitness[s.population.best()]) : format("%12s", "-");
         const std::string mean = n ? format("%12.6g", sum / double(n)) : format("%12s", "-");
-        out << format("  %6d  %11zu %s %s %10" PRIu64 "  %10zu  %10s\n", r, n, best.c_str(), mean.c_str(), genes,
-                      s.curve.size(), bytes(fs::file_size(path)).c_str());
+        // arriving: migrants received from rank - 1 that join at the next migration (sync mode)
+        out << format("  %6d  %11zu %s %s %10" PRIu64 "  %10zu  %8zu  %10s\n", r, n, best.c_str(), mean.c_str(), genes,
+                      s.curve.size(), s.arrivals.size(), bytes(fs::file_size(path)).c_str());
     }
     if (verbose) {
         out << "\n--- config: " << m.configPath << " ---\n" << m.configText;

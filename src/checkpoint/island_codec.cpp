@@ -79,90 +79,128 @@ std::vector<GenerationStats> decodeCurve(std::span<const std::uint8_t> bytes, co
     return curve;
 }
 
-IslandBytes encodeIsland(const IslandState& s) {
-    const Population& pop = s.population;
+namespace {
+
+/// A population's four datasets: every chromosome's words, offsets, gene counts, fitness.
+void encodePopulation(const Population& pop, const std::string& owner, std::vector<std::uint8_t>& genes,
+                      std::vector<std::uint8_t>& offsets, std::vector<std::uint8_t>& geneCounts,
+                      std::vector<std::uint8_t>& fitness) {
     if (pop.fitness.size() != pop.individuals.size())
-        throw std::invalid_argument("island " + std::to_string(s.rank) + ": " + count(pop.fitness.size(), "fitness values") +
-                                    " for " + count(pop.individuals.size(), "individuals"));
+        throw std::invalid_argument(owner + ": " + count(pop.fitness.size(), "fitness values") + " for " +
+                                    count(pop.individuals.size(), "individuals"));
+    std::size_t words = 0;
+    for (const Chromosome& c : pop.individuals) words += c.words.size();
+    genes.reserve(words * 4);
+    offsets.reserve((pop.size() + 1) * 8);
+    le::append(offsets, std::uint64_t(0));
+    for (std::size_t i = 0; i < pop.size(); ++i) {
+        const Chromosome& c = pop.individuals[i];
+        for (std::uint32_t w : c.words) le::append(genes, w);
+        le::append(offsets, std::uint64_t(genes.size() / 4));
+        le::append(geneCounts, c.genes);
+        if (!std::isfinite(pop.fitness[i]))
+            throw std::invalid_argument(owner + ": fitness of individual " + std::to_string(i) + " is not finite");
+        le::append(fitness, pop.fitness[i]);
+    }
+}
+
+}  // namespace
+
+IslandBytes encodeIsland(const IslandState& s) {
+    const std::string owner = "island " + std::to_string(s.rank);
     IslandBytes b;
     b.rank = s.rank;
     b.generation = s.generation;
     b.evaluations = s.evaluations;
-    b.individuals = pop.size();
-    std::size_t words = 0;
-    for (const Chromosome& c : pop.individuals) words += c.words.size();
-    b.genes.reserve(words * 4);
-    b.offsets.reserve((pop.size() + 1) * 8);
-    le::append(b.offsets, std::uint64_t(0));
-    for (std::size_t i = 0; i < pop.size(); ++i) {
-        const Chromosome& c = pop.individuals[i];
-        for (std::uint32_t w : c.words) le::append(b.genes, w);
-        le::append(b.offsets, std::uint64_t(b.genes.size() / 4));
-        le::append(b.geneCounts, c.genes);
-        if (!std::isfinite(pop.fitness[i]))
-            throw std::invalid_argument("island " + std::to_string(s.rank) + ": fitness of individual " +
-                                        std::to_string(i) + " is not finite");
-        le::append(b.fitness, pop.fitness[i]);
-    }
+    b.individuals = s.population.size();
+    encodePopulation(s.population, owner, b.genes, b.offsets, b.geneCounts, b.fitness);
+    encodePopulation(s.arrivals, owner + " arrivals", b.arrivalGenes, b.arrivalOffsets, b.arrivalGeneCounts,
+                     b.arrivalFitness);
     for (std::uint64_t w : s.rng) le::append(b.rng, w);
     b.curve = encodeCurve(s.curve);
     return b;
 }
 
-IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
-                         const std::string& path) {
-    // 1. Shapes, all against the individuals attribute, before anything is allocated.
-    expectElements(v.rng, 8, 4, path, kRng, "u64", "the xoshiro256** state");
-    const std::size_t offsets = elements(v.offsets, 8, path, kOffsets, "u64");
-    if (offsets == 0 || offsets - 1 != v.individuals)
-        throw InputError(path, kOffsets, "holds " + count(offsets, "u64") + " values, expected individuals + 1 = " +
-                                             std::to_string(v.individuals) + " + 1 (the start of each and the end)");
-    expectElements(v.geneCounts, 4, v.individuals, path, kGeneCounts, "u32", "one per individual");
-    expectElements(v.fitness, 8, v.individuals, path, kFitness, "f64", "one per individual");
-    const std::size_t words = elements(v.genes, 4, path, kGenes, "u32");
+namespace {
+
+struct PopulationView {
+    std::span<const std::uint8_t> genes, offsets, geneCounts, fitness;
+    const char *genesName, *offsetsName, *geneCountsName, *fitnessName;
+};
+
+/// Decode and validate `individuals` individuals (shapes, offsets, values, then every chromosome
+/// as a derivation of the grammar). Throws InputError naming the dataset.
+Population decodePopulation(const PopulationView& v, std::uint64_t individuals, const Grammar& g, const GenomeLimits& limits,
+                            const std::string& path) {
+    // 1. Shapes, all against the count, before anything is allocated.
+    const std::size_t offsets = elements(v.offsets, 8, path, v.offsetsName, "u64");
+    if (offsets == 0 || offsets - 1 != individuals)
+        throw InputError(path, v.offsetsName, "holds " + count(offsets, "u64") + " values, expected individuals + 1 = " +
+                                                  std::to_string(individuals) + " + 1 (the start of each and the end)");
+    expectElements(v.geneCounts, 4, individuals, path, v.geneCountsName, "u32", "one per individual");
+    expectElements(v.fitness, 8, individuals, path, v.fitnessName, "f64", "one per individual");
+    const std::size_t words = elements(v.genes, 4, path, v.genesName, "u32");
 
     // 2. Offsets: start at 0, never decrease, end at the number of words; no chromosome over 2^32 words.
-    const std::size_t n = std::size_t(v.individuals);
+    const std::size_t n = std::size_t(individuals);
     auto offset = [&](std::size_t i) { return le::load<std::uint64_t>(v.offsets.data() + 8 * i); };
-    if (offset(0) != 0) throw InputError(path, kOffsets, "first offset is " + std::to_string(offset(0)) + ", not 0");
+    if (offset(0) != 0) throw InputError(path, v.offsetsName, "first offset is " + std::to_string(offset(0)) + ", not 0");
     for (std::size_t i = 0; i < n; ++i) {
         if (offset(i + 1) < offset(i))
-            throw InputError(path, kOffsets, "offset " + std::to_string(i + 1) + " is smaller than offset " + std::to_string(i));
+            throw InputError(path, v.offsetsName,
+                             "offset " + std::to_string(i + 1) + " is smaller than offset " + std::to_string(i));
         if (offset(i + 1) - offset(i) > UINT32_MAX)
-            throw InputError(path, kOffsets, "individual " + std::to_string(i) + " spans more than 2^32 words");
+            throw InputError(path, v.offsetsName, "individual " + std::to_string(i) + " spans more than 2^32 words");
     }
     if (offset(n) != words)
-        throw InputError(path, kOffsets, "last offset is " + std::to_string(offset(n)) + " but " + kGenes + " holds " +
-                                             count(words, "words"));
+        throw InputError(path, v.offsetsName, "last offset is " + std::to_string(offset(n)) + " but " + v.genesName +
+                                                  " holds " + count(words, "words"));
 
     // 3. Values: fitness finite, gene counts within the limit (cheap, before validating trees).
     for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(le::load<double>(v.fitness.data() + 8 * i)))
-            throw InputError(path, kFitness, "fitness of individual " + std::to_string(i) + " is not finite");
+            throw InputError(path, v.fitnessName, "fitness of individual " + std::to_string(i) + " is not finite");
         const std::uint32_t genes = le::load<std::uint32_t>(v.geneCounts.data() + 4 * i);
         if (genes > limits.maxGenes)
-            throw InputError(path, kGeneCounts, "individual " + std::to_string(i) + " has " + count(genes, "genes") +
-                                                    ", over the limit of " + std::to_string(limits.maxGenes));
+            throw InputError(path, v.geneCountsName, "individual " + std::to_string(i) + " has " + count(genes, "genes") +
+                                                         ", over the limit of " + std::to_string(limits.maxGenes));
     }
 
     // 4. Build, validating every chromosome as a derivation of the grammar.
-    IslandState s;
-    s.rank = v.rank;
-    s.generation = v.generation;
-    s.evaluations = v.evaluations;
-    for (std::size_t k = 0; k < 4; ++k) s.rng[k] = le::load<std::uint64_t>(v.rng.data() + 8 * k);
-    s.population.individuals.resize(n);
-    s.population.fitness.resize(n);
+    Population pop;
+    pop.individuals.resize(n);
+    pop.fitness.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        Chromosome& c = s.population.individuals[i];
+        Chromosome& c = pop.individuals[i];
         c.genes = le::load<std::uint32_t>(v.geneCounts.data() + 4 * i);
         c.words.resize(std::size_t(offset(i + 1) - offset(i)));
         for (std::size_t w = 0; w < c.words.size(); ++w)
             c.words[w] = le::load<std::uint32_t>(v.genes.data() + 4 * (std::size_t(offset(i)) + w));
         const std::string problem = validateChromosome(g, c, limits);
-        if (!problem.empty()) throw InputError(path, kGenes, "individual " + std::to_string(i) + ": " + problem);
-        s.population.fitness[i] = le::load<double>(v.fitness.data() + 8 * i);
+        if (!problem.empty()) throw InputError(path, v.genesName, "individual " + std::to_string(i) + ": " + problem);
+        pop.fitness[i] = le::load<double>(v.fitness.data() + 8 * i);
     }
+    return pop;
+}
+
+}  // namespace
+
+IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
+                         const std::string& path) {
+    expectElements(v.rng, 8, 4, path, kRng, "u64", "the xoshiro256** state");
+    IslandState s;
+    s.rank = v.rank;
+    s.generation = v.generation;
+    s.evaluations = v.evaluations;
+    s.population = decodePopulation({v.genes, v.offsets, v.geneCounts, v.fitness, kGenes, kOffsets, kGeneCounts, kFitness},
+                                    v.individuals, g, limits, path);
+    const bool arrivals = !(v.arrivalGenes.empty() && v.arrivalOffsets.empty() && v.arrivalGeneCounts.empty() &&
+                            v.arrivalFitness.empty());
+    if (arrivals)  // as many as the offsets say: each is validated like the population
+        s.arrivals = decodePopulation({v.arrivalGenes, v.arrivalOffsets, v.arrivalGeneCounts, v.arrivalFitness, kArrivalGenes,
+                                       kArrivalOffsets, kArrivalGeneCounts, kArrivalFitness},
+                                      v.arrivalOffsets.size() / 8 == 0 ? 0 : v.arrivalOffsets.size() / 8 - 1, g, limits, path);
+    for (std::size_t k = 0; k < 4; ++k) s.rng[k] = le::load<std::uint64_t>(v.rng.data() + 8 * k);
     s.curve = decodeCurve(v.curve, path, kCurve, v.curveWidth);
     return s;
 }

@@ -21,6 +21,11 @@ inline constexpr const char* kOffsets = "/population/offsets";
 inline constexpr const char* kGeneCounts = "/population/gene_counts";
 inline constexpr const char* kFitness = "/population/fitness";
 inline constexpr const char* kRng = "/rng/state";
+// Schema 4: migrants received from rank - 1 that join at the next migration generation (sync mode).
+inline constexpr const char* kArrivalGenes = "/migrants/genes";
+inline constexpr const char* kArrivalOffsets = "/migrants/offsets";
+inline constexpr const char* kArrivalGeneCounts = "/migrants/gene_counts";
+inline constexpr const char* kArrivalFitness = "/migrants/fitness";
 inline constexpr const char* kCurve = "/curve";
 inline constexpr const char* kCurveColumns = "generation,seconds,evaluations,best,mean,std,iou";
 inline constexpr std::size_t kCurveWidth = 7;  ///< schema 3 (schema 2 had 6 columns, without iou)
@@ -41,6 +46,9 @@ struct IslandBytesView {
     std::span<const std::uint8_t> rng;         ///< u64 x 4
     std::span<const std::uint8_t> curve;       ///< f64 x rows x curveWidth
     std::size_t curveWidth = island_layout::kCurveWidth;  ///< 7, or 6 in a schema 2 file (no iou)
+    /// The arrivals, laid out as the population (their count is the offsets' minus one); all four
+    /// empty in files before schema 4 (no arrivals).
+    std::span<const std::uint8_t> arrivalGenes, arrivalOffsets, arrivalGeneCounts, arrivalFitness;
 };
 
 /// Owned raw bytes of one island's datasets, as encodeIsland makes them.
@@ -51,8 +59,11 @@ struct IslandBytes {
     std::uint64_t individuals = 0;
     std::vector<std::uint8_t> genes, offsets, geneCounts, fitness, rng, curve;
     std::size_t curveWidth = island_layout::kCurveWidth;
+    std::vector<std::uint8_t> arrivalGenes, arrivalOffsets, arrivalGeneCounts, arrivalFitness;
     IslandBytesView view() const {
-        return {rank, generation, evaluations, individuals, genes, offsets, geneCounts, fitness, rng, curve, curveWidth};
+        return {rank,  generation, evaluations, individuals,  genes,        offsets,           geneCounts,
+                fitness, rng,      curve,       curveWidth,   arrivalGenes, arrivalOffsets, arrivalGeneCounts,
+                arrivalFitness};
     }
 };
 

@@ -2,7 +2,7 @@
 // format (README, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
 //
 //   /                         root group, attributes:
-//       schema_version        u32   format version of this layout (3)
+//       schema_version        u32   format version of this layout (4; 3 lacks /migrants)
 //       run_id                string  the run this island belongs to (as in run.h5)
 //       seed                  u64   the run's seed (as in run.h5)
 //       ranks                 i32   islands in the run (as in run.h5)
@@ -16,6 +16,11 @@
 //   /population/gene_counts   u32 [N]      genes in each chromosome
 //   /population/fitness       f64 [N]      fitness of each individual
 //   /rng/state                u64 [4]      the island's xoshiro256** state
+//   /migrants/genes, /migrants/offsets, /migrants/gene_counts, /migrants/fitness
+//                                          (schema 4) the migrants received from rank - 1 that
+//                                          join at the next migration generation (sync mode
+//                                          completes each exchange one migration late), laid out
+//                                          as the population; M = offsets - 1, often 0
 //   /curve                    f64 [G x 7]  this island's fitness curve, one row per generation,
 //                                          chunked and extendible (G unlimited); attribute
 //       columns               string "generation,seconds,evaluations,best,mean,std,iou"
@@ -54,6 +59,15 @@ void writeIslandFile(const std::string& path, const IslandState& s) {
         w.dataset(population.get(), "fitness", H5T_IEEE_F64LE, b.fitness, n);
     }
     {
+        h5::Handle migrants = w.group(w.root(), "migrants");
+        const hsize_t words[] = {b.arrivalGenes.size() / 4}, offsets[] = {b.arrivalOffsets.size() / 8},
+                      m[] = {b.arrivalFitness.size() / 8};
+        w.dataset(migrants.get(), "genes", H5T_STD_U32LE, b.arrivalGenes, words);
+        w.dataset(migrants.get(), "offsets", H5T_STD_U64LE, b.arrivalOffsets, offsets);
+        w.dataset(migrants.get(), "gene_counts", H5T_STD_U32LE, b.arrivalGeneCounts, m);
+        w.dataset(migrants.get(), "fitness", H5T_IEEE_F64LE, b.arrivalFitness, m);
+    }
+    {
         h5::Handle rng = w.group(w.root(), "rng");
         const hsize_t four[] = {4};
         w.dataset(rng.get(), "state", H5T_STD_U64LE, b.rng, four);
@@ -80,6 +94,12 @@ IslandState readIslandFile(const std::string& path, const Grammar& g, const Geno
     b.geneCounts = r.dataset(kGeneCounts, H5T_STD_U32LE, 1);
     b.fitness = r.dataset(kFitness, H5T_IEEE_F64LE, 1);
     b.rng = r.dataset(kRng, H5T_STD_U64LE, 1);
+    if (r.schema() >= 4) {
+        b.arrivalGenes = r.dataset(kArrivalGenes, H5T_STD_U32LE, 1);
+        b.arrivalOffsets = r.dataset(kArrivalOffsets, H5T_STD_U64LE, 1);
+        b.arrivalGeneCounts = r.dataset(kArrivalGeneCounts, H5T_STD_U32LE, 1);
+        b.arrivalFitness = r.dataset(kArrivalFitness, H5T_IEEE_F64LE, 1);
+    }
     b.curveWidth = schema2 ? kCurveWidthSchema2 : kCurveWidth;
     b.curve = r.dataset(kCurve, H5T_IEEE_F64LE, 2, b.curveWidth);
     const char* columns = schema2 ? kCurveColumnsSchema2 : kCurveColumns;

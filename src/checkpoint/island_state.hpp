@@ -21,6 +21,8 @@ struct IslandState {
     std::uint64_t evaluations = 0;         ///< fitness evaluations on this island so far
     std::array<std::uint64_t, 4> rng{};    ///< the island's Rng state
     Population population;                 ///< chromosomes and their fitness
+    Population arrivals;                   ///< sync mode: migrants received from rank - 1 that join
+                                           ///< at the next migration generation (schema 4)
     std::vector<GenerationStats> curve;    ///< this island's own curve, one row per generation
 };
 
@@ -36,7 +38,7 @@ struct InputFile {
 /// inputs are the run's identity: fixed when it starts, the same in every checkpoint.
 struct RunMetadata {
     std::string runId;                     ///< 32 random hex digits, made when the run starts
-    std::uint32_t schemaVersion = 3;
+    std::uint32_t schemaVersion = 4;      ///< as read (kCheckpointSchemaVersion when written)
     std::uint64_t seed = 0;
     std::uint32_t generation = 0;          ///< generations completed by every island
     std::int32_t ranks = 1;                ///< number of islands

@@ -1,4 +1,4 @@
-// politeWait: MPI_Test, then sleep with a doubling back-off.
+// politeWait: MPI_Test (or MPI_Iprobe), then sleep with a doubling back-off.
 #include "island/polite_wait.hpp"
 
 #include <algorithm>
@@ -43,6 +43,14 @@ void politeWaitBoth(const MpiSession& mpi, MPI_Request& a, MPI_Request& b) {
         MPI_Testall(2, both, &flag, MPI_STATUSES_IGNORE);
         a = both[0], b = both[1];
         return flag != 0;
+    });
+}
+
+void politeProbe(const MpiSession& mpi, int source, int tag, MPI_Status& status) {
+    waitUntil(mpi, [&] {
+        int arrived = 0;
+        MPI_Iprobe(source, tag, MPI_COMM_WORLD, &arrived, &status);
+        return arrived != 0;
     });
 }
 

@@ -1,12 +1,14 @@
-// Ring migration: packing, validation, sync exchange with Isend/Irecv completed by politeWait,
-// async with Isend/Iprobe.
+// Ring migration: packing, validation, sync exchange completed one migration late (posted sends,
+// a polite probe), async with posted sends and Iprobe.
 #include "island/ring_migration.hpp"
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <thread>
 
 #include <mpi.h>
 
@@ -18,7 +20,22 @@ namespace shapevo {
 
 namespace {
 constexpr int kMigrationTag = 72;
+
+/// Has a migration message from `source` arrived (MPI_Iprobe)? Its envelope in `status`.
+bool arrivedFrom(int source, MPI_Status& status) {
+    int arrived = 0;
+    MPI_Iprobe(source, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
+    return arrived != 0;
 }
+
+/// Receive the message whose envelope `status` describes into `words`.
+void take(int source, const MPI_Status& status, std::vector<std::uint32_t>& words) {
+    int count = 0;
+    MPI_Get_count(&status, MPI_UINT32_T, &count);
+    words.resize(std::size_t(count));
+    MPI_Recv(words.data(), count, MPI_UINT32_T, source, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+}
+}  // namespace
 
 
 void packIndividuals(const Population& pop, const std::vector<std::size_t>& which, std::vector<std::uint32_t>& out) {
@@ -83,16 +100,21 @@ RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& set
     : mpi_(mpi), settings_(settings), grammar_(g), limits_(limits) {}
 
 
-void RingMigration::integrate(Population& pop, const std::vector<std::uint32_t>& words) {
-    arrivals_.clear();
-    arrivalFitness_.clear();
-    const std::string problem = unpackIndividuals(grammar_, limits_, words, arrivals_, arrivalFitness_);
-    if (!problem.empty()) {  // never let bad bytes into the population
-        ++rejected_;
-        return;
-    }
-    received_ += arrivals_.size();
-    replaceWorst(pop, arrivals_, arrivalFitness_);
+bool RingMigration::unpack(const std::vector<std::uint32_t>& words, Population& into) {
+    into.individuals.clear();
+    into.fitness.clear();
+    if (unpackIndividuals(grammar_, limits_, words, into.individuals, into.fitness).empty()) return true;
+    ++rejected_;  // never let bad bytes into the population
+    into.individuals.clear();
+    into.fitness.clear();
+    return false;
+}
+
+void RingMigration::joinArrived(Population& pop) {
+    received_ += arrived_.size();
+    replaceWorst(pop, arrived_.individuals, arrived_.fitness);
+    arrived_.individuals.clear();
+    arrived_.fitness.clear();
 }
 
 void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
@@ -100,49 +122,59 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
     if (generation % settings_.interval != 0) return;
     const int right = (mpi_.rank() + 1) % mpi_.size(), left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
     packIndividuals(pop, bestIndices(pop, settings_.count), outgoing_);
+    // Sync: the migrants of the last migration generation join now (received when they arrived,
+    // or now, waiting politely if the neighbour is a whole interval behind); also any that a
+    // checkpoint held. This generation's leave without waiting for anyone.
+    if (!settings_.async) receiveInFlight();
+    joinArrived(pop);
+    sends_.post(outgoing_.data(), outgoing_.size(), PostedSends::Type::Uint32, right, kMigrationTag);
     if (!settings_.async) {
-        // the exchange waits for the slower neighbour (politely: no busy core)
-        int sendCount = int(outgoing_.size()), recvCount = 0;
-        MPI_Request send, receive;
-        MPI_Irecv(&recvCount, 1, MPI_INT, left, kMigrationTag, MPI_COMM_WORLD, &receive);
-        MPI_Isend(&sendCount, 1, MPI_INT, right, kMigrationTag, MPI_COMM_WORLD, &send);
-        politeWaitBoth(mpi_, send, receive);
-        incoming_.resize(std::size_t(recvCount));
-        MPI_Irecv(incoming_.data(), recvCount, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, &receive);
-        MPI_Isend(outgoing_.data(), sendCount, MPI_UINT32_T, right, kMigrationTag, MPI_COMM_WORLD, &send);
-        politeWaitBoth(mpi_, send, receive);
-        integrate(pop, incoming_);
+        inFlight_ = true;
         return;
     }
-    // Async: post this one, take whatever has arrived.
-    sends_.post(outgoing_.data(), outgoing_.size(), PostedSends::Type::Uint32, right, kMigrationTag);
-    for (;;) {
-        int arrived = 0;
-        MPI_Status status;
-        MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
-        if (!arrived) break;
-        int count = 0;
-        MPI_Get_count(&status, MPI_UINT32_T, &count);
-        incoming_.resize(std::size_t(count));
-        MPI_Recv(incoming_.data(), count, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        integrate(pop, incoming_);
+    // Async: take whatever has arrived.
+    MPI_Status status;
+    while (arrivedFrom(left, status)) {
+        take(left, status, incoming_);
+        if (unpack(incoming_, arrived_)) joinArrived(pop);
     }
 }
 
+void RingMigration::receiveInFlight() {
+    if (!inFlight_) return;
+    inFlight_ = false;
+    const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
+    MPI_Status status;
+    politeProbe(mpi_, left, kMigrationTag, status);
+    take(left, status, incoming_);
+    unpack(incoming_, arrived_);
+}
+
+const Population& RingMigration::arrivals() {
+    receiveInFlight();
+    return arrived_;
+}
+
+void RingMigration::restoreArrivals(const Population& arrivals) {
+    arrived_ = arrivals;
+    inFlight_ = false;
+}
+
 void RingMigration::finish() {
-    if (!mpi_.active() || mpi_.size() < 2 || !settings_.async) return;
+    if (!mpi_.active() || mpi_.size() < 2) return;
+    if (!settings_.async) {  // one message at most is in flight to each rank: take it, wait for ours
+        receiveInFlight();
+        WaitTimer wait(mpi_);
+        while (!sends_.allComplete()) std::this_thread::sleep_for(std::chrono::microseconds(50));
+        return;
+    }
     const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
     drainUntilEveryoneIsDone(
         mpi_,
         [&] {  // late migrants are discarded
-            int arrived = 0;
             MPI_Status status;
-            MPI_Iprobe(left, kMigrationTag, MPI_COMM_WORLD, &arrived, &status);
-            if (!arrived) return false;
-            int count = 0;
-            MPI_Get_count(&status, MPI_UINT32_T, &count);
-            incoming_.resize(std::size_t(count));
-            MPI_Recv(incoming_.data(), count, MPI_UINT32_T, left, kMigrationTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (!arrivedFrom(left, status)) return false;
+            take(left, status, incoming_);
             return true;
         },
         [&] { return sends_.allComplete(); });

@@ -1,8 +1,13 @@
 // RingMigration: every `interval` generations each island sends its best `count` individuals
 // (packed chromosome words plus fitness) to rank + 1, where they replace the worst.
-// Synchronous (lock-step, repeatable) by default; asynchronous mode posts non-blocking sends
-// and takes whatever has arrived, and never blocks (finish() drains without deadlock).
-// Received bytes are untrusted: every chromosome is validated before it joins the population.
+// Sync mode (repeatable) completes each exchange one migration late: the migrants sent at
+// generation g join the neighbour at its generation g + interval, so an island waits only when
+// its left neighbour is a whole interval behind, never for the scheduler's small delays (4 ranks
+// on 2 cores). Migrants received but not yet joined are part of the island's state: a checkpoint
+// stores them (arrivals()), a resume gives them back (restoreArrivals()).
+// Async mode posts non-blocking sends and takes whatever has arrived, and never blocks.
+// finish() drains both without deadlock. Received bytes are untrusted: every chromosome is
+// validated before it joins the population.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -31,22 +36,31 @@ public:
     RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g, const GenomeLimits& limits);
     /// Call after generation `generation` completes; migrates if it is a migration generation.
     void afterGeneration(Population& pop, std::uint32_t generation);
-    /// Async mode: complete every send and discard late arrivals; collective, call on all ranks.
+    /// Sync mode, collective: receive the migrants still in flight to this rank and return every
+    /// one not yet joined (for a checkpoint). Empty in async mode.
+    const Population& arrivals();
+    /// Sync mode: migrants a checkpoint held, to join at the next migration generation.
+    void restoreArrivals(const Population& arrivals);
+    /// Complete every send and discard what has not joined; collective, call on all ranks.
     void finish();
     std::uint64_t received() const { return received_; }
     std::uint64_t rejected() const { return rejected_; }
 
 private:
-    void integrate(Population& pop, const std::vector<std::uint32_t>& words);
+    /// Validate a message into `into` (empty and counted as rejected if it is bad).
+    bool unpack(const std::vector<std::uint32_t>& words, Population& into);
+    /// Replace the worst of `pop` by arrived_, and empty it.
+    void joinArrived(Population& pop);
+    void receiveInFlight();  ///< sync: the message of the last migration generation, into arrived_
 
     const MpiSession& mpi_;
     MigrationSettings settings_;
     const Grammar& grammar_;
     GenomeLimits limits_;
     std::vector<std::uint32_t> outgoing_, incoming_;
-    std::vector<Chromosome> arrivals_;
-    std::vector<double> arrivalFitness_;
     PostedSends sends_;
+    bool inFlight_ = false;  ///< sync: a message from the left neighbour is on its way
+    Population arrived_;     ///< received and validated; sync: joining at the next migration generation
     std::uint64_t received_ = 0, rejected_ = 0;
 };
 

@@ -140,6 +140,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     const std::unique_ptr<SearchMethod> method = makeSearchMethod(s.search, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()));
     SearchMethod& ga = *method;
     RingMigration migration(mpi, s.migration, grammar, s.limits);
+    if (restored) migration.restoreArrivals(restored->arrivals);
     installStopSignalHandlers();
     std::vector<GenerationStats> localCurve = restored ? restored->curve : std::vector<GenerationStats>{};
     BestModelIoU bestIoU;
@@ -190,6 +191,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         island.evaluations = ga.evaluations();
         island.rng = ga.rng().state();
         island.population = ga.population();
+        island.arrivals = migration.arrivals();  // sync: receives what is still in flight to this rank
         island.curve = localCurve;
         const std::string failed = writeCheckpoint(mpi, folder, island, meta, s.checkpoint.keep, log);
         if (!failed.empty())  // every rank sees the failure: stop now rather than lose more work

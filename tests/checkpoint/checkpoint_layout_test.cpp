@@ -34,7 +34,8 @@ TEST(CheckpointLayout, IslandFileListsExactlyTheDocumentedNames) {
     writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0));
     const auto names = h5lsNames(dir.file("island-0000.h5"));
     if (!names) GTEST_SKIP() << "h5ls (hdf5-tools) not installed";
-    EXPECT_EQ(*names, (std::set<std::string>{"/", "/curve", "/population", "/population/fitness",
+    EXPECT_EQ(*names, (std::set<std::string>{"/", "/curve", "/migrants", "/migrants/fitness", "/migrants/gene_counts",
+                                              "/migrants/genes", "/migrants/offsets", "/population", "/population/fitness",
                                               "/population/gene_counts", "/population/genes", "/population/offsets",
                                               "/rng", "/rng/state"}));
 }

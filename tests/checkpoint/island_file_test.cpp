@@ -7,6 +7,7 @@
 
 #include "checkpoint_test_util.hpp"
 #include "base/input_error.hpp"
+#include "checkpoint/island_codec.hpp"
 
 namespace shapevo {
 namespace {
@@ -29,18 +30,23 @@ void expectSameCurve(const std::vector<GenerationStats>& a, const std::vector<Ge
     }
 }
 
+void expectSamePopulation(const Population& a, const Population& b) {
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(a.fitness.size(), b.fitness.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a.individuals[i].genes, b.individuals[i].genes) << "individual " << i;
+        EXPECT_EQ(a.individuals[i].words, b.individuals[i].words) << "individual " << i;
+        EXPECT_EQ(bits(a.fitness[i]), bits(b.fitness[i])) << "individual " << i;
+    }
+}
+
 void expectSameIsland(const IslandState& a, const IslandState& b) {
     EXPECT_EQ(a.rank, b.rank);
     EXPECT_EQ(a.generation, b.generation);
     EXPECT_EQ(a.evaluations, b.evaluations);
     EXPECT_EQ(a.rng, b.rng);
-    ASSERT_EQ(a.population.size(), b.population.size());
-    ASSERT_EQ(a.population.fitness.size(), b.population.fitness.size());
-    for (std::size_t i = 0; i < a.population.size(); ++i) {
-        EXPECT_EQ(a.population.individuals[i].genes, b.population.individuals[i].genes) << "individual " << i;
-        EXPECT_EQ(a.population.individuals[i].words, b.population.individuals[i].words) << "individual " << i;
-        EXPECT_EQ(bits(a.population.fitness[i]), bits(b.population.fitness[i])) << "individual " << i;
-    }
+    expectSamePopulation(a.population, b.population);
+    expectSamePopulation(a.arrivals, b.arrivals);
     expectSameCurve(a.curve, b.curve);
 }
 
@@ -52,6 +58,30 @@ TEST(CheckpointIslandFile, RoundTripOfGrownSpaceshipPopulationIsBitIdentical) {
     ASSERT_GT(words, 200u);  // a real population, not a handful of roots
     writeIslandFile(dir.file("island-0003.h5"), s);
     expectSameIsland(s, readIslandFile(dir.file("island-0003.h5"), spaceship(), test::kLimits));
+}
+
+// Sync islands complete each exchange one migration late: the migrants received but not yet
+// joined are part of the state, stored and validated like the population.
+TEST(CheckpointIslandFile, MigrantsWaitingToJoinRoundTripAndAreValidatedLikeThePopulation) {
+    test::TempDir dir;
+    IslandState s = makeIsland(1, 30, 4);
+    s.arrivals = makeIsland(6, 5).population;
+    writeIslandFile(dir.file("island-0001.h5"), s);
+    const IslandState back = readIslandFile(dir.file("island-0001.h5"), spaceship(), test::kLimits);
+    ASSERT_EQ(back.arrivals.size(), 5u);
+    expectSameIsland(s, back);
+
+    IslandBytes bytes = encodeIsland(s);
+    bytes.arrivalGeneCounts[0] = 0xff;  // the first migrant claims 255 genes, over the limit of 60
+    try {
+        decodeIsland(bytes.view(), spaceship(), test::kLimits, "x.h5");
+        FAIL() << "a migrant over the gene limit was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("/migrants/gene_counts"), std::string::npos) << e.what();
+    }
+    bytes = encodeIsland(s);
+    bytes.arrivalOffsets.resize(bytes.arrivalOffsets.size() - 8);  // one offset short
+    EXPECT_THROW(decodeIsland(bytes.view(), spaceship(), test::kLimits, "x.h5"), InputError);
 }
 
 TEST(CheckpointIslandFile, EmptyPopulationAndEmptyCurveRoundTrip) {

@@ -65,6 +65,22 @@ TEST(CheckpointSchema, ASchemaTwoCheckpointIsReadWithoutCurveIoU) {
     EXPECT_EQ(s.curve.back().best, m.curve.back().best);
 }
 
+// A real schema 3 checkpoint (tests/data/schema3-checkpoint/README.md: rank 0 of a 2-rank sync
+// run, before islands stored their migrants in flight) is still read: no migrants waiting.
+TEST(CheckpointSchema, ASchemaThreeCheckpointIsReadWithNoMigrantsWaiting) {
+    const std::string dir = test::sourcePath("tests/data/schema3-checkpoint/");
+    const RunMetadata m = readRunMetadata(dir + "run.h5");
+    EXPECT_EQ(m.schemaVersion, 3u);
+    EXPECT_EQ(m.generation, 6u);
+    EXPECT_EQ(m.ranks, 2);
+    const IslandState s = readIslandFile(dir + "island-0000.h5", test::spaceship(), GenomeLimits{100});
+    EXPECT_EQ(s.runId, m.runId);
+    EXPECT_EQ(s.population.size(), 20u);
+    EXPECT_EQ(s.arrivals.size(), 0u);
+    ASSERT_EQ(s.curve.size(), 6u);
+    EXPECT_FALSE(std::isnan(s.curve.back().iou));
+}
+
 // A schema 3 file whose schema_version was set to 2 (its attributes no longer match their
 // checksum, and its curve has seven columns) is refused, naming the file.
 TEST(CheckpointSchema, AFileWhoseSchemaWasChangedIsRefused) {

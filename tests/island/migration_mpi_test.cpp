@@ -1,5 +1,6 @@
 // 2-rank MPI tests (run by ctest under mpirun -np 2): migrated genomes arrive intact on the next
-// rank after one interval, replace its worst, bad bytes are refused, and async mode drains.
+// rank and join one migration later (no waiting for a neighbour less than an interval behind),
+// replace its worst, bad bytes are refused, and async mode drains.
 #include <gtest/gtest.h>
 
 #include <mpi.h>
@@ -54,21 +55,26 @@ MpiSession& TwoRanks::mpiRef() { return *gMpi; }
 
 namespace {
 
-TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankAfterOneInterval) {
+TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
     const GenomeLimits limits{60};
     MigrationSettings m;
     m.interval = 5;
     m.count = 3;
     RingMigration migration(mpi, m, spaceship(), limits);
     Population mine = populationOf(mpi.rank(), 20);
+    const Population original = mine;
     migration.afterGeneration(mine, 4);  // not a migration generation: nothing moves
+    migration.afterGeneration(mine, 5);  // my best leave; nothing has arrived to join yet
     EXPECT_EQ(migration.received(), 0u);
-    migration.afterGeneration(mine, 5);
-    EXPECT_EQ(migration.received(), 3u);
-    EXPECT_EQ(migration.rejected(), 0u);
+    for (std::size_t i = 0; i < 20; ++i) EXPECT_EQ(mine.individuals[i].words, original.individuals[i].words);
+    // A checkpoint would hold the left neighbour's three best, received but not yet joined.
     const int left = (mpi.rank() + mpi.size() - 1) % mpi.size();
     const Population sender = populationOf(left, 20);
-    const Population original = populationOf(mpi.rank(), 20);
+    ASSERT_EQ(migration.arrivals().size(), 3u);
+    EXPECT_EQ(migration.arrivals().individuals[0].words, sender.individuals[19].words);
+    migration.afterGeneration(mine, 10);  // they join now
+    EXPECT_EQ(migration.received(), 3u);
+    EXPECT_EQ(migration.rejected(), 0u);
     // the sender's three best (indices 19, 18, 17) replaced my three worst (indices 0, 1, 2)
     for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(mine.individuals[std::size_t(k)].words, sender.individuals[std::size_t(19 - k)].words) << "slot " << k;
@@ -76,6 +82,28 @@ TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankAfterOneInterval) {
         EXPECT_EQ(mine.fitness[std::size_t(k)], sender.fitness[std::size_t(19 - k)]);
     }
     for (std::size_t i = 3; i < 20; ++i) EXPECT_EQ(mine.individuals[i].words, original.individuals[i].words);
+    migration.finish();  // the migrants of generation 10 are still in flight: taken and dropped
+}
+
+TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
+    const GenomeLimits limits{60};
+    MigrationSettings m;
+    m.interval = 5;
+    m.count = 2;
+    RingMigration migration(mpi, m, spaceship(), limits);
+    Population mine = populationOf(mpi.rank(), 10);
+    MPI_Barrier(MPI_COMM_WORLD);
+    const double waitedBefore = mpi.waitedSeconds();
+    // Rank 0 is slow between its migrations; rank 1 reaches each one 100 ms earlier and must not
+    // wait there, since what it takes up was sent a whole interval before.
+    migration.afterGeneration(mine, 5);
+    if (mpi.rank() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    migration.afterGeneration(mine, 10);
+    EXPECT_EQ(migration.received(), 2u);
+    if (mpi.rank() == 1) {
+        EXPECT_LT(mpi.waitedSeconds() - waitedBefore, 0.05);
+    }
+    migration.finish();
 }
 
 TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
