@@ -46,6 +46,7 @@ TEST(Islands, SeededTwoRankRunRepeatsByteForByte) {
 }
 
 TEST(Islands, ResumedRunEqualsTheUninterruptedOne) {
+    test::LeakCheckedRanks leaks;  // this MPI path runs under LeakSanitizer too
     TempDir dir;
     auto whole = runShapevoMpi(2, "run " + spaceshipConfig() + " --seed 9 --set ga.generations=40 --out " + dir.file("whole") + kSmallIslands);
     ASSERT_EQ(whole.exitCode, 0) << whole.output;
@@ -104,6 +105,7 @@ TEST(Islands, SummaryAndProgressLineGiveTheWaiting) {
 }
 
 TEST(Islands, AsyncRunShowsTheAgeOfItsFiguresCheckpointsAndResumes) {
+    test::LeakCheckedRanks leaks;  // this MPI path runs under LeakSanitizer too
     TempDir dir;
     const auto r = runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=40 --set migration.mode=async"
                                      " --set run.threads=1 --set checkpoint.interval=10 --out " + dir.file("r") +
@@ -128,6 +130,7 @@ TEST(Islands, ResumingWithAnotherRankCountNamesBothCounts) {
 }
 
 TEST(Islands, DamagedNewestCheckpointIsNamedAndThePreviousOneIsUsed) {
+    test::LeakCheckedRanks leaks;  // this MPI path runs under LeakSanitizer too
     TempDir dir;
     ASSERT_EQ(runShapevoMpi(2, "run " + spaceshipConfig() + " --set ga.generations=20 --out " + dir.file("r") + kSmallIslands).exitCode, 0);
     // truncate one island file of the newest checkpoint (20); 10 must be used instead

@@ -56,6 +56,7 @@ void xorBytes(const std::string& path, std::size_t from, std::size_t to, char ma
 }
 
 TEST(RunFolder, ForgedIslandOnOneRankNeverHangsAndEveryRankFallsBack) {
+    test::LeakCheckedRanks leaks;  // this MPI path runs under LeakSanitizer too
     for (bool rebuildManifest : {false, true}) {
         TempDir dir;
         const std::string run = dir.file("run");
