@@ -1,8 +1,9 @@
 // The Box kind: `box` in a grammar (no arguments). Solid |u.x| <= 1, |u.y| <= 1, |u.z| <= 1 in
 // the frame's unit coordinates: BoxFrame (shape/box_frame.hpp) is its exact voxel-centre test.
 // Voxel rows: per row the intersection of three slabs' exact index intervals (the slabs that do
-// not vary with y once per z slice; neighbouring rows alike go in as one run); a box whose axes
-// are grid axes is one box of index ranges (no per-row work). Silhouette: its 8 corners, of which
+// not vary with y once per z slice; neighbouring rows alike go in as one run; a box turned about
+// x or y only is one y range per z slice); a box whose axes are grid axes is one box of index
+// ranges (no per-row work). Silhouette: its 8 corners, of which
 // the fast path keeps the silhouette vertices. Surface: 8 vertices, 12 triangles.
 #pragma once
 #include <algorithm>
@@ -84,6 +85,13 @@ struct BoxKind {
         const SlabLine slab[3] = {SlabLine::of(b, 0, 0, grid), SlabLine::of(b, 1, 0, grid), SlabLine::of(b, 2, 0, grid)};
         int perZ[3], perRow[3], nPerZ = 0, nPerRow = 0;
         for (int k = 0; k < 3; ++k) (b.a[k][1] == 0.0 ? perZ[nPerZ++] : perRow[nPerRow++]) = k;
+        // If the other slabs have no x component either (a box turned about x or y only), a row
+        // passes or fails them whole, and the passing rows of a z are one range of y: the same
+        // test, |a.y * (y - c.y) + a.z * (z - c.z)| <= h, read along the y axis.
+        bool wholeRows = true;
+        for (int i = 0; i < nPerRow; ++i) wholeRows = wholeRows && b.a[perRow[i]][0] == 0.0;
+        SlabLine alongY[3];
+        for (int i = 0; i < nPerRow; ++i) alongY[i] = SlabLine::of(b, perRow[i], 1, grid);
         const double anyY = grid.centre(1, first[1]);
         const std::uint64_t rowsPerZ = std::uint64_t(last[1] - first[1] + 1);
         for (long z = first[2]; z <= last[2]; ++z) {
@@ -96,6 +104,17 @@ struct BoxKind {
             }
             if (!any) {
                 counts.rows += rowsPerZ;
+                continue;
+            }
+            if (wholeRows) {
+                counts.rows += rowsPerZ;
+                long ylo = first[1], yhi = last[1];
+                bool rowsPass = true;
+                for (int i = 0; i < nPerRow && rowsPass; ++i) {
+                    const int k = perRow[i];
+                    rowsPass = slabInterval(alongY[i], b.a[k][2] * (cz - b.c[2]), grid, ylo, yhi, ylo, yhi);
+                }
+                if (rowsPass) rows.addRows(ylo, yhi, z, zlo, zhi, counts);
                 continue;
             }
             // Neighbouring rows with the same interval go in as one run (all of a z's rows, for a
