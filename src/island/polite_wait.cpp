@@ -36,16 +36,6 @@ void politeWait(const MpiSession& mpi, MPI_Request& request) {
     });
 }
 
-void politeWaitBoth(const MpiSession& mpi, MPI_Request& a, MPI_Request& b) {
-    waitUntil(mpi, [&] {
-        MPI_Request both[2] = {a, b};
-        int flag = 0;
-        MPI_Testall(2, both, &flag, MPI_STATUSES_IGNORE);
-        a = both[0], b = both[1];
-        return flag != 0;
-    });
-}
-
 void politeProbe(const MpiSession& mpi, int source, int tag, MPI_Status& status) {
     waitUntil(mpi, [&] {
         int arrived = 0;

@@ -14,8 +14,6 @@
 namespace shapevo {
 
 void politeWait(const MpiSession& mpi, MPI_Request& request);
-/// Both requests (a send and a receive of one exchange).
-void politeWaitBoth(const MpiSession& mpi, MPI_Request& a, MPI_Request& b);
 /// Until a message from `source` with `tag` has arrived (MPI_Iprobe); its status in `status`.
 void politeProbe(const MpiSession& mpi, int source, int tag, MPI_Status& status);
 
