@@ -76,7 +76,7 @@ for s in "${signals[@]}"; do
             --set ga.generations=100000 --set checkpoint.interval=0 --set checkpoint.seconds=0 > "$log" 2>&1 &
         launcher=$!
         for _ in $(seq 1 200); do [ -d "$run" ] && [ -n "$(pgrep -f "shapevo run .*$run" || true)" ] && break; sleep 0.05; done
-        sleep "0.$((RANDOM % 9 + 1))"
+        sleep "0.$((RANDOM % 4 + 1))$((RANDOM % 10))"  # 0.10-0.49 s into the run
         ranks=($(pgrep -f "^$BIN run .*$run" || true))
         [ "${#ranks[@]}" -eq 2 ] || { echo "signal $s $i: expected 2 ranks, found ${#ranks[@]}"; cat "$log"; exit 1; }
         target=${ranks[RANDOM % 2]}
