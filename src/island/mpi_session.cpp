@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
-#include <thread>
 
 #include <mpi.h>
 
@@ -91,14 +90,8 @@ std::vector<std::uint32_t> MpiSession::transfer(const std::vector<std::uint32_t>
         MPI_Isend(words.data(), int(words.size()), MPI_UINT32_T, to, kTag, MPI_COMM_WORLD, &r);
         politeWait(*this, r);
     } else if (rank_ == to) {
-        WaitTimer wait(*this);
         MPI_Status status;
-        int arrived = 0;
-        for (auto pause = std::chrono::microseconds(20);; pause = std::min(pause * 2, std::chrono::microseconds(1000))) {
-            MPI_Iprobe(from, kTag, MPI_COMM_WORLD, &arrived, &status);
-            if (arrived) break;
-            std::this_thread::sleep_for(pause);
-        }
+        politeProbe(*this, from, kTag, status);
         int count = 0;
         MPI_Get_count(&status, MPI_UINT32_T, &count);
         std::vector<std::uint32_t> out(static_cast<std::size_t>(count));

@@ -7,9 +7,7 @@
 
 namespace shapevo {
 
-namespace {
-template <class Done>
-void waitUntil(const MpiSession& mpi, Done done) {
+void politeWaitUntil(const MpiSession& mpi, const std::function<bool()>& done) {
     WaitTimer wait(mpi);
     // First test in a loop for up to 100 microseconds, yielding the core between tests: a
     // non-blocking collective only progresses inside MPI calls, so sleeping at once would add a
@@ -26,10 +24,9 @@ void waitUntil(const MpiSession& mpi, Done done) {
         pause = std::min(pause * 2, std::chrono::microseconds(250));
     }
 }
-}  // namespace
 
 void politeWait(const MpiSession& mpi, MPI_Request& request) {
-    waitUntil(mpi, [&] {
+    politeWaitUntil(mpi, [&] {
         int flag = 0;
         MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
         return flag != 0;
@@ -37,7 +34,7 @@ void politeWait(const MpiSession& mpi, MPI_Request& request) {
 }
 
 void politeProbe(const MpiSession& mpi, int source, int tag, MPI_Status& status) {
-    waitUntil(mpi, [&] {
+    politeWaitUntil(mpi, [&] {
         int arrived = 0;
         MPI_Iprobe(source, tag, MPI_COMM_WORLD, &arrived, &status);
         return arrived != 0;

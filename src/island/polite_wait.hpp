@@ -9,11 +9,16 @@
 #pragma once
 #include <mpi.h>
 
+#include <functional>
+
 #include "island/mpi_session.hpp"
 
 namespace shapevo {
 
 void politeWait(const MpiSession& mpi, MPI_Request& request);
+/// Until done() is true, testing it as politeWait tests a request (done() must make MPI progress
+/// if it waits on MPI, e.g. by testing requests).
+void politeWaitUntil(const MpiSession& mpi, const std::function<bool()>& done);
 /// Until a message from `source` with `tag` has arrived (MPI_Iprobe); its status in `status`.
 void politeProbe(const MpiSession& mpi, int source, int tag, MPI_Status& status);
 

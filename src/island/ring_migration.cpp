@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numeric>
-#include <thread>
 
 #include <mpi.h>
 
@@ -164,8 +162,7 @@ void RingMigration::finish() {
     if (!mpi_.active() || mpi_.size() < 2) return;
     if (!settings_.async) {  // one message at most is in flight to each rank: take it, wait for ours
         receiveInFlight();
-        WaitTimer wait(mpi_);
-        while (!sends_.allComplete()) std::this_thread::sleep_for(std::chrono::microseconds(50));
+        politeWaitUntil(mpi_, [&] { return sends_.allComplete(); });
         return;
     }
     const int left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
