@@ -91,7 +91,8 @@ struct BoxKind {
         bool wholeRows = true;
         for (int i = 0; i < nPerRow; ++i) wholeRows = wholeRows && b.a[perRow[i]][0] == 0.0;
         SlabLine alongY[3];
-        for (int i = 0; i < nPerRow; ++i) alongY[i] = SlabLine::of(b, perRow[i], 1, grid);
+        if (wholeRows)
+            for (int i = 0; i < nPerRow; ++i) alongY[i] = SlabLine::of(b, perRow[i], 1, grid);
         const double anyY = grid.centre(1, first[1]);
         const std::uint64_t rowsPerZ = std::uint64_t(last[1] - first[1] + 1);
         for (long z = first[2]; z <= last[2]; ++z) {
