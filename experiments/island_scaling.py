@@ -18,8 +18,14 @@ run-time system alone: migration off (so each island of a 2-rank run evolves exa
 generation it reached in the 2-rank run, over the 2-rank run's wall time; the speed-up is the sum
 over islands (ideal 2.0). The run's seed is chosen so that island 1's seed is 1.
 
+A seeded sync run repeats byte for byte, so without `--vary-seed` every repetition of a sync
+configuration measures the same trajectory (one sample of evolution), while async runs differ
+from repetition to repetition. `--vary-seed` gives repetition k the seed k in every configuration,
+so that sync and async ratios both sample evolution alike.
+
 usage: experiments/island_scaling.py [--bin build/shapevo] [--seconds 6] [--reps 5]
                                      [--scenes spaceship tree-logo ...] [--csv FILE] [--same-work]
+                                     [--vary-seed]
 """
 import argparse
 import csv
@@ -118,6 +124,7 @@ def main():
     ap.add_argument("--scenes", nargs="+", default=["spaceship", "tree-logo", "tree-sketch", "castle-volume"])
     ap.add_argument("--csv", help="write every run's figures here")
     ap.add_argument("--same-work", action="store_true", help="also the same-work speed-up (migration off)")
+    ap.add_argument("--vary-seed", action="store_true", help="repetition k runs every configuration with seed k")
     a = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -125,7 +132,8 @@ def main():
             for scene in a.scenes:
                 for ranks, mode in RUNS:
                     out = os.path.join(tmp, "%s-%d-%s-%d" % (scene, ranks, mode, rep))
-                    r = run_once(a.bin, scene, ranks, mode, a.seconds, out)
+                    r = run_once(a.bin, scene, ranks, mode, a.seconds, out,
+                                 ("--seed", str(rep)) if a.vary_seed else ())
                     r.update(scene=scene, ranks=ranks, mode=mode, rep=rep)
                     rows.append(r)
                     print("rep %d %-14s %d rank(s) %-5s %9.0f evals/s  wait mean %5.2f %%  max %5.2f %%" %

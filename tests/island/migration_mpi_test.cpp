@@ -44,6 +44,14 @@ protected:
         if (mpi.size() < 2) GTEST_SKIP() << "needs mpirun -np 2 or more";
     }
     static MpiSession& mpiRef();
+    /// Spaceship migration around the ring: every `interval` generations the `count` best leave.
+    static MigrationSettings every(std::uint32_t interval, std::uint32_t count, bool async = false) {
+        MigrationSettings m;
+        m.interval = interval;
+        m.count = count;
+        m.async = async;
+        return m;
+    }
     const MpiSession& mpi = mpiRef();
 };
 
@@ -56,11 +64,7 @@ MpiSession& TwoRanks::mpiRef() { return *gMpi; }
 namespace {
 
 TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
-    const GenomeLimits limits{60};
-    MigrationSettings m;
-    m.interval = 5;
-    m.count = 3;
-    RingMigration migration(mpi, m, spaceship(), limits);
+    RingMigration migration(mpi, every(5, 3), spaceship(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 20);
     const Population original = mine;
     migration.afterGeneration(mine, 4);  // not a migration generation: nothing moves
@@ -86,11 +90,7 @@ TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
 }
 
 TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
-    const GenomeLimits limits{60};
-    MigrationSettings m;
-    m.interval = 5;
-    m.count = 2;
-    RingMigration migration(mpi, m, spaceship(), limits);
+    RingMigration migration(mpi, every(5, 2), spaceship(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 10);
     MPI_Barrier(MPI_COMM_WORLD);
     const double waitedBefore = mpi.waitedSeconds();
@@ -107,12 +107,7 @@ TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
 }
 
 TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
-    const GenomeLimits limits{60};
-    MigrationSettings m;
-    m.interval = 1;
-    m.count = 2;
-    m.async = true;
-    RingMigration migration(mpi, m, spaceship(), limits);
+    RingMigration migration(mpi, every(1, 2, /*async=*/true), spaceship(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 10);
     for (std::uint32_t g = 1; g <= 50; ++g) migration.afterGeneration(mine, g);
     migration.finish();
