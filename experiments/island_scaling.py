@@ -21,7 +21,7 @@ over islands (ideal 2.0). The run's seed is chosen so that island 1's seed is 1.
 A seeded sync run repeats byte for byte, so without `--vary-seed` every repetition of a sync
 configuration measures the same trajectory (one sample of evolution), while async runs differ
 from repetition to repetition. `--vary-seed` gives repetition k the seed k in every configuration,
-so that sync and async ratios both sample evolution alike.
+so that sync and async ratios both sample evolution alike (the `--same-work` runs keep their seeds).
 
 usage: experiments/island_scaling.py [--bin build/shapevo] [--seconds 6] [--reps 5]
                                      [--scenes spaceship tree-logo ...] [--csv FILE] [--same-work]
@@ -124,7 +124,8 @@ def main():
     ap.add_argument("--scenes", nargs="+", default=["spaceship", "tree-logo", "tree-sketch", "castle-volume"])
     ap.add_argument("--csv", help="write every run's figures here")
     ap.add_argument("--same-work", action="store_true", help="also the same-work speed-up (migration off)")
-    ap.add_argument("--vary-seed", action="store_true", help="repetition k runs every configuration with seed k")
+    ap.add_argument("--vary-seed", action="store_true", help="repetition k runs every configuration with seed k "
+                    "(not the --same-work runs, whose seeds are fixed)")
     a = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as tmp:

@@ -44,7 +44,7 @@ protected:
         if (mpi.size() < 2) GTEST_SKIP() << "needs mpirun -np 2 or more";
     }
     static MpiSession& mpiRef();
-    /// Spaceship migration around the ring: every `interval` generations the `count` best leave.
+    /// Ring migration settings: every `interval` generations an island's `count` best leave.
     static MigrationSettings every(std::uint32_t interval, std::uint32_t count, bool async = false) {
         MigrationSettings m;
         m.interval = interval;
