@@ -161,44 +161,78 @@ void HybridSearch::step(Evaluator& evaluator) {
     }
     std::swap(pop_, next_);
     ++generation_;
-    if (islands_ > 1 && settings_.migrationInterval > 0 && generation_ % settings_.migrationInterval == 0) migrate();
-    if (islands_ > 1 && settings_.restartInterval > 0 && generation_ % settings_.restartInterval == 0)
+    if (mainIslands() > 1 && settings_.migrationInterval > 0 && generation_ % settings_.migrationInterval == 0)
+        migrate();
+    if (mainIslands() > 1 && settings_.restartInterval > 0 && generation_ % settings_.restartInterval == 0)
         restartWorstIsland(evaluator);
+    if (hasScout() && generation_ % settings_.scoutInterval == 0) scoutTurn(evaluator);
+}
+
+std::size_t HybridSearch::bestSlot(std::size_t k) const {
+    std::size_t hi = islandBegin(k);
+    for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i)
+        if (pop_.fitness[i] > pop_.fitness[hi]) hi = i;
+    return hi;
+}
+
+/// The island of the lowest best among islands [0, n) (the last among equals).
+static std::size_t worstIsland(const Population& pop, std::size_t n, auto&& bestOf) {
+    std::size_t worst = 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if (pop.fitness[bestOf(k)] <= pop.fitness[bestOf(worst)]) worst = k;
+    return worst;
 }
 
 void HybridSearch::restartWorstIsland(Evaluator& evaluator) {
-    // The island whose best is lowest (the last among equals) starts again from random growth.
-    std::size_t worst = 0;
-    double worstBest = 0;
-    for (std::size_t k = 0; k < islands_; ++k) {
-        const double best = *std::max_element(pop_.fitness.begin() + std::ptrdiff_t(islandBegin(k)),
-                                              pop_.fitness.begin() + std::ptrdiff_t(islandBegin(k + 1)));
-        if (k == 0 || best <= worstBest) worst = k, worstBest = best;
-    }
+    restartIsland(worstIsland(pop_, mainIslands(), [&](std::size_t k) { return bestSlot(k); }), evaluator);
+}
+
+void HybridSearch::restartIsland(std::size_t k, Evaluator& evaluator) {
     batch_.clear();
-    for (std::size_t i = islandBegin(worst); i < islandBegin(worst + 1); ++i) {
+    for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i) {
         growRandomLength(grammar_, pop_.individuals[i], rng_, limits_, ga_.initialGenesMin, ga_.initialGenesMax);
         batch_.add(pop_.individuals[i]);
     }
     evaluations_ += batch_.evaluate(evaluator);
-    for (std::size_t i = islandBegin(worst), j = 0; i < islandBegin(worst + 1); ++i, ++j) pop_.fitness[i] = batch_.fitness(j);
+    for (std::size_t i = islandBegin(k), j = 0; i < islandBegin(k + 1); ++i, ++j) pop_.fitness[i] = batch_.fitness(j);
+}
+
+void HybridSearch::scoutTurn(Evaluator& evaluator) {
+    const std::size_t scout = islands_ - 1;
+    const std::size_t worst = worstIsland(pop_, mainIslands(), [&](std::size_t k) { return bestSlot(k); });
+    if (pop_.fitness[bestSlot(scout)] > pop_.fitness[bestSlot(worst)]) {
+        // The scout's members, best first (the lower slot among equals), fill the worst island;
+        // it may be one larger than the scout: the scout's best fills the rest.
+        const std::size_t b = islandBegin(scout), m = islandBegin(scout + 1) - b;
+        std::size_t* order = order_.data() + b;
+        for (std::size_t i = 0; i < m; ++i) order[i] = b + i;
+        std::sort(order, order + m, [&](std::size_t x, std::size_t y) {
+            return pop_.fitness[x] > pop_.fitness[y] || (pop_.fitness[x] == pop_.fitness[y] && x < y);
+        });
+        for (std::size_t i = islandBegin(worst), j = 0; i < islandBegin(worst + 1); ++i, ++j) {
+            const std::size_t from = order[j < m ? j : 0];
+            pop_.individuals[i] = pop_.individuals[from];
+            pop_.fitness[i] = pop_.fitness[from];
+        }
+    }
+    restartIsland(scout, evaluator);
 }
 
 void HybridSearch::migrate() {
     // Every island's best and worst first, then the copies: island k's best replaces island
-    // k + 1's worst (best: the lowest slot among equals; worst: the highest).
-    std::vector<std::size_t>& best = migrationSlots_;  // [0, islands) best, [islands, 2 islands) worst
-    for (std::size_t k = 0; k < islands_; ++k) {
-        std::size_t hi = islandBegin(k), lo = hi;
-        for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i) {
-            if (pop_.fitness[i] > pop_.fitness[hi]) hi = i;
+    // k + 1's worst around the ring of the main islands (a scout takes no part; best: the lowest
+    // slot among equals; worst: the highest).
+    const std::size_t n = mainIslands();
+    std::vector<std::size_t>& best = migrationSlots_;  // [0, n) best, [islands, islands + n) worst
+    for (std::size_t k = 0; k < n; ++k) {
+        std::size_t lo = islandBegin(k);
+        for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i)
             if (pop_.fitness[i] <= pop_.fitness[lo]) lo = i;
-        }
-        best[k] = hi;
+        best[k] = bestSlot(k);
         best[islands_ + k] = lo;
     }
-    for (std::size_t k = 0; k < islands_; ++k) {
-        const std::size_t from = best[k], to = best[islands_ + (k + 1) % islands_];
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t from = best[k], to = best[islands_ + (k + 1) % n];
         pop_.individuals[to] = pop_.individuals[from];
         pop_.fitness[to] = pop_.fitness[from];
     }

@@ -16,6 +16,13 @@
 //   not worse — greedy chains on the best models.
 // - Restarts: every `restart_interval` generations the island whose best is lowest starts again
 //   from random growth (a basin none of the islands has found may be where the target is).
+// - A scout (`scout_interval` > 0, 3 or more islands): the last island neither sends nor receives
+//   migrants and is never the restarted worst island, so that a basin it finds can mature
+//   before the others' best models reach it; every `scout_interval` generations, if its best is
+//   higher than the lowest best of the other islands, its members replace that island's (best
+//   first), and it starts again from random growth. (A restart of the worst island is met by a
+//   migrant within `migration_interval` generations: the island falls back into the basin that
+//   every island already holds.)
 //
 // Promises, as for every method (search_method.hpp): the state is the population, the Rng, the
 // generation and the evaluation count (island ranges are a function of the population size, the
@@ -66,6 +73,16 @@ private:
     void breedIsland(std::size_t k);
     void migrate();
     void restartWorstIsland(Evaluator& evaluator);
+    /// Regrow island k from random growth and evaluate it.
+    void restartIsland(std::size_t k, Evaluator& evaluator);
+    /// The scout's turn: adopt it into the worst other island if it is better, then restart it.
+    void scoutTurn(Evaluator& evaluator);
+    /// Whether the last island is a scout (scout_interval > 0 and at least 3 islands).
+    bool hasScout() const { return settings_.scoutInterval > 0 && islands_ >= 3; }
+    /// The islands that migrate and may be restarted as the worst: all but a scout.
+    std::size_t mainIslands() const { return hasScout() ? islands_ - 1 : islands_; }
+    /// The slot of island k's best (the lowest slot among equals).
+    std::size_t bestSlot(std::size_t k) const;
 
     const Grammar& grammar_;
     HybridSettings settings_;

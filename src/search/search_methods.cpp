@@ -36,6 +36,7 @@ void readHybrid(SectionReader& r, SearchSettings& s) {
     r.count("hybrid_islands", h.islands, 1, 1e6);
     r.count("hybrid_migration_interval", h.migrationInterval, 0, 1e9);
     r.count("hybrid_restart_interval", h.restartInterval, 0, 1e9);
+    r.count("hybrid_scout_interval", h.scoutInterval, 0, 1e9);
     r.number("hybrid_mutation", h.mutation, 0, 1);
     r.number("hybrid_regrow", h.regrow, 0, 1);
     r.number("hybrid_refine", h.refine, 0, 1);

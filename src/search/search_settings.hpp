@@ -48,6 +48,9 @@ struct HybridSettings {
     std::uint32_t islands = 4;            ///< sub-populations of one process (population split evenly)
     std::uint32_t migrationInterval = 10; ///< generations between migrations around the in-process ring
     std::uint32_t restartInterval = 100;  ///< generations between restarts of the worst island (0: never)
+    /// Generations a scout island (the last, with 3 or more islands) evolves alone before it is
+    /// adopted (if better than the worst other island) and starts again (0: no scout).
+    std::uint32_t scoutInterval = 400;
     double mutation = 0.6;                ///< probability that a pair is mutated, not crossed
     double regrow = 0.25;                 ///< share of mutations that regrow a subtree (the rest: [ga]'s weights)
     double refine = 0.5;                  ///< local moves of elites per generation, per island member

@@ -57,6 +57,7 @@ TEST(HybridSearch, TheBestNeverDropsAndEveryIndividualStaysValid) {
     HybridSettings s;
     s.restartInterval = 3;  // restarts often: they replace the worst island only
     s.migrationInterval = 2;
+    s.scoutInterval = 4;  // and a scout (island 3) is adopted or starts again often
     const GenomeLimits limits{60};
     Evaluator evaluator(fx.scorer, 1);
     HybridSearch h(fx.grammar, s, smallGa(40), limits, 7);
@@ -81,6 +82,7 @@ TEST(HybridSearch, MigrationCopiesEachIslandsBestIntoTheNextIsland) {
     s.islands = 3;
     s.migrationInterval = 4;
     s.restartInterval = 0;
+    s.scoutInterval = 0;  // three islands in the ring
     s.refine = 0;  // so that the last step's breeding is all that changes the islands before migrating
     Evaluator evaluator(fx.scorer, 1);
     HybridSearch h(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
@@ -135,6 +137,79 @@ TEST(HybridSearch, ARestartRegrowsTheWorstIslandOnly) {
     EXPECT_LE(same, 1u) << "the worst island starts again from random growth";
 }
 
+TEST(HybridSearch, AScoutIslandNeitherSendsNorReceivesMigrants) {
+    Fixture fx;
+    HybridSettings s;
+    s.islands = 3;
+    s.migrationInterval = 4;
+    s.restartInterval = 0;
+    s.scoutInterval = 1000;  // a scout (island 2) whose turn does not come in this test
+    s.refine = 0;
+    Evaluator evaluator(fx.scorer, 1);
+    HybridSearch h(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
+    h.initialize(evaluator);
+    while (h.generation() < 3) h.step(evaluator);
+    s.migrationInterval = 0;  // the same generation 4 without the migration
+    HybridSearch twin(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
+    twin.restore(h.population(), h.rng().state(), 3, h.evaluations());
+    h.step(evaluator);
+    twin.step(evaluator);
+    ASSERT_EQ(h.generation(), 4u);
+    // Islands 0 and 1 swap their best; the scout, island 2, is what breeding made of it.
+    for (std::size_t i = h.islandBegin(2); i < 30; ++i)
+        EXPECT_EQ(h.population().individuals[i], twin.population().individuals[i]) << i;
+    EXPECT_EQ(islandBest(h, 1), std::max(islandBest(twin, 1), islandBest(twin, 0)));
+    EXPECT_EQ(islandBest(h, 0), std::max(islandBest(twin, 0), islandBest(twin, 1)));
+}
+
+TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
+    Fixture fx;
+    HybridSettings s;
+    s.islands = 3;
+    s.migrationInterval = 0;
+    s.restartInterval = 0;
+    s.scoutInterval = 5;
+    Evaluator evaluator(fx.scorer, 1);
+    for (const bool better : {true, false}) {
+        HybridSearch h(fx.grammar, s, smallGa(32), GenomeLimits{60}, 5);
+        h.initialize(evaluator);
+        while (h.generation() < 4) h.step(evaluator);
+        // The scout's members made (or not) better than every other model, as if it had found
+        // a better basin: elites keep their fitness, so the scout's best stays best.
+        Population p = h.population();
+        for (std::size_t i = h.islandBegin(2); i < 32; ++i) p.fitness[i] += better ? 1000.0 : -1000.0;
+        h.restore(p, h.rng().state(), 4, h.evaluations());
+        HybridSettings plain = s;
+        plain.scoutInterval = 0;  // three equal islands; nothing happens at generation 5
+        HybridSearch twin(fx.grammar, plain, smallGa(32), GenomeLimits{60}, 5);
+        twin.restore(p, h.rng().state(), 4, h.evaluations());
+        h.step(evaluator);
+        twin.step(evaluator);
+        const std::size_t worst = islandBest(twin, 0) <= islandBest(twin, 1) ? 0 : 1, other = 1 - worst;
+        const std::size_t scoutSize = 32 - h.islandBegin(2);
+        EXPECT_EQ(h.evaluations(), twin.evaluations() + scoutSize) << "the scout starts again";
+        for (std::size_t i = h.islandBegin(other); i < h.islandBegin(other + 1); ++i)
+            EXPECT_EQ(h.population().individuals[i], twin.population().individuals[i]) << i;
+        std::size_t same = 0;
+        for (std::size_t i = h.islandBegin(2); i < 32; ++i) same += h.population().individuals[i] == twin.population().individuals[i];
+        EXPECT_LE(same, 1u) << "the scout regrows from random growth";
+        const bool adopted = islandBest(twin, 2) > islandBest(twin, worst);
+        if (better) EXPECT_TRUE(adopted);
+        if (adopted) {
+            // The worst island now holds the scout's members, best first; its best is the scout's.
+            EXPECT_EQ(islandBest(h, worst), islandBest(twin, 2));
+            std::vector<double> scout(twin.population().fitness.begin() + std::ptrdiff_t(h.islandBegin(2)),
+                                      twin.population().fitness.end());
+            std::sort(scout.rbegin(), scout.rend());
+            for (std::size_t i = h.islandBegin(worst), j = 0; i < h.islandBegin(worst + 1); ++i, ++j)
+                EXPECT_EQ(h.population().fitness[i], scout[j < scout.size() ? j : 0]) << i;
+        } else {
+            for (std::size_t i = h.islandBegin(worst); i < h.islandBegin(worst + 1); ++i)
+                EXPECT_EQ(h.population().individuals[i], twin.population().individuals[i]) << i;
+        }
+    }
+}
+
 /// The population after `generations` steps of a hybrid run on the spaceship.
 Population hybridRun(const HybridSettings& s, std::uint32_t population, int generations) {
     Fixture fx;
@@ -166,6 +241,7 @@ TEST(HybridSearch, OneAndTwoThreadsGiveTheSameRun) {
     HybridSettings s;
     s.restartInterval = 4;
     s.migrationInterval = 3;
+    s.scoutInterval = 5;
     Evaluator one(fx.scorer, 1), two(fx.scorer, 2);
     HybridSearch a(fx.grammar, s, smallGa(40), GenomeLimits{60}, 3), b(fx.grammar, s, smallGa(40), GenomeLimits{60}, 3);
     a.initialize(one);

@@ -112,6 +112,7 @@ TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun
         s.rjmcmc.annealingInterval = 2;
         s.hybrid.migrationInterval = 3;  // the hybrid migrates and restarts on both sides of the split
         s.hybrid.restartInterval = 4;
+        s.hybrid.scoutInterval = 3;  // and its scout is adopted or starts again on both sides
         expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
     }
 }
