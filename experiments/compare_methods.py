@@ -23,6 +23,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -147,6 +148,23 @@ def mean_std(values):
     return statistics.fmean(values), (statistics.stdev(values) if len(values) > 1 else 0.0)
 
 
+def accepted_population(binary, config, method, population, max_genes):
+    """The largest population (<= `population`) that shapevo's own memory check accepts for
+    `method` on this machine (src/run/memory_check.cpp): a measured calibration can ask for more
+    particles than its worst-case estimate allows, and such a run would be refused (exit 2).
+    Learned from the message of a run that is refused before it creates anything."""
+    probe = [binary, "run", config, "--out", os.path.join("/nonexistent", "compare-methods-probe"), "-q",
+             "--set", f"search.method={method}", "--set", "ga.population=10000000"]
+    r = subprocess.run(probe, capture_output=True, text=True)
+    m = re.search(r"x (\d+) copies x \((\d+) \+ max_genes (\d+) x 4 x (\d+) words.*more than the ([\d.]+) GiB", r.stderr)
+    if r.returncode != 2 or not m:
+        return population
+    copies, fixed, genes, words, gib = int(m[1]), int(m[2]), int(m[3]), int(m[4]), float(m[5])
+    assert genes == max_genes, (genes, max_genes)
+    fits = int(0.95 * (gib - 0.05) * 2**30 / (copies * (fixed + genes * 4 * words)))
+    return min(population, fits)
+
+
 def fmt(ms):
     return "–" if ms is None else f"{ms[0]:.4f} ± {ms[1]:.4f}"
 
@@ -187,11 +205,15 @@ def compare_methods(args, runner, scene, config, out, report):
         by_time = p_cal * FILL_SHARE * args.budget / max(t_cal, 1e-4)
         by_memory = (FILL_MEMORY_KB - rss_paper) / per_particle if per_particle > 0 else by_time
         pops[m + "-fill"] = max(pops[m], int(min(by_time, by_memory)) // 1000 * 1000)
+        allowed = accepted_population(args.bin, config, m, pops[m + "-fill"], max_genes) // 1000 * 1000
+        capped = allowed < pops[m + "-fill"]
+        pops[m + "-fill"] = max(pops[m], allowed)
         methods.append(m + "-fill")
         report.append(f"- {m}: one pass with {pops[m]} particles takes {t:.3f} s (mean of {args.seeds} seeds); "
                       f"calibration with {p_cal} particles took {t_cal:.2f} s and "
                       + (f"{rss / 1024:.0f} MB" if rss else "(memory: see the invocation that ran it)") + f", so {m}-fill uses "
-                      f"{pops[m + '-fill']} particles" + (" (memory cap)" if by_memory < by_time else ""))
+                      f"{pops[m + '-fill']} particles" + (" (memory cap)" if by_memory < by_time else "")
+                      + (" (shapevo's memory check's cap)" if capped else ""))
     # 2. The budgeted runs, seed-major so that each method shares the machine with every other.
     runner.run_all([job(m, s, pops[m]) for s in seeds for m in methods if m not in ("smc", "sosmc")])
 

@@ -80,8 +80,9 @@ std::vector<std::size_t> bestIndices(const Population& pop, std::size_t count) {
     return order;
 }
 
-void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness) {
-    std::vector<std::size_t> order(pop.size());
+void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness,
+                  std::size_t slots) {
+    std::vector<std::size_t> order(std::min(slots, pop.size()));
     std::iota(order.begin(), order.end(), 0);
     // worst first; among equals the later index goes first, so the elite (early indices) stays
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -108,14 +109,14 @@ bool RingMigration::unpack(const std::vector<std::uint32_t>& words, Population& 
     return false;
 }
 
-void RingMigration::joinArrived(Population& pop) {
+void RingMigration::joinArrived(Population& pop, std::size_t slots) {
     received_ += arrived_.size();
-    replaceWorst(pop, arrived_.individuals, arrived_.fitness);
+    replaceWorst(pop, arrived_.individuals, arrived_.fitness, slots);
     arrived_.individuals.clear();
     arrived_.fitness.clear();
 }
 
-void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
+void RingMigration::afterGeneration(Population& pop, std::uint32_t generation, std::size_t slots) {
     if (!mpi_.active() || mpi_.size() < 2 || settings_.interval == 0 || settings_.count == 0) return;
     if (generation % settings_.interval != 0) return;
     const int right = (mpi_.rank() + 1) % mpi_.size(), left = (mpi_.rank() + mpi_.size() - 1) % mpi_.size();
@@ -124,7 +125,7 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
     // or now, waiting politely if the neighbour is a whole interval behind); also any that a
     // checkpoint held. This generation's leave without waiting for anyone.
     if (!settings_.async) receiveInFlight();
-    joinArrived(pop);
+    joinArrived(pop, slots);
     sends_.post(outgoing_.data(), outgoing_.size(), PostedSends::Type::Uint32, right, kMigrationTag);
     if (!settings_.async) {
         inFlight_ = true;
@@ -134,7 +135,7 @@ void RingMigration::afterGeneration(Population& pop, std::uint32_t generation) {
     MPI_Status status;
     while (arrivedFrom(left, status)) {
         take(left, status, incoming_);
-        if (unpack(incoming_, arrived_)) joinArrived(pop);
+        if (unpack(incoming_, arrived_)) joinArrived(pop, slots);
     }
 }
 

@@ -28,14 +28,16 @@ std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, cons
                               std::vector<Chromosome>& chromosomes, std::vector<double>& fitness);
 /// Indices of the `count` best individuals, best first (ties: lower index first).
 std::vector<std::size_t> bestIndices(const Population& pop, std::size_t count);
-/// Replace the worst individuals (ties: higher index first) by the arrivals.
-void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness);
+/// Replace the worst individuals among the first `slots` (ties: higher index first) by the arrivals.
+void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness,
+                  std::size_t slots);
 
 class RingMigration {
 public:
     RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g, const GenomeLimits& limits);
     /// Call after generation `generation` completes; migrates if it is a migration generation.
-    void afterGeneration(Population& pop, std::uint32_t generation);
+    /// Arrivals replace the worst of the first `slots` individuals (SearchMethod::migrantSlots).
+    void afterGeneration(Population& pop, std::uint32_t generation, std::size_t slots);
     /// Sync mode, collective: receive the migrants still in flight to this rank and return every
     /// one not yet joined (for a checkpoint). Empty in async mode.
     const Population& arrivals();
@@ -49,8 +51,8 @@ public:
 private:
     /// Validate a message into `into` (empty and counted as rejected if it is bad).
     bool unpack(const std::vector<std::uint32_t>& words, Population& into);
-    /// Replace the worst of `pop` by arrived_, and empty it.
-    void joinArrived(Population& pop);
+    /// Replace the worst of the first `slots` of `pop` by arrived_, and empty it.
+    void joinArrived(Population& pop, std::size_t slots);
     void receiveInFlight();  ///< sync: the message of the last migration generation, into arrived_
 
     const MpiSession& mpi_;

@@ -170,7 +170,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     IslandRow lastRow;
     auto ownGeneration = [&] {
         const auto migrationStart = Clock::now();
-        migration.afterGeneration(ga.population(), ga.generation());
+        migration.afterGeneration(ga.population(), ga.generation(), ga.migrantSlots());
         migrationSeconds += since(migrationStart);
         GenerationStats local = ga.stats();
         local.seconds = elapsed();

@@ -175,17 +175,14 @@ std::size_t HybridSearch::bestSlot(std::size_t k) const {
     return hi;
 }
 
-/// The island of the lowest best among islands [0, n) (the last among equals).
-static std::size_t worstIsland(const Population& pop, std::size_t n, auto&& bestOf) {
+std::size_t HybridSearch::worstMainIsland() const {
     std::size_t worst = 0;
-    for (std::size_t k = 1; k < n; ++k)
-        if (pop.fitness[bestOf(k)] <= pop.fitness[bestOf(worst)]) worst = k;
+    for (std::size_t k = 1; k < mainIslands(); ++k)
+        if (pop_.fitness[bestSlot(k)] <= pop_.fitness[bestSlot(worst)]) worst = k;
     return worst;
 }
 
-void HybridSearch::restartWorstIsland(Evaluator& evaluator) {
-    restartIsland(worstIsland(pop_, mainIslands(), [&](std::size_t k) { return bestSlot(k); }), evaluator);
-}
+void HybridSearch::restartWorstIsland(Evaluator& evaluator) { restartIsland(worstMainIsland(), evaluator); }
 
 void HybridSearch::restartIsland(std::size_t k, Evaluator& evaluator) {
     batch_.clear();
@@ -199,7 +196,7 @@ void HybridSearch::restartIsland(std::size_t k, Evaluator& evaluator) {
 
 void HybridSearch::scoutTurn(Evaluator& evaluator) {
     const std::size_t scout = islands_ - 1;
-    const std::size_t worst = worstIsland(pop_, mainIslands(), [&](std::size_t k) { return bestSlot(k); });
+    const std::size_t worst = worstMainIsland();
     if (pop_.fitness[bestSlot(scout)] > pop_.fitness[bestSlot(worst)]) {
         // The scout's members, best first (the lower slot among equals), fill the worst island;
         // it may be one larger than the scout: the scout's best fills the rest.

@@ -26,7 +26,7 @@
 //
 // Promises, as for every method (search_method.hpp): the state is the population, the Rng, the
 // generation and the evaluation count (island ranges are a function of the population size, the
-// migration schedule of the generation), so checkpoints resume exactly; all children and refine
+// migration, restart and scout schedules of the generation), so checkpoints resume exactly; all children and refine
 // proposals of a generation are evaluated in one batch, so the thread count changes nothing;
 // every random draw comes from rng() in a fixed order.
 #pragma once
@@ -60,6 +60,8 @@ public:
     std::size_t islandElites(std::size_t k) const;
     /// Local moves of island k's elites per generation: refine x its size, rounded.
     std::size_t refineMoves(std::size_t k) const;
+    /// Migrants from other ranks land in the main islands only: a scout evolves alone.
+    std::size_t migrantSlots() const override { return islandBegin(mainIslands()); }
 
 private:
     void restored() override;
@@ -83,6 +85,8 @@ private:
     std::size_t mainIslands() const { return hasScout() ? islands_ - 1 : islands_; }
     /// The slot of island k's best (the lowest slot among equals).
     std::size_t bestSlot(std::size_t k) const;
+    /// The main island whose best is lowest (the last among equals).
+    std::size_t worstMainIsland() const;
 
     const Grammar& grammar_;
     HybridSettings settings_;

@@ -46,6 +46,9 @@ public:
     /// Where this method's children land against their parents (null: it does not breed
     /// children from parents, e.g. SMC, RJMCMC).
     virtual const OperatorOutcomes* operatorOutcomes() const { return nullptr; }
+    /// How many leading slots of the population migrants from other ranks may replace (the
+    /// hybrid keeps its scout island, the last slots, to itself); all by default.
+    virtual std::size_t migrantSlots() const { return pop_.size(); }
 
 protected:
     /// After restore(): fit the method's own buffers to the restored population.

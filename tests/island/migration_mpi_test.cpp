@@ -67,8 +67,8 @@ TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
     RingMigration migration(mpi, every(5, 3), spaceship(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 20);
     const Population original = mine;
-    migration.afterGeneration(mine, 4);  // not a migration generation: nothing moves
-    migration.afterGeneration(mine, 5);  // my best leave; nothing has arrived to join yet
+    migration.afterGeneration(mine, 4, mine.size());  // not a migration generation: nothing moves
+    migration.afterGeneration(mine, 5, mine.size());  // my best leave; nothing has arrived to join yet
     EXPECT_EQ(migration.received(), 0u);
     for (std::size_t i = 0; i < 20; ++i) EXPECT_EQ(mine.individuals[i].words, original.individuals[i].words);
     // A checkpoint would hold the left neighbour's three best, received but not yet joined.
@@ -76,7 +76,7 @@ TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
     const Population sender = populationOf(left, 20);
     ASSERT_EQ(migration.arrivals().size(), 3u);
     EXPECT_EQ(migration.arrivals().individuals[0].words, sender.individuals[19].words);
-    migration.afterGeneration(mine, 10);  // they join now
+    migration.afterGeneration(mine, 10, mine.size());  // they join now
     EXPECT_EQ(migration.received(), 3u);
     EXPECT_EQ(migration.rejected(), 0u);
     // the sender's three best (indices 19, 18, 17) replaced my three worst (indices 0, 1, 2)
@@ -96,9 +96,9 @@ TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
     const double waitedBefore = mpi.waitedSeconds();
     // Rank 0 is slow between its migrations; rank 1 reaches each one 100 ms earlier and must not
     // wait there, since what it takes up was sent a whole interval before.
-    migration.afterGeneration(mine, 5);
+    migration.afterGeneration(mine, 5, mine.size());
     if (mpi.rank() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    migration.afterGeneration(mine, 10);
+    migration.afterGeneration(mine, 10, mine.size());
     EXPECT_EQ(migration.received(), 2u);
     if (mpi.rank() == 1) {
         EXPECT_LT(mpi.waitedSeconds() - waitedBefore, 0.05);
@@ -109,7 +109,7 @@ TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
 TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
     RingMigration migration(mpi, every(1, 2, /*async=*/true), spaceship(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 10);
-    for (std::uint32_t g = 1; g <= 50; ++g) migration.afterGeneration(mine, g);
+    for (std::uint32_t g = 1; g <= 50; ++g) migration.afterGeneration(mine, g, mine.size());
     migration.finish();
     EXPECT_EQ(migration.rejected(), 0u);
     // everything that arrived was a valid chromosome of the sender (checked on arrival)

@@ -14,6 +14,7 @@
 #include "../mesh/imperfect_meshes.hpp"
 #include "../mesh/winding_number.hpp"
 #include "../test_support.hpp"
+#include "grid_bits.hpp"
 #include "base/input_error.hpp"
 #include "mesh/mesh_repair.hpp"
 #include "score/vdb_target_file.hpp"
@@ -22,11 +23,6 @@ namespace shapevo {
 namespace {
 
 using namespace test;
-
-bool bit(const std::vector<std::uint64_t>& bits, const GridSpec& g, int i, int j, int k) {
-    const std::size_t row = (std::size_t(k) * std::size_t(g.ny) + std::size_t(j)) * std::size_t(g.wordsPerRow());
-    return (bits[row + std::size_t(i >> 6)] >> (i & 63)) & 1u;
-}
 
 struct Comparison {
     double iou = 0.0;
@@ -54,7 +50,7 @@ Comparison compareWithWindingNumber(const Mesh& mesh, double voxelSize) {
                 const glm::dvec3 p(g.centre(0, i), g.centre(1, j), g.centre(2, k));
                 const bool inBox = glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi));
                 const bool ref = inBox && windingNumber(mesh, p) > 0.5;
-                const bool got = bit(t.fill, g, i, j, k);
+                const bool got = test::gridBit(t.fill, g, i, j, k);
                 c.reference += ref;
                 c.target += got;
                 both += ref && got;

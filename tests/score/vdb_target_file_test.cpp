@@ -15,6 +15,7 @@
 #include "base/input_error.hpp"
 #include "score/vdb_target_file.hpp"
 #include "../test_support.hpp"
+#include "grid_bits.hpp"
 
 namespace shapevo {
 namespace {
@@ -23,11 +24,6 @@ using test::boxMesh;
 using test::cubeMesh;
 using test::TempDir;
 using test::writeFile;
-
-bool bit(const std::vector<std::uint64_t>& bits, const GridSpec& g, int i, int j, int k) {
-    const std::size_t row = (std::size_t(k) * std::size_t(g.ny) + std::size_t(j)) * std::size_t(g.wordsPerRow());
-    return (bits[row + std::size_t(i >> 6)] >> (i & 63)) & 1u;
-}
 
 /// Brute force: is the centre of dense voxel (i,j,k) strictly inside the box? Fails the test if
 /// a centre lies within 1e-6 of the box surface, where "inside" would be ambiguous.
@@ -50,7 +46,7 @@ std::uint64_t expectBitsMatchBox(const std::vector<std::uint64_t>& bits, const G
             for (int i = 0; i < g.nx; ++i) {
                 const bool want = centreInside(g, i, j, k, lo, hi);
                 expected += want;
-                mismatches += want != bit(bits, g, i, j, k);
+                mismatches += want != test::gridBit(bits, g, i, j, k);
             }
     EXPECT_EQ(mismatches, 0u);
     return expected;

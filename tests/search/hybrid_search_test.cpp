@@ -1,7 +1,8 @@
 // Hybrid search: islands partition the population, each island keeps its elites and breeds only
 // from its own members, refinement never makes a model worse (the best never drops, restarts
 // included), migration copies each island's best into the next island, a restart regrows the
-// worst island, and the run is the same with one or two evaluation threads and after a resume.
+// worst island, a scout island neither sends nor receives migrants and replaces the worst island
+// only when better, and the run is the same with one or two evaluation threads and after a resume.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,6 +161,18 @@ TEST(HybridSearch, AScoutIslandNeitherSendsNorReceivesMigrants) {
         EXPECT_EQ(h.population().individuals[i], twin.population().individuals[i]) << i;
     EXPECT_EQ(islandBest(h, 1), std::max(islandBest(twin, 1), islandBest(twin, 0)));
     EXPECT_EQ(islandBest(h, 0), std::max(islandBest(twin, 0), islandBest(twin, 1)));
+}
+
+TEST(HybridSearch, MigrantsFromOtherRanksMayLandInTheMainIslandsOnly) {
+    Fixture fx;
+    HybridSettings s;
+    s.islands = 3;
+    EXPECT_EQ(HybridSearch(fx.grammar, s, smallGa(30), GenomeLimits{60}, 1).migrantSlots(), 20u);
+    s.scoutInterval = 0;  // no scout: every slot
+    EXPECT_EQ(HybridSearch(fx.grammar, s, smallGa(30), GenomeLimits{60}, 1).migrantSlots(), 30u);
+    s.islands = 2;
+    s.scoutInterval = 400;  // two islands keep no scout
+    EXPECT_EQ(HybridSearch(fx.grammar, s, smallGa(30), GenomeLimits{60}, 1).migrantSlots(), 30u);
 }
 
 TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
