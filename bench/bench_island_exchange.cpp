@@ -70,7 +70,7 @@ void BM_SyncMigration(benchmark::State& state) {
     RingMigration migration(*gMpi, m, g, limits);
     MPI_Barrier(MPI_COMM_WORLD);
     std::uint32_t generation = 0;
-    for (auto _ : state) migration.afterGeneration(pop, ++generation);
+    for (auto _ : state) migration.afterGeneration(pop, ++generation, pop.size());
     state.counters["received"] = double(migration.received());
     migration.finish();  // the last migrants are still in flight (sync exchanges complete one migration late)
 }
