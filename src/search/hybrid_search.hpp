@@ -25,10 +25,10 @@
 //   every island already holds.)
 //
 // Promises, as for every method (search_method.hpp): the state is the population, the Rng, the
-// generation and the evaluation count (island ranges are a function of the population size, the
-// migration, restart and scout schedules of the generation), so checkpoints resume exactly; all children and refine
-// proposals of a generation are evaluated in one batch, so the thread count changes nothing;
-// every random draw comes from rng() in a fixed order.
+// generation and the evaluation count (island ranges are a function of the population size; the
+// migration, restart and scout schedules of the generation), so checkpoints resume exactly; all
+// children and refine proposals of a generation are evaluated in one batch, so the thread count
+// changes nothing; every random draw comes from rng() in a fixed order.
 #pragma once
 #include <cstdint>
 #include <vector>

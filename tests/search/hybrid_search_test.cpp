@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "../test_support.hpp"
 #include "spaceship_fixture.hpp"
@@ -77,23 +78,33 @@ TEST(HybridSearch, TheBestNeverDropsAndEveryIndividualStaysValid) {
         EXPECT_GT(o.children[op][0] + o.children[op][1] + o.children[op][2], 0u) << OperatorOutcomes::kOpNames[op];
 }
 
-TEST(HybridSearch, MigrationCopiesEachIslandsBestIntoTheNextIsland) {
+/// Two hybrids of `s` on the spaceship (30 individuals), equal up to generation 3; generation 4
+/// migrates in `migrated` (every 4 generations) and not in `plain`.
+struct MigrationTwins {
     Fixture fx;
+    Evaluator evaluator{fx.scorer, 1};
+    std::unique_ptr<HybridSearch> migrated, plain;
+    explicit MigrationTwins(HybridSettings s) {
+        s.migrationInterval = 4;
+        s.refine = 0;  // so that the last step's breeding is all that changes the islands before migrating
+        migrated = std::make_unique<HybridSearch>(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
+        migrated->initialize(evaluator);
+        while (migrated->generation() < 3) migrated->step(evaluator);
+        s.migrationInterval = 0;
+        plain = std::make_unique<HybridSearch>(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
+        plain->restore(migrated->population(), migrated->rng().state(), 3, migrated->evaluations());
+        migrated->step(evaluator);
+        plain->step(evaluator);
+    }
+};
+
+TEST(HybridSearch, MigrationCopiesEachIslandsBestIntoTheNextIsland) {
     HybridSettings s;
     s.islands = 3;
-    s.migrationInterval = 4;
     s.restartInterval = 0;
     s.scoutInterval = 0;  // three islands in the ring
-    s.refine = 0;  // so that the last step's breeding is all that changes the islands before migrating
-    Evaluator evaluator(fx.scorer, 1);
-    HybridSearch h(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
-    h.initialize(evaluator);
-    while (h.generation() < 3) h.step(evaluator);
-    s.migrationInterval = 0;  // the same generation 4 without the migration
-    HybridSearch twin(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
-    twin.restore(h.population(), h.rng().state(), 3, h.evaluations());
-    h.step(evaluator);
-    twin.step(evaluator);
+    const MigrationTwins t(s);
+    const HybridSearch &h = *t.migrated, &twin = *t.plain;
     ASSERT_EQ(h.generation(), 4u);
     // Generation 4 migrates: island k + 1's worst is now island k's best; nothing else changed.
     for (std::size_t k = 0; k < 3; ++k) {
@@ -139,22 +150,12 @@ TEST(HybridSearch, ARestartRegrowsTheWorstIslandOnly) {
 }
 
 TEST(HybridSearch, AScoutIslandNeitherSendsNorReceivesMigrants) {
-    Fixture fx;
     HybridSettings s;
     s.islands = 3;
-    s.migrationInterval = 4;
     s.restartInterval = 0;
     s.scoutInterval = 1000;  // a scout (island 2) whose turn does not come in this test
-    s.refine = 0;
-    Evaluator evaluator(fx.scorer, 1);
-    HybridSearch h(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
-    h.initialize(evaluator);
-    while (h.generation() < 3) h.step(evaluator);
-    s.migrationInterval = 0;  // the same generation 4 without the migration
-    HybridSearch twin(fx.grammar, s, smallGa(30), GenomeLimits{60}, 11);
-    twin.restore(h.population(), h.rng().state(), 3, h.evaluations());
-    h.step(evaluator);
-    twin.step(evaluator);
+    const MigrationTwins t(s);
+    const HybridSearch &h = *t.migrated, &twin = *t.plain;
     ASSERT_EQ(h.generation(), 4u);
     // Islands 0 and 1 swap their best; the scout, island 2, is what breeding made of it.
     for (std::size_t i = h.islandBegin(2); i < 30; ++i)
