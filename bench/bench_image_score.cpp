@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "base/keep_freed_memory.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
@@ -207,7 +208,7 @@ void BM_LargeTree(benchmark::State& state) {
 
 /// Children of a large tree (largeTree of `genes` genes), one operator each (0 alter: new
 /// parameters for one random gene; 1 grow: a new subtree; 2 cut: a subtree removed), scored in
-/// full or incrementally (score.cache_mb 128 MB unless SHAPEVO_BENCH_CACHE_MB says otherwise, on
+/// full or incrementally (from the scored parent's counts, Lineage, where the operator names its change) (score.cache_mb 128 MB unless SHAPEVO_BENCH_CACHE_MB says otherwise, on
 /// one workspace that has scored the parent and warm-up children first). Making the child (a copy
 /// of the parent and the operator) is not timed. Counters per timed child: primitives, the share
 /// of them copied from the subtree memo, the primitive cache's hits and misses and the memo's;
@@ -228,10 +229,14 @@ void BM_LargeTreeChild(benchmark::State& state) {
     Rng rng(11);
     GenomeScratch scratch;
     const GenomeLimits limits{60000};
+    // The parent as a run holds it after scoring it: with what its children start from (Lineage).
+    Chromosome scored = parent;
+    scorer.fitness(scored, ws, &counts);
+    scored.lineage = Lineage{std::move(ws.made)};
     Chromosome child;
     auto makeChild = [&] {
         do {
-            child = parent;
+            child = scored;
         } while (!(op == 0 ? alter(g, child, rng) : op == 1 ? grow(g, child, rng, limits) : cut(g, child, rng, scratch)));
     };
     // Warm, as in a run: the parent, then children until the caches have grown to their size
@@ -240,12 +245,13 @@ void BM_LargeTreeChild(benchmark::State& state) {
     for (std::size_t last = 0; warm < 2 * last + 8; ++warm) {
         const std::size_t before = ws.cacheBytesUsed();
         makeChild();
-        scorer.fitness(warm == 0 ? parent : child, ws, &counts);
+        scorer.fitness(warm == 0 ? scored : child, ws, &counts);
         if (ws.cacheBytesUsed() > before + (1 << 20)) last = warm;
     }
     const auto statsBefore = ws.cache ? ws.cache->stats() : PrimitiveCache<WordMask>::Stats{};
     const auto memoBefore = ws.derive.memo ? ws.derive.memo->stats() : SubtreeMemo::Stats{};
     std::uint64_t primitives = 0, copied = 0;
+    const std::uint64_t fromParentBefore = ws.fromParent;
     for (auto _ : state) {
         state.PauseTiming();
         makeChild();
@@ -267,6 +273,7 @@ void BM_LargeTreeChild(benchmark::State& state) {
         state.counters["memo_misses"] = double(m.misses - memoBefore.misses) / n;
         state.counters["memo_outgrown"] = m.outgrown;
     }
+    state.counters["from_parent"] = double(ws.fromParent - fromParentBefore) / n;  // scored from the parent's counts
     state.counters["primitives"] = double(primitives) / n;
     state.counters["copied"] = primitives ? double(copied) / double(primitives) : 0.0;
     state.counters["cache_MB"] = double(ws.cacheBytesUsed()) / (1 << 20);
@@ -320,4 +327,11 @@ BENCHMARK(BM_LargeTreeChild)->ArgNames({"op", "incremental", "genes"})->ArgsProd
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    shapevo::keepFreedMemory();  // as the CLI does (base/keep_freed_memory.hpp)
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

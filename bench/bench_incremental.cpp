@@ -18,13 +18,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "base/keep_freed_memory.hpp"
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
+#include "score/image_model.hpp"
 #include "search/search_methods.hpp"
 
 namespace {
@@ -69,16 +72,36 @@ Recording& recording(int scene) {
     const std::uint32_t from = fromGeneration();
     while (method->generation() < from) method->step(evaluator);
     r.parents = method->population();
+    // The children as the GA hands them to the evaluator: each with its lineage (the parent's
+    // evaluation and the subtree its operator changed), which scoring would replace.
+    evaluator.observeBatches([&](const Population& p, std::size_t) { r.generations.push_back(p); });
     for (int g = 0; g < kRecordedGenerations; ++g) {
         method->step(evaluator);
-        r.generations.push_back(method->population());
+        const Population& scored = method->population();
+        r.elite = std::size_t(r.settings.ga.elitism);
+        r.children += scored.size() - r.elite;
+        r.fitness.insert(r.fitness.end(), scored.fitness.begin() + std::ptrdiff_t(r.elite), scored.fitness.end());
     }
-    r.elite = std::size_t(r.settings.ga.elitism);
-    for (const Population& p : r.generations) {
-        r.children += p.size() - r.elite;
-        r.fitness.insert(r.fitness.end(), p.fitness.begin() + std::ptrdiff_t(r.elite), p.fitness.end());
-    }
+    evaluator.observeBatches(nullptr);
     return r;
+}
+
+/// Bytes the models of `pop` hold for their children (score/image_model.hpp): chromosome
+/// copies and coverage counts, each shared block once.
+std::size_t heldByModels(const Population& pop, const Scorer& scorer) {
+    std::set<const void*> seen;
+    std::size_t bytes = 0;
+    for (const Chromosome& c : pop.individuals) {
+        const EvaluatedModel* m = c.lineage.parent.get();
+        if (!m || m->maker != &scorer || !seen.insert(m).second) continue;
+        const auto& model = static_cast<const ImageModel&>(*m);
+        bytes += sizeof(ImageModel) + model.chromosome.words.capacity() * sizeof(std::uint32_t);
+        if (const CoverageCounts* counts = model.coverageIfMade())
+            counts->forEachBlock([&](const void* block, std::size_t n) {
+                if (seen.insert(block).second) bytes += n;
+            });
+    }
+    return bytes;
 }
 
 void BM_ScoreRecordedChildren(benchmark::State& state) {
@@ -88,11 +111,13 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
     const Scene& s = incremental ? *r.incremental : *r.full;
     state.SetLabel(std::string(kScenes[scene]) + (incremental ? " incremental" : " full") + ", children of generations " +
                    std::to_string(fromGeneration() + 1) + "-" + std::to_string(fromGeneration() + kRecordedGenerations));
-    std::vector<Population> work = r.generations;
-    std::uint64_t reused = 0;
+    std::vector<Population> work;
+    std::uint64_t reused = 0, fromParent = 0;
+    std::size_t modelBytes = 0;
     std::size_t cacheBytes = 0;
     for (auto _ : state) {
         state.PauseTiming();
+        work = r.generations;  // scoring replaces their lineage
         Evaluator evaluator(s.scorer(), 1);
         Population parents = r.parents;
         evaluator.evaluate(parents);  // warm: the parents' primitives are in the cache
@@ -101,6 +126,8 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
         for (Population& p : work) evaluator.evaluate(p, r.elite);
         state.PauseTiming();
         reused = evaluator.reused() - reusedBefore;
+        fromParent = evaluator.scoredFromParent();
+        modelBytes = heldByModels(work.back(), s.scorer());
         cacheBytes = evaluator.cacheBytesUsed();
         std::size_t k = 0;
         for (const Population& p : work)
@@ -118,6 +145,10 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
     state.counters["cache_MB"] = double(cacheBytes) / (1 << 20);  // written so far, one thread
     state.counters["bytes/individual"] = double(cacheBytes) / double(r.parents.size());
     state.counters["duplicates"] = double(reused) / double(r.children);
+    state.counters["from_parent"] = double(fromParent) / double(r.children);  // scored from the parent's counts
+    // What the last generation's models hold for their children (chromosome copies and coverage
+    // counts, shared blocks once), per individual.
+    state.counters["model_bytes/individual"] = double(modelBytes) / double(work.back().size());
 }
 
 // scene x {full, incremental}: the two modes of one scene run next to each other
@@ -129,4 +160,11 @@ BENCHMARK(BM_ScoreRecordedChildren)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    shapevo::keepFreedMemory();  // as the CLI does (base/keep_freed_memory.hpp)
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -18,6 +18,7 @@
 
 #include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
+#include "base/keep_freed_memory.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/checkpoint_path.hpp"
 #include "genome/genome_file.hpp"
@@ -124,6 +125,7 @@ constexpr const char* kCheckpointPaths =
 }  // namespace
 
 int main(int argc, char** argv) {
+    keepFreedMemory();
     MpiSession mpi(argc, argv);
     CLI::App app{"shapevo: evolve procedural models (grammars) until they fill a target volume.\n"
                  "Docs: README.md; grammar language: grammars/README.md"};

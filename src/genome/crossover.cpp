@@ -37,10 +37,12 @@ std::uint32_t findConnection(const Grammar& g, const Chromosome& c, std::uint32_
 /// child = parent with the subtree at `at` replaced by `donor`'s subtree at `donorRoot`.
 void splice(const Grammar& g, const Chromosome& parent, const Connection& at, const Chromosome& donor,
             std::uint32_t donorRoot, Chromosome& child, GenomeScratch& scratch) {
-    child.words.assign(parent.words.begin(), parent.words.end());
-    child.genes = parent.genes;
+    child.copyFrom(parent);
+    Lineage before = parent.lineage;
     const std::uint32_t newParent = removeSubtree(g, child, at.child, at.parent, scratch);
+    const std::uint32_t root = child.size();  // where the donor's subtree goes
     appendSubtree(g, child, newParent, at.entry, donor, donorRoot, scratch);
+    child.noteChange(std::move(before), root, at.child);  // the parent gene keeps a child there: nothing else changes
 }
 
 }  // namespace
@@ -58,10 +60,8 @@ bool crossover(const Grammar& g, const Chromosome& a, const Chromosome& b, Chrom
         splice(g, b, cb, a, ca.child, childB, scratch);
         if (childA.genes <= limits.maxGenes && childB.genes <= limits.maxGenes) return true;
     }
-    childA.words.assign(a.words.begin(), a.words.end());
-    childA.genes = a.genes;
-    childB.words.assign(b.words.begin(), b.words.end());
-    childB.genes = b.genes;
+    childA.copyFrom(a);
+    childB.copyFrom(b);
     return false;
 }
 

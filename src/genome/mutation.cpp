@@ -5,6 +5,20 @@
 
 namespace shapevo {
 
+namespace {
+/// Whether the rule has a `terminal` block (what it makes depends on whether a gene has children).
+bool hasTerminal(const Rule& r) {
+    for (const Statement& st : r.statements)
+        if (st.kind == StatementKind::TerminalBegin) return true;
+    return false;
+}
+bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
+    for (std::uint32_t k = 0; k < r.childOffsets; ++k)
+        if (c.child(gene, k) > 0) return true;
+    return false;
+}
+}  // namespace
+
 bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits) {
     if (c.empty()) {
         if (g.mandatoryGenes[g.start] > limits.maxGenes) return false;
@@ -28,8 +42,14 @@ bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits)
                 if (r >= 0) continue;
                 const std::uint16_t rule = pickAlternative(s, rng);
                 if (c.genes + g.mandatoryGenes[rule] > limits.maxGenes) return false;
+                // A gene with a terminal block and no children yet changes itself; otherwise only
+                // the new subtree is new (the genes before it keep their places).
+                const bool terminal = hasTerminal(g.rules[c.rule(pos)]) && !hasChildren(c, pos, g.rules[c.rule(pos)]);
+                Lineage before = std::move(c.lineage);
                 const std::uint32_t added = appendGene(g, c, rule, pos, s.firstChild + k, rng);
                 completeMandatory(g, c, added, rng);
+                if (terminal) c.noteChange(std::move(before), pos, pos);
+                else c.noteChange(std::move(before), added, Lineage::kNone);
                 return true;
             }
         }
@@ -63,7 +83,13 @@ bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {
                 if (off <= 0) continue;
                 r -= s.cutWeight();
                 if (r >= 0) continue;
-                removeSubtree(g, c, pos + std::uint32_t(off), 0, scratch);
+                const std::uint32_t removed = pos + std::uint32_t(off);
+                Lineage before = std::move(c.lineage);
+                const std::uint32_t now = removeSubtree(g, c, removed, pos, scratch);
+                if (hasTerminal(g.rules[c.rule(now)]) && !hasChildren(c, now, g.rules[c.rule(now)]))
+                    c.noteChange(std::move(before), now, pos);
+                else
+                    c.noteChange(std::move(before), Lineage::kNone, removed);
                 return true;
             }
         }
@@ -80,7 +106,9 @@ bool alter(const Grammar& g, Chromosome& c, Rng& rng) {
     for (std::uint32_t pos = 0; pos < c.size(); pos += g.rules[c.rule(pos)].geneWords()) {
         if (g.rules[c.rule(pos)].paramFloats == 0) continue;
         if (pick-- == 0) {
+            Lineage before = std::move(c.lineage);
             drawParams(g, c, pos, rng);
+            c.noteChange(std::move(before), pos, pos);
             return true;
         }
     }

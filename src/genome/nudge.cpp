@@ -68,7 +68,9 @@ bool nudge(const Grammar& g, Chromosome& c, Rng& rng) {
             for (int k = 0; k < p.dims; ++k) {
                 if (!canMove(g, p.prior[k]) || pick-- != 0) continue;
                 const std::uint32_t i = p.first + std::uint32_t(k);
+                Lineage before = std::move(c.lineage);
                 c.setParam(pos, r, i, moved(g, p.prior[k], c.param(pos, r, i), rng));
+                c.noteChange(std::move(before), pos, pos);
                 return true;
             }
     }

@@ -55,8 +55,8 @@ void subtreePreorder(const Grammar& g, const Chromosome& c, std::uint32_t root, 
 bool regrowBelow(const Grammar& g, const Chromosome& x, std::uint32_t v, Chromosome& y, Rng& rng,
                  const GenomeLimits& limits, RegrowScratch& s, std::vector<MatchedGene>* matched) {
     subtreePreorder(g, x, v, s.oldGenes, s.stack);
-    y.words.assign(x.words.begin(), x.words.end());
-    y.genes = x.genes;
+    y.copyFrom(x);
+    Lineage before = x.lineage;
     // Cut: descendants come after v, so v keeps its position.
     const Rule& vr = g.rules[y.rule(v)];
     for (std::uint32_t e = 0; e < vr.childOffsets; ++e) {
@@ -98,6 +98,7 @@ bool regrowBelow(const Grammar& g, const Chromosome& x, std::uint32_t v, Chromos
                     r.paramFloats * sizeof(std::uint32_t));
         if (matched) matched->push_back({from, to});
     }
+    y.noteChange(std::move(before), v, v);  // v keeps its place; all below it is new
     return true;
 }
 

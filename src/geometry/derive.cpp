@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <span>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -189,37 +190,59 @@ namespace {
 }
 }  // namespace
 
-DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
+namespace {
+/// Derive's state before its first task: `out` cleared, one task for `gene` on `start` (its
+/// scope and look), the stacks empty below it.
+void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_t gene, const SubtreeStart& start) {
     out.clear();
     scratch.reused.clear();
+    scratch.open.clear();
     out.meshes = &g.meshes;
     out.materialNames = &g.materialNames;
     out.textures = &g.textures;
-    if (c.empty()) return DeriveStatus::Complete;
+    scratch.stack.clear();
+    scratch.scopes.clear();
+    scratch.frames.clear();
+    Scope s = start.scope;
+    if (g.hasAppearance) {
+        scratch.looks.clear();
+        scratch.looks.push_back(start.look);
+        s.look = 0;
+    }
+    // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
+    if (scratch.scopes.capacity() < scratch.stack.capacity()) scratch.scopes.reserve(scratch.stack.capacity());
+    scratch.params.resize(std::size_t(kPieceKeySlot) + 1);
+    scratch.scopes.push_back(s);
+    scratch.stack.push_back({gene, 0, UINT32_MAX, 0, 0, DeriveScratch::kNoFrame, start.key});
+}
+
+/// Whether `task` is the first task of its gene's subtree, on its parent's scope (what the memo
+/// keeps and what a subtree start names).
+bool startsSubtree(const DeriveScratch::Task& task) {
+    return task.statement == 0 && task.end == UINT32_MAX && task.frame == DeriveScratch::kNoFrame &&
+           task.scope == task.parent;
+}
+
+/// What derive's loop does beside deriving: Focus::Path skips every task that is neither the
+/// focus gene's first nor an ancestor's, records the focus gene's starts instead of deriving it,
+/// and makes no primitive.
+enum class Focus { None, Path };
+
+/// Run the tasks on the stack (begin()). `memo` may be null; Path takes none.
+template <Focus F>
+DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives,
+                 SubtreeMemo* const memo, std::uint32_t focus, std::span<const std::uint32_t> ancestors,
+                 std::vector<SubtreeStart>* starts) {
     auto& stack = scratch.stack;
     auto& scopes = scratch.scopes;
     auto& frames = scratch.frames;
     auto& looks = scratch.looks;
-    stack.clear();
-    scopes.clear();
-    frames.clear();
-    if (g.hasAppearance) {
-        looks.clear();
-        looks.push_back(Appearance{});
-    }
-    // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
-    if (scopes.capacity() < stack.capacity()) scopes.reserve(stack.capacity());
-    scratch.params.resize(std::size_t(kPieceKeySlot) + 1);
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
     constexpr std::uint32_t kNoFrame = DeriveScratch::kNoFrame;
-    scopes.push_back(Scope{});
-    stack.push_back({0, 0, UINT32_MAX, 0, 0, kNoFrame, 0});
-    std::size_t tasks = 0;
-    const std::size_t maxTasks = 4 * maxPrimitives + 1024;  // mirrors without boxes multiply too
-    SubtreeMemo* const memo = g.textures.empty() && scratch.memo && scratch.memo->on() ? scratch.memo.get() : nullptr;
-    scratch.open.clear();
-    if (memo) memo->identify(g, c);
+    std::size_t& tasks = scratch.tasks;
+    tasks = 0;
+    const std::size_t maxTasks = maxDeriveTasks(maxPrimitives);
     for (;;) {
         if (memo) [[unlikely]]
             keepFinishedSubtrees(g, out, scratch, stack.size(), tasks);
@@ -229,11 +252,18 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
         stack.pop_back();
         // Every task still on the stack refers to scopes at or below this task's own one.
         scopes.resize(task.scope + 1);
+        if constexpr (F == Focus::Path) {
+            if (task.gene == focus && startsSubtree(task)) {
+                const Scope& s = scopes[task.scope];
+                starts->push_back({s, g.hasAppearance ? looks[s.look] : Appearance{}, task.key});
+                continue;
+            }
+            if (std::find(ancestors.begin(), ancestors.end(), task.gene) == ancestors.end()) continue;
+        }
         // A gene's subtree, from its first statement on its parent's scope: derived before? (Not
         // the root's: the whole model recurs only as a duplicate, which search methods never
         // score twice, and keeping it would copy every primitive of every model.)
-        if (memo && task.gene != 0 && task.statement == 0 && task.end == UINT32_MAX && task.frame == kNoFrame &&
-            task.scope == task.parent)
+        if (memo && task.gene != 0 && startsSubtree(task))
             if (reuseSubtree(g, task, out, scratch, *memo, tasks, maxTasks, maxPrimitives)) continue;
         const Rule& r = g.rules[c.rule(task.gene)];
         if (r.paramFloats > 0)
@@ -301,6 +331,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
                 break;
             }
             case StatementKind::Primitive: {
+                if constexpr (F == Focus::Path) break;  // the path's own primitives are not asked for
                 // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
                 if (out.primitives.size() >= maxPrimitives) return DeriveStatus::Truncated;
                 Primitive& p = out.primitives.emplace_back();
@@ -388,6 +419,38 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
         }
     }
     return DeriveStatus::Complete;
+}
+}  // namespace
+
+DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
+    begin(g, out, scratch, 0, SubtreeStart{});
+    if (c.empty()) {
+        scratch.tasks = 0;
+        return DeriveStatus::Complete;
+    }
+    SubtreeMemo* const memo = g.textures.empty() && scratch.memo && scratch.memo->on() ? scratch.memo.get() : nullptr;
+    if (memo) memo->identify(g, c);
+    return run<Focus::None>(g, c, out, scratch, maxPrimitives, memo, 0, {}, nullptr);
+}
+
+DeriveStatus deriveSubtree(const Grammar& g, const Chromosome& c, std::uint32_t gene, const SubtreeStart& start,
+                           Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
+    begin(g, out, scratch, gene, start);
+    return run<Focus::None>(g, c, out, scratch, maxPrimitives, nullptr, 0, {}, nullptr);
+}
+
+DeriveStatus findSubtreeStarts(const Grammar& g, const Chromosome& c, std::uint32_t gene, DeriveScratch& scratch,
+                               std::vector<SubtreeStart>& starts, std::size_t maxPrimitives) {
+    starts.clear();
+    auto& path = scratch.path;
+    path.clear();
+    for (std::uint32_t at = gene; at != 0;) {
+        at = std::uint32_t(std::int64_t(at) + c.parentOffset(at));
+        path.push_back(at);
+    }
+    Geometry& none = scratch.pathGeometry;
+    begin(g, none, scratch, 0, SubtreeStart{});
+    return run<Focus::Path>(g, c, none, scratch, maxPrimitives, nullptr, gene, path, &starts);
 }
 
 }  // namespace shapevo

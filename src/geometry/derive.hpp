@@ -11,6 +11,15 @@
 
 namespace shapevo {
 
+/// Where a gene's subtree starts being derived: its parent's scope, the look in force there and
+/// the piece key (what a SubtreeMemo::Start holds besides the content). What derive makes of the
+/// subtree depends on nothing else (subtree_memo.hpp).
+struct SubtreeStart {
+    Scope scope;  ///< `look` unused: the look is `look`
+    Appearance look;
+    std::uint32_t key = 0;
+};
+
 /// Reusable work space for derive (no allocation once warm).
 struct DeriveScratch {
     struct Task {
@@ -55,6 +64,11 @@ struct DeriveScratch {
         SubtreeMemo::Start start;
     };
     std::vector<ReusedSubtree> reused;
+    /// After a derivation: the tasks it ran (the memo's reused subtrees counting theirs), which
+    /// the limit of 4 * maxPrimitives + 1024 tasks is checked against.
+    std::size_t tasks = 0;
+    std::vector<std::uint32_t> path;  ///< findSubtreeStarts: the gene's ancestors
+    Geometry pathGeometry;            ///< findSubtreeStarts: stays empty
 };
 
 /// Every number of a primitive (centre, half extents; its axes follow from finite rotation
@@ -63,6 +77,10 @@ struct DeriveScratch {
 inline constexpr float kMaxCoordinate = 1e6f;
 /// The default of genome.max_primitives: derivation stops after this many primitives.
 inline constexpr std::size_t kDefaultMaxPrimitives = GenomeLimits{}.maxPrimitives;
+
+/// The most tasks a derivation with `maxPrimitives` runs before it stops (Truncated): mirrors
+/// without primitives multiply too.
+inline std::size_t maxDeriveTasks(std::size_t maxPrimitives) { return 4 * maxPrimitives + 1024; }
 
 enum class DeriveStatus : unsigned char {
     Complete,   ///< the whole derivation
@@ -78,5 +96,20 @@ enum class DeriveStatus : unsigned char {
 /// `out` holds only finite, bounded primitives.
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch,
                     std::size_t maxPrimitives = kDefaultMaxPrimitives);
+
+/// Derive only the subtree of the gene at word `gene` of `c`, from `start`: exactly the
+/// primitives (in order) and tasks (scratch.tasks) a derivation of `c` makes of that subtree at
+/// that start. The memo is not used. The same limits apply to the subtree alone.
+DeriveStatus deriveSubtree(const Grammar& g, const Chromosome& c, std::uint32_t gene, const SubtreeStart& start,
+                           Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives = kDefaultMaxPrimitives);
+
+/// Every start of the subtree of the gene at word `gene` (not the root) in a derivation of `c`,
+/// in derivation order: one per time its parent's derivation reaches it (more than one under a
+/// mirror or in repeated pieces). Runs only the statements of its ancestors and makes no
+/// primitive, so it costs the path from the root, not the model. Its status is Complete unless
+/// the ancestors' own tasks pass the task limit (a model whose full derivation is Complete
+/// always gives Complete); what the full derivation's status is, it does not say.
+DeriveStatus findSubtreeStarts(const Grammar& g, const Chromosome& c, std::uint32_t gene, DeriveScratch& scratch,
+                               std::vector<SubtreeStart>& starts, std::size_t maxPrimitives = kDefaultMaxPrimitives);
 
 }  // namespace shapevo

@@ -10,6 +10,7 @@
 
 #include "score/camera.hpp"
 #include "score/image_fitness.hpp"
+#include "score/image_model.hpp"
 #include "score/image_target.hpp"
 #include "score/primitive_cache.hpp"
 #include "score/scorer.hpp"
@@ -51,6 +52,8 @@ public:
         std::vector<SubtreeRange> replayed, toKeep;
         std::vector<WordMask> gathered;
         std::vector<std::uint64_t> merged;  ///< one word per raster word, zero between merges
+        std::vector<SubtreeStart> starts;     ///< fromParent: where the changed subtree starts
+        std::vector<std::uint32_t> walk;      ///< fromParent: genes of a subtree being measured
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
@@ -71,19 +74,31 @@ public:
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
     double fitness(const Chromosome& c, Workspace& w, SilhouetteCounts* countsOut) const {
+        w.made.reset();
+        SilhouetteCounts counts;
+        if (c.lineage.changed() && w.cache) {
+            const auto* parent = c.lineage.parent->maker == this ? static_cast<const ImageModel*>(c.lineage.parent.get()) : nullptr;
+            if (parent && fromParent(c, *parent, w, counts)) {
+                ++w.fromParent;
+                if (countsOut) *countsOut = counts;
+                return imageFitness(settings_, counts, target_.hitCount, c.genes);
+            }
+            ++w.notFromParent;
+        }
         if (!deriveCounted(c, w)) {
             if (countsOut) *countsOut = SilhouetteCounts{};
             return kWorstFitness;
         }
-        SilhouetteCounts counts;
         if (throughCache(w.cache, w.geometry.primitives.size())) {
             drawCached(w);
             counts = w.raster.score(target_);
-            if (checksIncremental()) checkAgainstFull(w, counts);
+            if (checksIncremental()) checkAgainstFull(c, w, counts);
         } else {
             w.raster.add(w.geometry);
             counts = w.raster.score(target_);
         }
+        // With incremental scoring, what its children start from (scoring from the parent).
+        if (w.cache && w.status == DeriveStatus::Complete) w.made = keep(c, w.geometry.primitives.size(), w.derive.tasks, counts);
         if (countsOut) *countsOut = counts;
         return imageFitness(settings_, counts, target_.hitCount, c.genes);
     }
@@ -97,8 +112,26 @@ public:
 private:
     /// Draw w.geometry, replaying the rows of primitives found in w.cache and keeping the others'.
     void drawCached(Workspace& w) const;
-    /// Score w.geometry the full way; throw IncrementalMismatch unless it gives `counts`.
-    void checkAgainstFull(Workspace& w, const SilhouetteCounts& counts) const;
+    /// Score `c` the full way (no memo, no cache); throw IncrementalMismatch unless it gives `counts`.
+    void checkAgainstFull(const Chromosome& c, Workspace& w, const SilhouetteCounts& counts) const;
+
+    // Scoring from the parent (image_from_parent.cpp).
+    /// Score `c`, whose lineage names one changed subtree of `parent`, from the parent's
+    /// coverage counts: take out the old subtree's primitives, put in the new one's. Sets
+    /// `counts`, w.status and w.made; false (nothing set) when the model must be scored the full
+    /// way: a subtree at the root, a lineage that does not fit the chromosomes, a derivation that
+    /// would not be Complete.
+    bool fromParent(const Chromosome& c, const ImageModel& parent, Workspace& w, SilhouetteCounts& counts) const;
+    /// apply(words) with the words each primitive of w.geometry sets (from the primitive cache,
+    /// or drawn and kept there; lookups prefetched first). Leaves drawing in w.raster, which the
+    /// caller clears.
+    template <class Apply>
+    void eachPrimitivesWords(Workspace& w, Apply&& apply) const;
+    /// What a Complete model leaves for its children (its coverage counts made when first asked for).
+    std::shared_ptr<const EvaluatedModel> keep(const Chromosome& c, std::size_t primitives, std::size_t tasks,
+                                               const SilhouetteCounts& counts, CoverageCounts* coverage = nullptr) const;
+    /// The coverage counts of `m`, made by deriving and drawing it whole.
+    void makeCoverage(const ImageModel& m, Workspace& w, CoverageCounts& out) const;
 
     const Grammar& grammar_;
     Camera camera_;

@@ -37,6 +37,12 @@ struct ScoreWorkspace {
     double memoSeconds = 0, plainSeconds = 0;
     DeriveScratch checkDerive;  ///< the checking mode's (and the trial's) derivation without the memo...
     Geometry checkGeometry;     ///< ...and its geometry
+    /// What the last fitness() left for the model's children (Lineage::parent; null: nothing):
+    /// the Evaluator moves it into the model's lineage.
+    std::shared_ptr<const EvaluatedModel> made;
+    /// Models scored from their parent (Lineage), and those whose lineage named a change but
+    /// were scored the other way (a parent truncated, a subtree past the limits).
+    std::uint64_t fromParent = 0, notFromParent = 0;
 };
 
 /// Of an incremental-scoring budget of `bytes` (score.cache_mb), the subtree memo's share (a

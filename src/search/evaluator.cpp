@@ -16,6 +16,7 @@ int Evaluator::usableThreads(int requested) {
 Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {}
 
 void Evaluator::evaluate(Population& pop, std::size_t from) {
+    if (observer_) observer_(pop, from);
     const std::size_t n = pop.size();
     pop.fitness.resize(n);
     // Which to score: on one thread, in population order (so the same with any thread count).
@@ -35,6 +36,7 @@ void Evaluator::evaluate(Population& pop, std::size_t from) {
                 } else {
                     pop.fitness[i] = e->fitness;
                     scorer_.countAgain(e->status);
+                    pop.individuals[i].lineage = Lineage{e->model.lock()};  // (null once no model holds it)
                 }
                 ++reused_;
                 continue;
@@ -55,6 +57,8 @@ void Evaluator::evaluate(Population& pop, std::size_t from) {
             for (std::size_t k = r.begin(); k != r.end(); ++k) {
                 const std::size_t i = todo_[k];
                 pop.fitness[i] = scorer_.fitness(pop.individuals[i], *ws);
+                // What scoring left for its children (or nothing): its lineage from now on.
+                pop.individuals[i].lineage = Lineage{std::move(ws->made)};
                 if (memo_) status_[i] = ws->status;
             }
         });
@@ -66,10 +70,12 @@ void Evaluator::evaluate(Population& pop, std::size_t from) {
         e->fitness = pop.fitness[i];
         e->status = status_[i];
         e->pending = -1;
+        e->model = pop.individuals[i].lineage.parent;
     }
     for (std::size_t i = from; i < n; ++i)
         if (sameAs_[i] >= 0) {
             pop.fitness[i] = pop.fitness[std::size_t(sameAs_[i])];
+            pop.individuals[i].lineage = pop.individuals[std::size_t(sameAs_[i])].lineage;
             scorer_.countAgain(status_[std::size_t(sameAs_[i])]);
         }
 }

@@ -6,6 +6,7 @@
 // (search/fitness_memo.hpp: four times the first batch's models, 256 to 4,096, in at most a
 // quarter of score.cache_mb; exact, and the same with any thread count).
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -29,10 +30,20 @@ public:
     static int usableThreads(int requested);
     /// Fill pop.fitness[i] for i in [from, pop.size()).
     void evaluate(Population& pop, std::size_t from = 0);
+    /// Call `f(pop, from)` at the start of every evaluate(), before anything is scored (a
+    /// benchmark records the children a search method makes, lineage and all).
+    void observeBatches(std::function<void(const Population&, std::size_t)> f) { observer_ = std::move(f); }
     int threads() const { return arena_.max_concurrency(); }
     const Scorer& scorer() const { return scorer_; }
     /// Models that took a remembered fitness instead of being scored (since construction).
     std::uint64_t reused() const { return reused_; }
+    /// Models scored from their parent's evaluation (genome Lineage; score/image_model.hpp), since construction.
+    std::uint64_t scoredFromParent() const {
+        std::uint64_t n = 0;
+        for (const auto& ws : workspaces_)
+            if (ws) n += ws->fromParent;
+        return n;
+    }
     /// Memory incremental scoring uses now: every thread's primitive cache (the part written so
     /// far) and the duplicate memo.
     std::size_t cacheBytesUsed() const {
@@ -49,6 +60,7 @@ private:
     tbb::enumerable_thread_specific<std::unique_ptr<ScoreWorkspace>> workspaces_;
     std::optional<FitnessMemo> memo_;
     std::uint64_t reused_ = 0;
+    std::function<void(const Population&, std::size_t)> observer_;
     // per batch (kept for their capacity): the indices to score, and for each index of the batch
     // the index it duplicates (-1: none), the memo entry it filled, its derive status
     std::vector<std::size_t> todo_;

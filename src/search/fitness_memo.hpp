@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "base/hash.hpp"
@@ -33,6 +34,9 @@ public:
         double fitness = 0;
         DeriveStatus status = DeriveStatus::Complete;
         std::int64_t pending = -1;  ///< >= 0: inserted for the batch index whose score is not known yet
+        /// What scoring it left for its children (Lineage::parent), while a model holds it: a
+        /// duplicate takes it, so that its children too are scored from their parent.
+        std::weak_ptr<const EvaluatedModel> model;
     };
 
     FitnessMemo(std::size_t capacity, std::size_t maxBytes) : maxBytes_(maxBytes) {
@@ -84,6 +88,7 @@ public:
         victim->hash = h;
         victim->used = ++clock_;
         victim->pending = -1;
+        victim->model.reset();
         return victim;
     }
 
@@ -97,6 +102,7 @@ private:
         std::vector<std::uint32_t>().swap(e.chromosome.words);
         e.used = 0;
         e.pending = -1;
+        e.model.reset();
     }
 
     static constexpr std::size_t kWays = 4;

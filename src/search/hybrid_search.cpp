@@ -70,8 +70,7 @@ bool HybridSearch::localMove(const Chromosome& x, Chromosome& y, double nudgeSha
         const double total = jumpWeightTotal(grammar_, x, kDepthBias, regrow_);
         if (total > 0) return regrowFrom(x, total, y);
     }
-    y.words.assign(x.words.begin(), x.words.end());
-    y.genes = x.genes;
+    y.copyFrom(x);
     if (rng_.uniform() < nudgeShare) return nudge(grammar_, y, rng_);
     return alter(grammar_, y, rng_);
 }

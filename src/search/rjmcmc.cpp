@@ -53,8 +53,7 @@ void Rjmcmc::propose(std::size_t i) {
         p.weightAfter = jumpWeightTotal(grammar_, y, settings_.depthBias, regrow_);
         p.move = Move::Jump;
     } else {
-        y.words.assign(x.words.begin(), x.words.end());
-        y.genes = x.genes;
+        y.copyFrom(x);
         bool altered = false;
         for (std::uint32_t k = 0; k < settings_.diffusionAlters; ++k) altered = alter(grammar_, y, rng_) || altered;
         if (!altered) return;

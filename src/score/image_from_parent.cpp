@@ -1,0 +1,125 @@
+// ImageScorer from the parent: a child whose operator changed one subtree (Lineage) is scored
+// from its parent's coverage counts (score/image_model.hpp). Exact because a subtree's
+// derivation depends only on its content and its start (geometry/subtree_memo.hpp), the starts
+// of the changed subtree are the parent's (its ancestors did not change: the operators name the
+// gene whose own derivation changed, geometry/derive.hpp findSubtreeStarts), and a derivation is
+// Complete exactly when its totals of primitives and tasks are within the limits.
+#include <algorithm>
+
+#include "score/image_scorer.hpp"
+
+namespace shapevo {
+
+namespace {
+/// Genes and words of the subtree at `root` of `c` (a stack walk; `walk` is scratch).
+void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, std::vector<std::uint32_t>& walk,
+                    std::uint32_t& genes, std::uint32_t& words) {
+    genes = words = 0;
+    walk.assign(1, root);
+    while (!walk.empty()) {
+        const std::uint32_t pos = walk.back();
+        walk.pop_back();
+        const Rule& r = g.rules[c.rule(pos)];
+        ++genes;
+        words += r.geneWords();
+        for (std::uint32_t k = 0; k < r.childOffsets; ++k)
+            if (c.child(pos, k) > 0) walk.push_back(pos + std::uint32_t(c.child(pos, k)));
+    }
+}
+}  // namespace
+
+template <class Apply>
+void ImageScorer::eachPrimitivesWords(Workspace& w, Apply&& apply) const {
+    drawThroughCache(
+        *w.cache, w.geometry.primitives, w.probes, w.words, [](const Primitive&, std::size_t) { return false; },
+        [&](const PrimitiveCache<WordMask>::Found& found, std::size_t) { apply(found.records); },
+        [&](const Primitive& p, std::vector<WordMask>& words) -> std::uint64_t {
+            w.spans.clear();
+            w.raster.addRecorded(p, w.geometry.meshes, w.spans);
+            w.raster.wordMasks(w.spans, words);
+            return SilhouetteRaster::boundsOf(w.spans);
+        },
+        [&](std::span<const WordMask> words, std::uint64_t, std::size_t) { apply(words); });
+}
+
+std::shared_ptr<const EvaluatedModel> ImageScorer::keep(const Chromosome& c, std::size_t primitives, std::size_t tasks,
+                                                        const SilhouetteCounts& counts, CoverageCounts* coverage) const {
+    auto m = std::make_shared<ImageModel>();
+    m->maker = this;
+    m->chromosome.words = c.words;
+    m->chromosome.genes = c.genes;
+    m->primitives = primitives;
+    m->tasks = tasks;
+    m->counts = counts;
+    if (coverage) m->setCoverage(std::move(*coverage));
+    return m;
+}
+
+void ImageScorer::makeCoverage(const ImageModel& m, Workspace& w, CoverageCounts& out) const {
+    derive(grammar_, m.chromosome, w.geometry, w.derive, maxPrimitives());
+    out = CoverageCounts(w.raster.bits().size());
+    CoverageCounts::Delta delta;
+    eachPrimitivesWords(w, [&](std::span<const WordMask> words) { out.add(words, target_, delta); });
+    w.raster.clear();
+    if (std::uint64_t(delta.covered) != m.counts.covered || std::uint64_t(delta.hit) != m.counts.hit ||
+        std::uint64_t(delta.avoided) != m.counts.avoided)
+        throw IncrementalMismatch("ImageScorer: a model's coverage counts differ from its pixel counts");
+}
+
+bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Workspace& w, SilhouetteCounts& counts) const {
+    const Lineage& l = c.lineage;
+    const Chromosome& before = parent.chromosome;
+    const std::uint32_t none = Lineage::kNone;
+    if (l.childGene == 0 || l.parentGene == 0) return false;  // the whole model changed
+    if ((l.childGene != none && l.childGene >= c.size()) || (l.parentGene != none && l.parentGene >= before.size()))
+        return false;
+    // The lineage must account for the sizes: the parent less its old subtree plus the new one.
+    std::uint32_t oldGenes = 0, oldWords = 0, newGenes = 0, newWords = 0;
+    if (l.parentGene != none) measureSubtree(grammar_, before, l.parentGene, w.walk, oldGenes, oldWords);
+    if (l.childGene != none) measureSubtree(grammar_, c, l.childGene, w.walk, newGenes, newWords);
+    if (std::uint64_t(before.genes) + newGenes != std::uint64_t(c.genes) + oldGenes ||
+        std::uint64_t(before.size()) + newWords != std::uint64_t(c.size()) + oldWords)
+        return false;
+    // Where the subtree starts: found in the child, or (a subtree removed) in the parent.
+    const DeriveStatus found = l.childGene != none ? findSubtreeStarts(grammar_, c, l.childGene, w.derive, w.starts, maxPrimitives())
+                                                   : findSubtreeStarts(grammar_, before, l.parentGene, w.derive, w.starts, maxPrimitives());
+    if (found != DeriveStatus::Complete) return false;
+    // The parent's counts, then out with the old subtree and in with the new one, each start in turn.
+    CoverageCounts coverage = parent.coverage([&](CoverageCounts& out) { makeCoverage(parent, w, out); });
+    CoverageCounts::Delta delta;
+    std::int64_t primitives = std::int64_t(parent.primitives), tasks = std::int64_t(parent.tasks);
+    bool complete = true;
+    for (const SubtreeStart& start : w.starts) {
+        if (l.parentGene != none) {
+            if (deriveSubtree(grammar_, before, l.parentGene, start, w.geometry, w.derive, maxPrimitives()) != DeriveStatus::Complete) {
+                complete = false;  // (cannot happen: it was part of a Complete derivation)
+                break;
+            }
+            primitives -= std::int64_t(w.geometry.primitives.size());
+            tasks -= std::int64_t(w.derive.tasks);
+            eachPrimitivesWords(w, [&](std::span<const WordMask> words) { coverage.remove(words, target_, delta); });
+        }
+        if (l.childGene != none) {
+            if (deriveSubtree(grammar_, c, l.childGene, start, w.geometry, w.derive, maxPrimitives()) != DeriveStatus::Complete) {
+                complete = false;  // a non-finite number, or past the limits on its own
+                break;
+            }
+            primitives += std::int64_t(w.geometry.primitives.size());
+            tasks += std::int64_t(w.derive.tasks);
+            eachPrimitivesWords(w, [&](std::span<const WordMask> words) { coverage.add(words, target_, delta); });
+        }
+    }
+    w.raster.clear();
+    if (!complete || primitives > std::int64_t(maxPrimitives()) || tasks > std::int64_t(maxDeriveTasks(maxPrimitives())))
+        return false;
+    counts = SilhouetteCounts{};
+    counts.covered = std::uint64_t(std::int64_t(parent.counts.covered) + delta.covered);
+    counts.hit = std::uint64_t(std::int64_t(parent.counts.hit) + delta.hit);
+    counts.avoided = std::uint64_t(std::int64_t(parent.counts.avoided) + delta.avoided);
+    w.status = DeriveStatus::Complete;
+    if (checksIncremental()) checkAgainstFull(c, w, counts);
+    w.made = keep(c, std::size_t(primitives), std::size_t(tasks), counts, &coverage);
+    return true;
+}
+
+}  // namespace shapevo

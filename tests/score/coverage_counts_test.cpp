@@ -1,0 +1,149 @@
+// CoverageCounts (score/coverage_counts.hpp): per-pixel counts as bit planes agree with a
+// brute-force count per pixel after random adds and removes, the deltas with brute-force
+// popcounts against the target, and a copy is not changed by writes to the picture it was
+// copied from (nor the other way round).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <vector>
+
+#include "genome/random.hpp"
+#include "score/coverage_counts.hpp"
+
+namespace shapevo {
+namespace {
+
+constexpr std::size_t kWords = 700;  // five and a half blocks
+
+ImageTarget countingTarget(Rng& rng) {
+    ImageTarget t;
+    t.width = 64;
+    t.height = int(kWords);
+    t.hit.resize(kWords);
+    t.avoid.resize(kWords);
+    for (std::size_t i = 0; i < kWords; ++i) {
+        t.hit[i] = rng.next();
+        t.avoid[i] = rng.next() & ~t.hit[i];
+    }
+    return t;
+}
+
+/// One primitive's words: distinct indices in increasing order, random masks.
+std::vector<WordMask> randomWords(Rng& rng) {
+    std::vector<WordMask> words;
+    // A third of them pile up on the first words, so that counts grow deep there.
+    const std::size_t first = rng.below(3) == 0 ? rng.below(8) : rng.below(kWords), n = 1 + rng.below(40);
+    for (std::size_t i = first; i < kWords && i < first + n; i += 1 + rng.below(3)) {
+        std::uint64_t m = rng.next() & rng.next();  // sparse-ish: counts stay varied
+        if (rng.below(4) == 0) m = ~std::uint64_t(0);  // and some deep piles
+        if (m == 0) m = 1;
+        words.push_back({std::uint32_t(i), std::uint32_t(m), std::uint32_t(m >> 32)});
+    }
+    return words;
+}
+
+struct Brute {
+    std::vector<std::uint32_t> counts = std::vector<std::uint32_t>(kWords * 64, 0);
+    std::uint64_t covered(std::size_t i) const {
+        std::uint64_t m = 0;
+        for (int b = 0; b < 64; ++b) m |= std::uint64_t(counts[i * 64 + std::size_t(b)] > 0) << b;
+        return m;
+    }
+    void apply(const std::vector<WordMask>& words, int sign) {
+        for (const WordMask& w : words)
+            for (int b = 0; b < 64; ++b)
+                if (w.mask() >> b & 1) counts[w.index * 64 + std::size_t(b)] += std::uint32_t(sign);
+    }
+    CoverageCounts::Delta totals(const ImageTarget& t) const {
+        CoverageCounts::Delta d;
+        for (std::size_t i = 0; i < kWords; ++i) {
+            const std::uint64_t m = covered(i);
+            d.covered += std::popcount(m);
+            d.hit += std::popcount(m & t.hit[i]);
+            d.avoided += std::popcount(m & t.avoid[i]);
+        }
+        return d;
+    }
+};
+
+void expectSame(const CoverageCounts& c, const Brute& b) {
+    for (std::size_t i = 0; i < kWords; ++i) {
+        ASSERT_EQ(c.covered(i), b.covered(i)) << "word " << i;
+        for (int bit = 0; bit < 64; bit += 7) ASSERT_EQ(c.count(i, bit), b.counts[i * 64 + std::size_t(bit)]);
+    }
+}
+
+TEST(CoverageCounts, AddsAndRemovesAgreeWithABruteForceCountPerPixel) {
+    Rng rng(11);
+    const ImageTarget target = countingTarget(rng);
+    CoverageCounts counts(kWords);
+    Brute brute;
+    CoverageCounts::Delta delta;
+    std::vector<std::vector<WordMask>> present;
+    for (int step = 0; step < 3000; ++step) {
+        if (present.empty() || rng.below(5) < 3) {
+            present.push_back(randomWords(rng));
+            counts.add(present.back(), target, delta);
+            brute.apply(present.back(), 1);
+        } else {
+            const std::size_t k = rng.below(present.size());
+            counts.remove(present[k], target, delta);
+            brute.apply(present[k], -1);
+            present.erase(present.begin() + std::ptrdiff_t(k));
+        }
+        if (step % 97 == 0) expectSame(counts, brute);
+        const CoverageCounts::Delta want = brute.totals(target);
+        ASSERT_EQ(delta.covered, want.covered) << "step " << step;
+        ASSERT_EQ(delta.hit, want.hit);
+        ASSERT_EQ(delta.avoided, want.avoided);
+    }
+    expectSame(counts, brute);
+    std::size_t deepest = 0;
+    for (std::uint32_t n : brute.counts) deepest = std::max<std::size_t>(deepest, n);
+    EXPECT_GT(deepest, 32u);  // carries rippled through six planes and more
+}
+
+TEST(CoverageCounts, ACopyKeepsItsPixelsWhileTheOriginalChangesAndTheOtherWayRound) {
+    Rng rng(3);
+    const ImageTarget target = countingTarget(rng);
+    CoverageCounts parent(kWords);
+    Brute brute;
+    CoverageCounts::Delta delta;
+    std::vector<std::vector<WordMask>> added;
+    for (int k = 0; k < 200; ++k) {
+        added.push_back(randomWords(rng));
+        parent.add(added.back(), target, delta);
+        brute.apply(added.back(), 1);
+    }
+    CoverageCounts child = parent;
+    const std::size_t sharedBytes = child.bytes();
+    Brute childBrute = brute;
+    CoverageCounts::Delta childDelta = delta;
+    for (int k = 0; k < 20; ++k) {  // the child takes out some, puts in others
+        child.remove(added[std::size_t(k)], target, childDelta);
+        childBrute.apply(added[std::size_t(k)], -1);
+        const auto w = randomWords(rng);
+        child.add(w, target, childDelta);
+        childBrute.apply(w, 1);
+    }
+    expectSame(parent, brute);
+    expectSame(child, childBrute);
+    const auto more = randomWords(rng);  // and the parent goes on without touching the child
+    parent.add(more, target, delta);
+    brute.apply(more, 1);
+    expectSame(child, childBrute);
+    expectSame(parent, brute);
+    EXPECT_GT(sharedBytes, 0u);
+}
+
+TEST(CoverageCounts, RemovingPixelsNeverAddedIsAProgrammingError) {
+    Rng rng(1);
+    const ImageTarget target = countingTarget(rng);
+    CoverageCounts counts(kWords);
+    CoverageCounts::Delta delta;
+    const std::vector<WordMask> words{{5, 1, 0}};
+    EXPECT_THROW(counts.remove(words, target, delta), std::logic_error);
+}
+
+}  // namespace
+}  // namespace shapevo
