@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "base/keep_freed_memory.hpp"
+#include "bench_main.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/parser.hpp"
@@ -327,11 +327,4 @@ BENCHMARK(BM_LargeTreeChild)->ArgNames({"op", "incremental", "genes"})->ArgsProd
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    shapevo::keepFreedMemory();  // as the CLI does (base/keep_freed_memory.hpp)
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+SHAPEVO_BENCHMARK_MAIN()

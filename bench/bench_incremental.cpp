@@ -3,11 +3,13 @@
 //
 // Recording (once per scene, not timed): the scene's GA runs from its config's seed on one thread
 // up to generation FROM (default 1000), then the children of the next 50 generations are kept
-// (each generation's population: elites first, children after). Each benchmark iteration makes a
+// as the GA hands them to its evaluator (elites first, children after; each child with its
+// lineage, so the incremental mode scores it from its parent where its operator named the change). Each benchmark iteration makes a
 // fresh Evaluator on one thread, lets it score the population of generation FROM (the children's
 // parents, not timed, so a cache starts as warm as in the run), then times scoring the 50
 // generations' children in order. Counters: evals/s and s/child; duplicates, the share of
-// children the memo answered; cache_MB, the cache memory written after the 50 generations (one
+// children the memo answered; from_parent, the share scored from the parent's counts;
+// model_bytes/individual, what the last generation's models keep for their children; cache_MB, the cache memory written after the 50 generations (one
 // thread: an island's figure is this times its threads), and that per individual of the population. Both modes score exactly the same chromosomes; the fitnesses
 // are compared and a difference aborts the benchmark.
 //
@@ -23,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "base/keep_freed_memory.hpp"
+#include "bench_main.hpp"
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
@@ -160,11 +162,4 @@ BENCHMARK(BM_ScoreRecordedChildren)
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    shapevo::keepFreedMemory();  // as the CLI does (base/keep_freed_memory.hpp)
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+SHAPEVO_BENCHMARK_MAIN()

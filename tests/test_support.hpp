@@ -1,6 +1,7 @@
 // Helpers shared by the tests: paths into the source tree, a temporary folder per test, running
 // the binary, and small text and error checks (splitLines, rightNested, expectInputError).
 #pragma once
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <sstream>
@@ -17,6 +18,17 @@ namespace shapevo::test {
 inline std::string sourcePath(const std::string& relative) { return std::string(SHAPEVO_SOURCE_DIR) + "/" + relative; }
 /// The spaceship scene's config, the one most CLI tests run.
 inline std::string spaceshipConfig() { return sourcePath("configs/spaceship.toml"); }
+/// Every shipped grammar and CastleMaker rule file (grammars/, grammars/castlemaker/), sorted.
+inline std::vector<std::string> shippedGrammarFiles() {
+    std::vector<std::string> paths;
+    for (const char* folder : {"grammars", "grammars/castlemaker"})
+        for (const auto& entry : std::filesystem::directory_iterator(sourcePath(folder))) {
+            const std::string ext = entry.path().extension().string();
+            if (ext == ".grammar" || ext == ".rule") paths.push_back(entry.path().string());
+        }
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
 
 /// A fresh empty directory under the system temp dir, removed when the object goes away.
 class TempDir {
@@ -94,11 +106,21 @@ public:
 /// Under AddressSanitizer (ASAN_OPTIONS set) leak-checked ranks (LeakCheckedRanks) unwind every
 /// allocation fully: OpenMPI's plug-ins keep allocations until exit, and only a full stack
 /// reaches the MPI library that tests/lsan.supp names; the others skip LeakSanitizer.
+/// OpenMPI's session folder of this test process, apart from every other one: mpiruns of tests
+/// running side by side (ctest -j) share /tmp/ompi.<host>.<uid> otherwise, and one that ends may
+/// remove it while another creates its own folder in it ("orte_session_dir failed").
+inline std::string mpiSessionBase() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("shapevo-ompi-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
 inline std::string mpirunWords(int ranks) {
     const char* asan = mpiRanksCheckLeaks() ? "${ASAN_OPTIONS:+ASAN_OPTIONS=$ASAN_OPTIONS:fast_unwind_on_malloc=0} "
                                             : "${ASAN_OPTIONS:+ASAN_OPTIONS=$ASAN_OPTIONS:detect_leaks=0} ";
     return std::string("env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") + asan +
-           std::string(SHAPEVO_MPIRUN) + " --oversubscribe -np " + std::to_string(ranks);
+           std::string(SHAPEVO_MPIRUN) + " --mca orte_tmpdir_base " + mpiSessionBase() + " --oversubscribe -np " +
+           std::to_string(ranks);
 }
 
 /// Run shapevo on `ranks` MPI ranks.

@@ -38,19 +38,8 @@ std::vector<Chromosome> modelsAndChildren(const Grammar& g, std::size_t count, s
     return out;
 }
 
-std::vector<std::string> shippedGrammars() {
-    std::vector<std::string> paths;
-    for (const char* folder : {"grammars", "grammars/castlemaker"})
-        for (const auto& entry : std::filesystem::directory_iterator(test::sourcePath(folder))) {
-            const std::string ext = entry.path().extension().string();
-            if (ext == ".grammar" || ext == ".rule") paths.push_back(entry.path().string());
-        }
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
-
 TEST(SubtreeMemo, DerivesEveryShippedGrammarsChildrenBitForBitAsWithout) {
-    const std::vector<std::string> paths = shippedGrammars();
+    const std::vector<std::string> paths = test::shippedGrammarFiles();
     ASSERT_GE(paths.size(), 10u);
     for (const std::string& path : paths) {
         SCOPED_TRACE(path);

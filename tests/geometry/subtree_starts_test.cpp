@@ -46,21 +46,10 @@ bool patch(Keys parent, const Keys& removed, const Keys& added, Keys& out) {
     return true;
 }
 
-std::vector<std::string> grammarFiles() {
-    std::vector<std::string> paths;
-    for (const char* folder : {"grammars", "grammars/castlemaker"})
-        for (const auto& entry : std::filesystem::directory_iterator(test::sourcePath(folder))) {
-            const std::string ext = entry.path().extension().string();
-            if (ext == ".grammar" || ext == ".rule") paths.push_back(entry.path().string());
-        }
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
-
 TEST(SubtreeStarts, AChildIsItsParentLessTheOldSubtreePlusTheNewAtEveryStartForEveryShippedGrammar) {
     const auto dummy = std::make_shared<EvaluatedModel>();
     std::size_t checked = 0, manyStarts = 0;
-    for (const std::string& path : grammarFiles()) {
+    for (const std::string& path : test::shippedGrammarFiles()) {
         SCOPED_TRACE(path);
         const Grammar g = loadGrammar(path);
         const GenomeLimits limits{150, 40000};

@@ -66,6 +66,21 @@ struct Brute {
     }
 };
 
+/// Counts kept both ways, with the deltas CoverageCounts reports.
+struct Tracked {
+    CoverageCounts counts{kWords};
+    Brute brute;
+    CoverageCounts::Delta delta;
+    void add(const std::vector<WordMask>& words, const ImageTarget& t) {
+        counts.add(words, t, delta);
+        brute.apply(words, 1);
+    }
+    void remove(const std::vector<WordMask>& words, const ImageTarget& t) {
+        counts.remove(words, t, delta);
+        brute.apply(words, -1);
+    }
+};
+
 void expectSame(const CoverageCounts& c, const Brute& b) {
     for (std::size_t i = 0; i < kWords; ++i) {
         ASSERT_EQ(c.covered(i), b.covered(i)) << "word " << i;
@@ -76,64 +91,49 @@ void expectSame(const CoverageCounts& c, const Brute& b) {
 TEST(CoverageCounts, AddsAndRemovesAgreeWithABruteForceCountPerPixel) {
     Rng rng(11);
     const ImageTarget target = countingTarget(rng);
-    CoverageCounts counts(kWords);
-    Brute brute;
-    CoverageCounts::Delta delta;
+    Tracked t;
     std::vector<std::vector<WordMask>> present;
     for (int step = 0; step < 3000; ++step) {
         if (present.empty() || rng.below(5) < 3) {
             present.push_back(randomWords(rng));
-            counts.add(present.back(), target, delta);
-            brute.apply(present.back(), 1);
+            t.add(present.back(), target);
         } else {
             const std::size_t k = rng.below(present.size());
-            counts.remove(present[k], target, delta);
-            brute.apply(present[k], -1);
+            t.remove(present[k], target);
             present.erase(present.begin() + std::ptrdiff_t(k));
         }
-        if (step % 97 == 0) expectSame(counts, brute);
-        const CoverageCounts::Delta want = brute.totals(target);
-        ASSERT_EQ(delta.covered, want.covered) << "step " << step;
-        ASSERT_EQ(delta.hit, want.hit);
-        ASSERT_EQ(delta.avoided, want.avoided);
+        if (step % 97 == 0) expectSame(t.counts, t.brute);
+        const CoverageCounts::Delta want = t.brute.totals(target);
+        ASSERT_EQ(t.delta.covered, want.covered) << "step " << step;
+        ASSERT_EQ(t.delta.hit, want.hit);
+        ASSERT_EQ(t.delta.avoided, want.avoided);
     }
-    expectSame(counts, brute);
+    expectSame(t.counts, t.brute);
     std::size_t deepest = 0;
-    for (std::uint32_t n : brute.counts) deepest = std::max<std::size_t>(deepest, n);
+    for (std::uint32_t n : t.brute.counts) deepest = std::max<std::size_t>(deepest, n);
     EXPECT_GT(deepest, 32u);  // carries rippled through six planes and more
 }
 
 TEST(CoverageCounts, ACopyKeepsItsPixelsWhileTheOriginalChangesAndTheOtherWayRound) {
     Rng rng(3);
     const ImageTarget target = countingTarget(rng);
-    CoverageCounts parent(kWords);
-    Brute brute;
-    CoverageCounts::Delta delta;
+    Tracked parent;
     std::vector<std::vector<WordMask>> added;
     for (int k = 0; k < 200; ++k) {
         added.push_back(randomWords(rng));
-        parent.add(added.back(), target, delta);
-        brute.apply(added.back(), 1);
+        parent.add(added.back(), target);
     }
-    CoverageCounts child = parent;
-    const std::size_t sharedBytes = child.bytes();
-    Brute childBrute = brute;
-    CoverageCounts::Delta childDelta = delta;
+    Tracked child = parent;  // shares the parent's blocks
     for (int k = 0; k < 20; ++k) {  // the child takes out some, puts in others
-        child.remove(added[std::size_t(k)], target, childDelta);
-        childBrute.apply(added[std::size_t(k)], -1);
-        const auto w = randomWords(rng);
-        child.add(w, target, childDelta);
-        childBrute.apply(w, 1);
+        child.remove(added[std::size_t(k)], target);
+        child.add(randomWords(rng), target);
     }
-    expectSame(parent, brute);
-    expectSame(child, childBrute);
-    const auto more = randomWords(rng);  // and the parent goes on without touching the child
-    parent.add(more, target, delta);
-    brute.apply(more, 1);
-    expectSame(child, childBrute);
-    expectSame(parent, brute);
-    EXPECT_GT(sharedBytes, 0u);
+    expectSame(parent.counts, parent.brute);
+    expectSame(child.counts, child.brute);
+    parent.add(randomWords(rng), target);  // and the parent goes on without touching the child
+    expectSame(child.counts, child.brute);
+    expectSame(parent.counts, parent.brute);
+    EXPECT_EQ(child.delta.covered, child.brute.totals(target).covered);
 }
 
 TEST(CoverageCounts, RemovingPixelsNeverAddedIsAProgrammingError) {
