@@ -72,6 +72,12 @@ struct Chromosome {
         forgetLineage();
         words[paramWord(pos, r) + i] = std::bit_cast<std::uint32_t>(v);
     }
+    /// Whether the gene at `pos` (rule `r`) has an expressed child.
+    bool hasChildren(std::uint32_t pos, const Rule& r) const {
+        for (std::uint32_t k = 0; k < r.childOffsets; ++k)
+            if (child(pos, k) > 0) return true;
+        return false;
+    }
     void forgetLineage() {
         if (lineage.parent) lineage = {};
     }

@@ -12,11 +12,6 @@ bool hasTerminal(const Rule& r) {
         if (st.kind == StatementKind::TerminalBegin) return true;
     return false;
 }
-bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
-    for (std::uint32_t k = 0; k < r.childOffsets; ++k)
-        if (c.child(gene, k) > 0) return true;
-    return false;
-}
 }  // namespace
 
 bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits) {
@@ -44,7 +39,7 @@ bool grow(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits)
                 if (c.genes + g.mandatoryGenes[rule] > limits.maxGenes) return false;
                 // A gene with a terminal block and no children yet changes itself; otherwise only
                 // the new subtree is new (the genes before it keep their places).
-                const bool terminal = hasTerminal(g.rules[c.rule(pos)]) && !hasChildren(c, pos, g.rules[c.rule(pos)]);
+                const bool terminal = hasTerminal(g.rules[c.rule(pos)]) && !c.hasChildren(pos, g.rules[c.rule(pos)]);
                 Lineage before = std::move(c.lineage);
                 const std::uint32_t added = appendGene(g, c, rule, pos, s.firstChild + k, rng);
                 completeMandatory(g, c, added, rng);
@@ -86,7 +81,7 @@ bool cut(const Grammar& g, Chromosome& c, Rng& rng, GenomeScratch& scratch) {
                 const std::uint32_t removed = pos + std::uint32_t(off);
                 Lineage before = std::move(c.lineage);
                 const std::uint32_t now = removeSubtree(g, c, removed, pos, scratch);
-                if (hasTerminal(g.rules[c.rule(now)]) && !hasChildren(c, now, g.rules[c.rule(now)]))
+                if (hasTerminal(g.rules[c.rule(now)]) && !c.hasChildren(now, g.rules[c.rule(now)]))
                     c.noteChange(std::move(before), now, pos);
                 else
                     c.noteChange(std::move(before), Lineage::kNone, removed);

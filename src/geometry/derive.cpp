@@ -77,11 +77,6 @@ glm::vec3 multiply(const glm::mat3& a, const glm::vec3& v) { return a * v; }
 glm::vec3 halfAbs(const glm::vec3& v) { return glm::abs(v) * 0.5f; }
 #endif
 
-bool hasChildren(const Chromosome& c, std::uint32_t gene, const Rule& r) {
-    for (std::uint32_t k = 0; k < r.childOffsets; ++k)
-        if (c.child(gene, k) > 0) return true;
-    return false;
-}
 }  // namespace
 
 namespace {
@@ -362,7 +357,7 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
                 break;
             }
             case StatementKind::TerminalBegin:
-                if (hasChildren(c, task.gene, r)) {
+                if (c.hasChildren(task.gene, r)) {
                     i = st.end;  // the loop's ++i steps past the TerminalEnd
                 } else {
                     beforeTerminal = s;

@@ -6,25 +6,19 @@
 // Complete exactly when its totals of primitives and tasks are within the limits.
 #include <algorithm>
 
+#include "genome/regrow.hpp"
 #include "score/image_scorer.hpp"
 
 namespace shapevo {
 
 namespace {
-/// Genes and words of the subtree at `root` of `c` (a stack walk; `walk` is scratch).
-void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, std::vector<std::uint32_t>& walk,
-                    std::uint32_t& genes, std::uint32_t& words) {
-    genes = words = 0;
-    walk.assign(1, root);
-    while (!walk.empty()) {
-        const std::uint32_t pos = walk.back();
-        walk.pop_back();
-        const Rule& r = g.rules[c.rule(pos)];
-        ++genes;
-        words += r.geneWords();
-        for (std::uint32_t k = 0; k < r.childOffsets; ++k)
-            if (c.child(pos, k) > 0) walk.push_back(pos + std::uint32_t(c.child(pos, k)));
-    }
+/// Genes and words of the subtree at `root` of `c` (`genes`, `stack`: scratch).
+void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, std::vector<std::uint32_t>& genes,
+                    std::vector<std::uint32_t>& stack, std::uint32_t& geneCount, std::uint32_t& words) {
+    subtreePreorder(g, c, root, genes, stack);
+    geneCount = std::uint32_t(genes.size()) + 1;
+    words = g.rules[c.rule(root)].geneWords();
+    for (const std::uint32_t pos : genes) words += g.rules[c.rule(pos)].geneWords();
 }
 }  // namespace
 
@@ -75,8 +69,8 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
         return false;
     // The lineage must account for the sizes: the parent less its old subtree plus the new one.
     std::uint32_t oldGenes = 0, oldWords = 0, newGenes = 0, newWords = 0;
-    if (l.parentGene != none) measureSubtree(grammar_, before, l.parentGene, w.walk, oldGenes, oldWords);
-    if (l.childGene != none) measureSubtree(grammar_, c, l.childGene, w.walk, newGenes, newWords);
+    if (l.parentGene != none) measureSubtree(grammar_, before, l.parentGene, w.walk, w.walkStack, oldGenes, oldWords);
+    if (l.childGene != none) measureSubtree(grammar_, c, l.childGene, w.walk, w.walkStack, newGenes, newWords);
     if (std::uint64_t(before.genes) + newGenes != std::uint64_t(c.genes) + oldGenes ||
         std::uint64_t(before.size()) + newWords != std::uint64_t(c.size()) + oldWords)
         return false;
@@ -117,7 +111,10 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
     counts.hit = std::uint64_t(std::int64_t(parent.counts.hit) + delta.hit);
     counts.avoided = std::uint64_t(std::int64_t(parent.counts.avoided) + delta.avoided);
     w.status = DeriveStatus::Complete;
-    if (checksIncremental()) checkAgainstFull(c, w, counts);
+    if (checksIncremental()) {
+        derive(grammar_, c, w.checkGeometry, w.checkDerive, maxPrimitives());  // no memo
+        checkAgainstFull(w.checkGeometry, w, counts);
+    }
     w.made = keep(c, std::size_t(primitives), std::size_t(tasks), counts, &coverage);
     return true;
 }

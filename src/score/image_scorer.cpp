@@ -92,16 +92,15 @@ void ImageScorer::drawCached(Workspace& w) const {
     if (w.cache->full()) noteCacheFull();
 }
 
-void ImageScorer::checkAgainstFull(const Chromosome& c, Workspace& w, const SilhouetteCounts& counts) const {
-    derive(grammar_, c, w.checkGeometry, w.checkDerive, maxPrimitives());  // no memo
-    w.raster.add(w.checkGeometry);
+void ImageScorer::checkAgainstFull(const Geometry& geometry, Workspace& w, const SilhouetteCounts& counts) const {
+    w.raster.add(geometry);
     const SilhouetteCounts full = w.raster.score(target_);
     if (full.covered != counts.covered || full.hit != counts.hit || full.avoided != counts.avoided)
         throw IncrementalMismatch("incremental image scoring differs from the full one: covered/hit/avoided " +
                                   std::to_string(counts.covered) + "/" + std::to_string(counts.hit) + "/" +
                                   std::to_string(counts.avoided) + " against " + std::to_string(full.covered) + "/" +
                                   std::to_string(full.hit) + "/" + std::to_string(full.avoided) + " (" +
-                                  std::to_string(w.checkGeometry.primitives.size()) + " primitives)");
+                                  std::to_string(geometry.primitives.size()) + " primitives)");
 }
 
 void ImageScorer::modelMask(const Chromosome& c, Workspace& w, std::vector<std::uint8_t>& mask) const {

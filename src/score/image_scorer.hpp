@@ -53,7 +53,7 @@ public:
         std::vector<WordMask> gathered;
         std::vector<std::uint64_t> merged;  ///< one word per raster word, zero between merges
         std::vector<SubtreeStart> starts;     ///< fromParent: where the changed subtree starts
-        std::vector<std::uint32_t> walk;      ///< fromParent: genes of a subtree being measured
+        std::vector<std::uint32_t> walk, walkStack;  ///< fromParent: genes of a subtree being measured
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
@@ -92,7 +92,7 @@ public:
         if (throughCache(w.cache, w.geometry.primitives.size())) {
             drawCached(w);
             counts = w.raster.score(target_);
-            if (checksIncremental()) checkAgainstFull(c, w, counts);
+            if (checksIncremental()) checkAgainstFull(w.geometry, w, counts);
         } else {
             w.raster.add(w.geometry);
             counts = w.raster.score(target_);
@@ -112,8 +112,8 @@ public:
 private:
     /// Draw w.geometry, replaying the rows of primitives found in w.cache and keeping the others'.
     void drawCached(Workspace& w) const;
-    /// Score `c` the full way (no memo, no cache); throw IncrementalMismatch unless it gives `counts`.
-    void checkAgainstFull(const Chromosome& c, Workspace& w, const SilhouetteCounts& counts) const;
+    /// Draw `geometry` the full way (no cache); throw IncrementalMismatch unless it gives `counts`.
+    void checkAgainstFull(const Geometry& geometry, Workspace& w, const SilhouetteCounts& counts) const;
 
     // Scoring from the parent (image_from_parent.cpp).
     /// Score `c`, whose lineage names one changed subtree of `parent`, from the parent's
