@@ -7,7 +7,8 @@
 // lineage, so the incremental mode scores it from its parent where its operator named the change). Each benchmark iteration makes a
 // fresh Evaluator on one thread, lets it score the population of generation FROM (the children's
 // parents, not timed, so a cache starts as warm as in the run), then times scoring the 50
-// generations' children in order. Counters: evals/s and s/child; duplicates, the share of
+// generations' children in order, dropping each generation's models once the next one is
+// scored, as a run does. Counters: evals/s and s/child; duplicates, the share of
 // children the memo answered; from_parent, the share scored from the parent's counts;
 // model_bytes/individual, what the last generation's models keep for their children; cache_MB, the cache memory written after the 50 generations (one
 // thread: an island's figure is this times its threads), and that per individual of the population. Both modes score exactly the same chromosomes; the fitnesses
@@ -15,6 +16,7 @@
 //
 //   cd build && ninja bench_incremental && ./bench/bench_incremental --benchmark_repetitions=5
 //   SHAPEVO_BENCH_FROM=200 ./bench/bench_incremental     (children of earlier generations)
+//   SHAPEVO_BENCH_KEEP_MODELS=1 ./bench/bench_incremental (every generation's models kept to the end)
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -30,6 +32,7 @@
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 #include "score/image_model.hpp"
+#include "score/image_scorer.hpp"
 #include "search/search_methods.hpp"
 
 namespace {
@@ -91,17 +94,18 @@ Recording& recording(int scene) {
 /// Bytes the models of `pop` hold for their children (score/image_model.hpp): chromosome
 /// copies and coverage counts, each shared block once.
 std::size_t heldByModels(const Population& pop, const Scorer& scorer) {
+    const auto* image = dynamic_cast<const ImageScorer*>(&scorer);  // (volume scorers keep no models)
     std::set<const void*> seen;
     std::size_t bytes = 0;
     for (const Chromosome& c : pop.individuals) {
-        const EvaluatedModel* m = c.lineage.parent.get();
-        if (!m || m->maker != &scorer || !seen.insert(m).second) continue;
-        const auto& model = static_cast<const ImageModel&>(*m);
+        const EvaluatedModel* m0 = c.lineage.parent.get();
+        if (!image || !m0 || m0->maker != &image->models() || !seen.insert(m0).second) continue;
+        const auto* m = static_cast<const ImageModel*>(m0);
+        const ImageModel& model = *m;
         bytes += sizeof(ImageModel) + model.chromosome.words.capacity() * sizeof(std::uint32_t);
-        if (const CoverageCounts* counts = model.coverageIfMade())
-            counts->forEachBlock([&](const void* block, std::size_t n) {
-                if (seen.insert(block).second) bytes += n;
-            });
+        model.forEachBlockHeld([&](const void* block, std::size_t n) {
+            if (seen.insert(block).second) bytes += n;
+        });
     }
     return bytes;
 }
@@ -114,6 +118,8 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
     state.SetLabel(std::string(kScenes[scene]) + (incremental ? " incremental" : " full") + ", children of generations " +
                    std::to_string(fromGeneration() + 1) + "-" + std::to_string(fromGeneration() + kRecordedGenerations));
     std::vector<Population> work;
+    // SHAPEVO_BENCH_KEEP_MODELS=1: keep every generation's models to the end (as before 2026-12-06)
+    const bool keepModels = std::getenv("SHAPEVO_BENCH_KEEP_MODELS") && std::string(std::getenv("SHAPEVO_BENCH_KEEP_MODELS")) == "1";
     std::uint64_t reused = 0, fromParent = 0;
     std::size_t modelBytes = 0;
     std::size_t cacheBytes = 0;
@@ -125,7 +131,12 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
         evaluator.evaluate(parents);  // warm: the parents' primitives are in the cache
         const std::uint64_t reusedBefore = evaluator.reused();
         state.ResumeTiming();
-        for (Population& p : work) evaluator.evaluate(p, r.elite);
+        for (std::size_t k = 0; k < work.size(); ++k) {
+            evaluator.evaluate(work[k], r.elite);
+            // A run drops a generation's models once the next one has replaced it (and reuses them).
+            if (k > 0 && !keepModels)
+                for (Chromosome& c : work[k - 1].individuals) c.lineage = {};
+        }
         state.PauseTiming();
         reused = evaluator.reused() - reusedBefore;
         fromParent = evaluator.scoredFromParent();

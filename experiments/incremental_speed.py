@@ -11,9 +11,15 @@ thread each), seeds 1-5, each with the switch off and on, for --seconds of wall 
 each mode the median (min-max) over seeds of the seconds until the best model's silhouette IoU
 (curve.csv's iou column) first reached 0.95 and 0.98 ("-" if it did not).
 
+With --memory: memory instead. Every shipped scene (configs/*.toml) runs once with its defaults
+(incremental scoring on) on one thread for --seconds; summary.json gives the island's caches
+(cache_bytes), what its models keep for their children (model_bytes), the process's peak
+resident size and the population: reported per island and per individual.
+
 usage: experiments/incremental_speed.py [--bin build/shapevo] [--reps 5]
            [--scenes tree-logo:1500 tree-sketch:1200 spaceship:50 ...] [--csv FILE]
        experiments/incremental_speed.py --quality [--seconds 30] [--seeds 5]
+       experiments/incremental_speed.py --memory [--seconds 20] [--csv FILE]
 A scene is CONFIG[:GENERATIONS] (configs/CONFIG.toml; GENERATIONS overrides ga.generations).
 """
 import argparse
@@ -86,6 +92,30 @@ def quality(a):
     return rows
 
 
+def memory(a):
+    rows = []
+    print("| scene | generations | population | caches | models | per individual (caches + models) | peak resident |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    configs = sorted(f[:-5] for f in os.listdir(os.path.join(ROOT, "configs")) if f.endswith(".toml"))
+    with tempfile.TemporaryDirectory() as tmp:
+        for config in configs:
+            out = os.path.join(tmp, config)
+            subprocess.run([a.bin, "run", os.path.join(ROOT, "configs", config + ".toml"), "-q", "--threads", "1",
+                            "--set", "run.wall_time=%g" % a.seconds, "--set", "ga.generations=1000000000",
+                            "--set", "checkpoint.seconds=0", "--set", "checkpoint.interval=1000000", "--out", out],
+                           check=True, stdout=subprocess.DEVNULL)
+            with open(os.path.join(out, "summary.json")) as f:
+                s = json.load(f)
+            n = max(1, s["population"])
+            row = {"scene": config, "generations": s["generations"], "population": s["population"],
+                   "cache_bytes": s["cache_bytes"], "model_bytes": s["model_bytes"], "max_rss_bytes": s["max_rss_bytes"]}
+            rows.append(row)
+            print("| %s | %d | %d | %.1f MB | %.1f MB | %.0f + %.0f KB | %.0f MB |" % (
+                config, s["generations"], s["population"], s["cache_bytes"] / 1e6, s["model_bytes"] / 1e6,
+                s["cache_bytes"] / n / 1e3, s["model_bytes"] / n / 1e3, s["max_rss_bytes"] / 1e6), flush=True)
+    return rows
+
+
 def spread(values, fmt):
     return (fmt + " (" + fmt + "-" + fmt + ")") % (statistics.median(values), min(values), max(values))
 
@@ -99,9 +129,10 @@ def main():
     ap.add_argument("--quality", action="store_true")
     ap.add_argument("--seconds", type=float, default=30)
     ap.add_argument("--seeds", type=int, default=5)
+    ap.add_argument("--memory", action="store_true")
     a = ap.parse_args()
-    if a.quality:
-        rows = quality(a)
+    if a.quality or a.memory:
+        rows = quality(a) if a.quality else memory(a)
         if a.csv:
             with open(a.csv, "w", newline="") as f:
                 w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))

@@ -73,6 +73,10 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"wait_share_outside_checkpoints_mean\": " + formatDouble(s.waitShareOutsideCheckpointsMean) + ",\n";
     t += "  \"non_finite_models\": " + std::to_string(s.nonFiniteModels) + ",\n";
     t += "  \"truncated_models\": " + std::to_string(s.truncatedModels) + ",\n";
+    t += "  \"population\": " + std::to_string(s.population) + ",\n";
+    t += "  \"cache_bytes\": " + std::to_string(s.cacheBytes) + ",\n";
+    t += "  \"model_bytes\": " + std::to_string(s.modelBytes) + ",\n";
+    t += "  \"max_rss_bytes\": " + std::to_string(s.maxRssBytes) + ",\n";
     if (!s.changedInputs.empty()) {
         t += "  \"changed_inputs\": [";
         for (std::size_t i = 0; i < s.changedInputs.size(); ++i) t += (i ? ", " : "") + jsonString(s.changedInputs[i]);

@@ -32,6 +32,10 @@ struct RunSummary {
     std::vector<std::string> changedInputs;  ///< inputs accepted with --allow-changed-inputs on resume
     std::uint64_t nonFiniteModels = 0;  ///< evaluations with a non-finite or absurd coordinate (worst fitness)
     std::uint64_t truncatedModels = 0;  ///< evaluations that reached genome.max_primitives
+    /// Memory at the end, the largest rank's: incremental scoring's caches (all its threads),
+    /// what its models keep for their children, and the process's peak resident size.
+    std::uint64_t cacheBytes = 0, modelBytes = 0, maxRssBytes = 0;
+    std::size_t population = 0;  ///< individuals per island
 };
 
 /// curve.csv: generation,seconds,evaluations,best,mean,std,iou (one row per generation; iou, the

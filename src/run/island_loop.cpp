@@ -13,6 +13,7 @@
 #include <ostream>
 #include <thread>
 
+#include "base/peak_memory.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "checkpoint/run_identity.hpp"
 #include "run/diagnostics_log.hpp"
@@ -353,7 +354,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         ga.initialize(evaluator);
         stop = afterGeneration();
     }
-    bool saidCacheFull = false;
+    bool saidCacheFull = false, saidModelsFull = false;
     while (!stop) {
         if (ga.generation() < s.ga.generations) {
             ga.step(evaluator);
@@ -362,6 +363,12 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
                 log << "shapevo: rank " << mpi.rank() << ": incremental scoring has filled score.cache_mb = " << s.incremental.cacheMb
                     << " at generation " << ga.generation()
                     << "; the primitives it cannot keep, and models too large for it, are drawn the full way from now on (results are the same; raise score.cache_mb for speed)\n";
+            }
+            if (!saidModelsFull && scene.scorer().modelsFull()) {
+                saidModelsFull = true;
+                log << "shapevo: rank " << mpi.rank() << ": the models kept for scoring children from their parents have reached score.cache_mb = "
+                    << s.incremental.cacheMb << " at generation " << ga.generation()
+                    << "; the largest are not kept from now on, and their children are scored from the caches (results are the same; raise score.cache_mb for speed)\n";
             }
             stop = afterGeneration();
         } else {  // async only: done with its generations, waiting for the others (the run's end)
@@ -392,8 +399,15 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
     mpi.sum(totals);
     // waiting over the wall time: all of it, and the part outside checkpoints (async mode's promise)
     const double ownWait = waitShare(), ownWaitOutside = ownWait - checkpointWaited / std::max(1e-9, since(start));
-    std::vector<double> overhead{migrationSeconds, checkpointSeconds, bestIoU.seconds(), ownWait, ownWaitOutside};
-    mpi.max(overhead);  // the slowest rank's share is what the run waited for
+    std::vector<double> overhead{migrationSeconds,
+                                 checkpointSeconds,
+                                 bestIoU.seconds(),
+                                 ownWait,
+                                 ownWaitOutside,
+                                 double(evaluator.cacheBytesUsed()),
+                                 double(scene.scorer().modelBytesInUse()),
+                                 double(peakResidentBytes())};
+    mpi.max(overhead);  // the slowest rank's share is what the run waited for; the largest rank's memory
     std::vector<double> waitSum{ownWait, ownWaitOutside};
     mpi.sum(waitSum);
     result.bestFitness = bestFitness;
@@ -454,6 +468,10 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.waitShareMean = waitSum[0] / islands;
         sum.waitShareOutsideCheckpointsMax = overhead[4];
         sum.waitShareOutsideCheckpointsMean = waitSum[1] / islands;
+        sum.cacheBytes = std::uint64_t(overhead[5]);
+        sum.modelBytes = std::uint64_t(overhead[6]);
+        sum.maxRssBytes = std::uint64_t(overhead[7]);
+        sum.population = ga.population().size();
         writeSummaryJson(sum, folder + "/summary.json");
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];

@@ -16,45 +16,58 @@ void tally(CoverageCounts::Delta& delta, std::int64_t sign, std::uint64_t pixels
 }
 }  // namespace
 
-CoverageCounts::Block CoverageCounts::makeBlock(std::uint32_t planes) {
-    Block b = std::make_shared<std::uint64_t[]>(1 + kBlockWords * (1 + planes));  // zeroed
-    b[0] = planes;
-    return b;
+void CoverageCounts::overlay(const CoverageCounts& base) {
+    if (base.base_) throw std::logic_error("CoverageCounts::overlay: the base is an overlay itself");
+    blocks_.assign(base.blocks_.size(), CoverageBlock());
+    pool_ = base.pool_;
+    base_ = &base;
 }
 
-std::uint64_t* CoverageCounts::writable(std::size_t b) {
-    Block& p = blocks_[b];
-    if (!p) {
-        p = makeBlock(1);
-    } else if (p.use_count() > 1) {
-        Block copy = std::make_shared_for_overwrite<std::uint64_t[]>(1 + kBlockWords * (1 + planesOf(p)));
-        std::memcpy(copy.get(), p.get(), (1 + kBlockWords * (1 + planesOf(p))) * sizeof(std::uint64_t));
+void CoverageCounts::flatten() {
+    if (!base_) return;
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+        if (!blocks_[b]) blocks_[b] = base_->blocks_[b];
+    base_ = nullptr;
+}
+
+const CoverageBlock& CoverageCounts::writable(std::size_t b) {
+    CoverageBlock& p = blocks_[b];
+    const CoverageBlock& from = p || !base_ ? p : base_->blocks_[b];  // (an overlay's first write: the base's)
+    if (!from) {
+        p = CoverageBlock::make(pool_, 1, true);
+    } else if (&from != &p || p.shared()) {
+        CoverageBlock copy = CoverageBlock::make(pool_, from.planes(), false);
+        std::memcpy(copy.cells(), from.cells(), kBlockWords * (1 + from.planes()) * sizeof(std::uint64_t));
         p = std::move(copy);
     }
-    return p.get();
+    return p;
 }
 
 void CoverageCounts::grow(std::size_t b) {
-    const Block& old = blocks_[b];
-    const std::uint32_t from = planesOf(old), to = from + 1;
-    if (to > 32) throw std::logic_error("CoverageCounts: a pixel covered more than 2^32 times");
-    Block block = makeBlock(to);
-    for (std::size_t w = 0; w < kBlockWords; ++w)
-        std::memcpy(cell(block, w), cell(old, w), (1 + from) * sizeof(std::uint64_t));
+    const CoverageBlock& old = blocks_[b];
+    const std::uint32_t from = old.planes(), to = from + 1;
+    if (to > CoverageBlock::kMaxPlanes) throw std::logic_error("CoverageCounts: a pixel covered more than 2^32 times");
+    CoverageBlock block = CoverageBlock::make(pool_, to, false);
+    for (std::size_t w = 0; w < kBlockWords; ++w) {
+        std::memcpy(block.cell(w), old.cell(w), (1 + from) * sizeof(std::uint64_t));
+        block.cell(w)[to] = 0;
+    }
     blocks_[b] = std::move(block);
 }
 
 void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
     std::size_t at = SIZE_MAX;  // the block being written (words come mostly in order)
     std::uint64_t* block = nullptr;
+    std::uint32_t planes = 0;
     for (const WordMask& m : words) {
         if (m.index / kBlockWords != at) {
             at = m.index / kBlockWords;
-            block = writable(at);
+            const CoverageBlock& b = writable(at);
+            block = b.cells();
+            planes = b.planes();
         }
-        std::uint32_t planes = std::uint32_t(block[0]);
         const std::size_t w = m.index % kBlockWords;
-        std::uint64_t* c = block + 1 + w * (1 + planes);
+        std::uint64_t* c = block + w * (1 + planes);
         const std::uint64_t mask = m.mask();
         tally(delta, 1, mask & ~c[0], m.index, target);
         c[0] |= mask;
@@ -66,9 +79,9 @@ void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& tar
         }
         if (carry) {
             grow(at);
-            block = blocks_[at].get();
-            planes = std::uint32_t(block[0]);
-            block[1 + w * (1 + planes) + planes] = carry;
+            block = blocks_[at].cells();
+            planes = blocks_[at].planes();
+            block[w * (1 + planes) + planes] = carry;
         }
     }
 }
@@ -76,13 +89,15 @@ void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& tar
 void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
     std::size_t at = SIZE_MAX;
     std::uint64_t* block = nullptr;
+    std::uint32_t planes = 0;
     for (const WordMask& m : words) {
         if (m.index / kBlockWords != at) {
             at = m.index / kBlockWords;
-            block = writable(at);
+            const CoverageBlock& b = writable(at);
+            block = b.cells();
+            planes = b.planes();
         }
-        const std::uint32_t planes = std::uint32_t(block[0]);
-        std::uint64_t* c = block + 1 + (m.index % kBlockWords) * (1 + planes);
+        std::uint64_t* c = block + (m.index % kBlockWords) * (1 + planes);
         const std::uint64_t mask = m.mask();
         if (mask & ~c[0]) throw std::logic_error("CoverageCounts::remove: pixels that were not added");
         std::uint64_t borrow = mask, any = 0;
@@ -101,21 +116,21 @@ void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& 
 }
 
 std::uint64_t CoverageCounts::covered(std::size_t i) const {
-    const Block& p = blocks_[i / kBlockWords];
-    return p ? cell(p, i % kBlockWords)[0] : 0;
+    const CoverageBlock& p = blockAt(i / kBlockWords);
+    return p ? p.cell(i % kBlockWords)[0] : 0;
 }
 
 std::uint32_t CoverageCounts::count(std::size_t i, int bit) const {
-    const Block& p = blocks_[i / kBlockWords];
+    const CoverageBlock& p = blockAt(i / kBlockWords);
     if (!p) return 0;
-    const std::uint64_t* c = cell(p, i % kBlockWords);
+    const std::uint64_t* c = p.cell(i % kBlockWords);
     std::uint32_t n = 0;
-    for (std::uint32_t k = 0; k < planesOf(p); ++k) n |= std::uint32_t(c[1 + k] >> bit & 1) << k;
+    for (std::uint32_t k = 0; k < p.planes(); ++k) n |= std::uint32_t(c[1 + k] >> bit & 1) << k;
     return n;
 }
 
 std::size_t CoverageCounts::bytes() const {
-    std::size_t n = blocks_.size() * sizeof(Block);
+    std::size_t n = handleBytes();
     forEachBlock([&](const void*, std::size_t bytes) { n += bytes; });
     return n;
 }

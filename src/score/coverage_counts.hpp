@@ -4,8 +4,8 @@
 //
 // Layout: per 64-pixel word of the picture, the counts as bit planes (plane p holds bit p of the
 // 64 counts) after one plane of the pixels whose count is above zero; words in blocks of
-// kBlockWords, each block with as many planes as its largest count needs. A block no primitive
-// touched is absent (all zero).
+// kBlockWords (score/coverage_block.hpp), each block with as many planes as its largest count
+// needs. A block no primitive touched is absent (all zero).
 //
 // Promises:
 //  - Exact: after add()s and remove()s (each remove() of one primitive's words that an add()
@@ -14,13 +14,20 @@
 //  - Shared: a copy holds its blocks by reference; add() and remove() copy a block only when it
 //    is shared and written to, so a child that changes a few primitives copies a few blocks.
 //    Copies may be read and written on different threads (each written by one thread).
+//  - Pooled: with a CoverageBlockPool, every block comes from it and goes back to it, and a
+//    copy assigned over another keeps that one's capacity (no allocation once warm).
+//  - Overlaid: overlay(base) makes a picture equal to `base` that holds none of base's blocks
+//    (no reference is taken on them, so nothing of base is touched until written): a block is
+//    copied from base when first written, read from base until then. `base` must outlive the
+//    overlay and not change; flatten() then takes references on the blocks still read from it,
+//    after which base may go.
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
+#include "score/coverage_block.hpp"
 #include "score/image_target.hpp"
 #include "score/silhouette_raster.hpp"
 
@@ -28,14 +35,33 @@ namespace shapevo {
 
 class CoverageCounts {
 public:
-    static constexpr std::size_t kBlockWords = 128;
+    static constexpr std::size_t kBlockWords = CoverageBlock::kPictureWords;
     struct Delta {
         std::int64_t covered = 0, hit = 0, avoided = 0;
     };
 
     CoverageCounts() = default;
-    /// A picture of `words` 64-pixel words, all zero.
-    explicit CoverageCounts(std::size_t words) : blocks_((words + kBlockWords - 1) / kBlockWords) {}
+    /// A picture of `words` 64-pixel words, all zero, its blocks from `pool` (null: the heap).
+    explicit CoverageCounts(std::size_t words, CoverageBlockPool* pool = nullptr)
+        : blocks_((words + kBlockWords - 1) / kBlockWords), pool_(pool) {}
+    /// All zero again: `words` 64-pixel words, blocks from `pool`, keeping the capacity.
+    void reset(std::size_t words, CoverageBlockPool* pool) {
+        blocks_.assign((words + kBlockWords - 1) / kBlockWords, CoverageBlock());
+        pool_ = pool;
+        base_ = nullptr;
+    }
+    /// Equal to `base` (which must not be an overlay itself), holding none of its blocks yet.
+    void overlay(const CoverageCounts& base);
+    /// Hold every block itself (the ones still read from the base by reference): no base after.
+    void flatten();
+    bool overlaid() const { return base_ != nullptr; }
+    /// Hold no blocks, keeping the capacity.
+    void clear() {
+        blocks_.clear();
+        base_ = nullptr;
+    }
+    /// Bytes of its block handles (their capacity).
+    std::size_t handleBytes() const { return blocks_.capacity() * sizeof(CoverageBlock); }
 
     /// One primitive's words (SilhouetteRaster::wordMasks: each word index at most once).
     void add(std::span<const WordMask> words, const ImageTarget& target, Delta& delta);
@@ -46,29 +72,29 @@ public:
     std::uint64_t covered(std::size_t i) const;
     /// The count of pixel `bit` of word `i` (for tests).
     std::uint32_t count(std::size_t i, int bit) const;
-    /// Bytes of the blocks it holds (shared ones included whole).
+    /// Bytes of its handles and of the blocks it holds (shared ones included whole).
     std::size_t bytes() const;
     std::size_t words() const { return blocks_.size() * kBlockWords; }
-    /// Call f(key, bytes) for every block it holds: equal keys are one block shared (memory counts).
+    /// Call f(key, bytes) for every block it holds (an overlay: its own, not its base's): equal
+    /// keys are one block shared (memory counts).
     template <class F>
     void forEachBlock(F&& f) const {
-        for (const auto& p : blocks_)
-            if (p) f(static_cast<const void*>(p.get()), (2 + kBlockWords * (1 + planesOf(p))) * sizeof(std::uint64_t));
+        for (const CoverageBlock& b : blocks_)
+            if (b) f(b.key(), b.bytes());
     }
 
 private:
-    /// A block: word 0 its plane count P, then per word of the picture 1 + P words (the
-    /// above-zero plane, then the planes), in one allocation.
-    using Block = std::shared_ptr<std::uint64_t[]>;
-    static std::uint32_t planesOf(const Block& b) { return std::uint32_t(b[0]); }
-    static std::uint64_t* cell(const Block& b, std::size_t w) { return b.get() + 1 + w * (1 + planesOf(b)); }
-    static Block makeBlock(std::uint32_t planes);
     /// Block `b`, made or copied so that only this picture holds it.
-    std::uint64_t* writable(std::size_t b);
+    const CoverageBlock& writable(std::size_t b);
     /// Give block `b` (held only here) one more plane (all zero).
     void grow(std::size_t b);
 
-    std::vector<Block> blocks_;
+    /// Block `b` as read: its own, or its base's.
+    const CoverageBlock& blockAt(std::size_t b) const { return blocks_[b] || !base_ ? blocks_[b] : base_->blocks_[b]; }
+
+    std::vector<CoverageBlock> blocks_;
+    CoverageBlockPool* pool_ = nullptr;
+    const CoverageCounts* base_ = nullptr;  ///< an overlay's base (null: none)
 };
 
 }  // namespace shapevo

@@ -5,6 +5,7 @@
 // gene whose own derivation changed, geometry/derive.hpp findSubtreeStarts), and a derivation is
 // Complete exactly when its totals of primitives and tasks are within the limits.
 #include <algorithm>
+#include <optional>
 
 #include "genome/regrow.hpp"
 #include "score/image_scorer.hpp"
@@ -37,21 +38,26 @@ void ImageScorer::eachPrimitivesWords(Workspace& w, Apply&& apply) const {
 }
 
 std::shared_ptr<const EvaluatedModel> ImageScorer::keep(const Chromosome& c, std::size_t primitives, std::size_t tasks,
-                                                        const SilhouetteCounts& counts, CoverageCounts* coverage) const {
-    auto m = std::make_shared<ImageModel>();
-    m->maker = this;
-    m->chromosome.words = c.words;
+                                                        const SilhouetteCounts& counts, CoverageCounts* overlay,
+                                                        const std::shared_ptr<const EvaluatedModel>& parent) const {
+    // (its coverage counts, if still to be made, are reserved when a child asks for them)
+    const ModelStore::Reservation room = models_->reserve(ModelStore::estimate(c.size()));
+    if (!room) return nullptr;
+    std::shared_ptr<ImageModel> m = models_->take();
+    m->maker = models_.get();  // (outlives every model it made, unlike the scorer)
+    m->chromosome.words.assign(c.words.begin(), c.words.end());
     m->chromosome.genes = c.genes;
     m->primitives = primitives;
     m->tasks = tasks;
     m->counts = counts;
-    if (coverage) m->setCoverage(std::move(*coverage));
+    if (overlay) m->setOverlay(*overlay, parent);
+    models_->count(*m);
     return m;
 }
 
 void ImageScorer::makeCoverage(const ImageModel& m, Workspace& w, CoverageCounts& out) const {
     derive(grammar_, m.chromosome, w.geometry, w.derive, maxPrimitives());
-    out = CoverageCounts(w.raster.bits().size());
+    out.reset(w.raster.bits().size(), &models_->blocks());
     CoverageCounts::Delta delta;
     eachPrimitivesWords(w, [&](std::span<const WordMask> words) { out.add(words, target_, delta); });
     w.raster.clear();
@@ -78,8 +84,21 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
     const DeriveStatus found = l.childGene != none ? findSubtreeStarts(grammar_, c, l.childGene, w.derive, w.starts, maxPrimitives())
                                                    : findSubtreeStarts(grammar_, before, l.parentGene, w.derive, w.starts, maxPrimitives());
     if (found != DeriveStatus::Complete) return false;
-    // The parent's counts, then out with the old subtree and in with the new one, each start in turn.
-    CoverageCounts coverage = parent.coverage([&](CoverageCounts& out) { makeCoverage(parent, w, out); });
+    // The parent's counts (made now if no child asked before, and there is room for them), then
+    // out with the old subtree and in with the new one, each start in turn.
+    // The child's counts: an overlay on the parent's, which copies only the blocks it writes.
+    CoverageCounts& coverage = w.coverage;
+    {
+        std::optional<ModelStore::Reservation> room;
+        if (!parent.coverageAtHand()) {
+            room.emplace(models_->reserve(models_->estimateCoverage(w.raster.bits().size())));
+            if (!*room) return false;
+        }
+        coverage.overlay(parent.coverage([&](CoverageCounts& out) {
+            makeCoverage(parent, w, out);
+            models_->noteCoverage(out.bytes());
+        }));
+    }
     CoverageCounts::Delta delta;
     std::int64_t primitives = std::int64_t(parent.primitives), tasks = std::int64_t(parent.tasks);
     bool complete = true;
@@ -104,8 +123,10 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
         }
     }
     w.raster.clear();
-    if (!complete || primitives > std::int64_t(maxPrimitives()) || tasks > std::int64_t(maxDeriveTasks(maxPrimitives())))
+    if (!complete || primitives > std::int64_t(maxPrimitives()) || tasks > std::int64_t(maxDeriveTasks(maxPrimitives()))) {
+        coverage.clear();
         return false;
+    }
     counts = SilhouetteCounts{};
     counts.covered = std::uint64_t(std::int64_t(parent.counts.covered) + delta.covered);
     counts.hit = std::uint64_t(std::int64_t(parent.counts.hit) + delta.hit);
@@ -115,7 +136,8 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
         derive(grammar_, c, w.checkGeometry, w.checkDerive, maxPrimitives());  // no memo
         checkAgainstFull(w.checkGeometry, w, counts);
     }
-    w.made = keep(c, std::size_t(primitives), std::size_t(tasks), counts, &coverage);
+    w.made = keep(c, std::size_t(primitives), std::size_t(tasks), counts, &coverage, c.lineage.parent);
+    coverage.clear();  // (the blocks of the model kept, or of none)
     return true;
 }
 

@@ -5,7 +5,10 @@
 // changed subtree is derived and drawn, twice (as it was and as it is), whatever the model's size.
 //
 // Promises: immutable once made, except coverage(), which is made once (thread safe) and never
-// changes after. Holds no lineage itself, so a model never keeps its ancestors alive.
+// changes after. Holds no lineage itself; a model scored from its parent holds that parent (not
+// further ancestors: a parent's coverage is flat before a child overlays it) until its own
+// coverage is first asked for. Models come
+// from a ModelStore (score/model_store.hpp), which clears them for reuse when the last holder goes.
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -21,14 +24,21 @@ struct ImageModel final : EvaluatedModel {
     Chromosome chromosome;  ///< lineage empty
     std::size_t primitives = 0, tasks = 0;  ///< of its derivation, which was Complete
     SilhouetteCounts counts;
+    std::size_t countedBytes = 0;  ///< what its ModelStore counted for it
 
-    /// The coverage counts, made by `make(CoverageCounts&)` on the first call.
+    /// The coverage counts, on the first call flattened from the overlay on its parent's (see
+    /// setOverlay) or, without one, made by `make(CoverageCounts&)`.
     template <class Make>
     const CoverageCounts& coverage(Make&& make) const {
         if (!made_.load(std::memory_order_acquire)) {
             std::lock_guard<std::mutex> lock(mutex_);
             if (!made_.load(std::memory_order_relaxed)) {
-                make(coverage_);
+                if (overlaid_) {
+                    coverage_.flatten();  // a reference on each block it shares with the parent...
+                    parent_.reset();      // ...so the parent may go
+                } else {
+                    make(coverage_);
+                }
                 made_.store(true, std::memory_order_release);
             }
         }
@@ -36,15 +46,41 @@ struct ImageModel final : EvaluatedModel {
     }
     /// The coverage counts if made (null otherwise), for memory counts.
     const CoverageCounts* coverageIfMade() const { return made_.load(std::memory_order_acquire) ? &coverage_ : nullptr; }
-    /// Give it coverage counts already made (before anyone else sees it).
-    void setCoverage(CoverageCounts&& c) {
-        coverage_ = std::move(c);
-        made_.store(true, std::memory_order_relaxed);
+    /// Whether coverage() costs no derivation: made, or an overlay on its parent's.
+    bool coverageAtHand() const { return overlaid_ || made_.load(std::memory_order_acquire); }
+    /// Give it coverage counts that are an overlay on its parent's (the ones `parent` made),
+    /// before anyone else sees it: swapped with its own (cleared) ones, so `c` keeps their
+    /// capacity. It holds the parent until its coverage is first asked for (then flattened), so
+    /// a model that never has children never takes a reference on the parent's blocks.
+    void setOverlay(CoverageCounts& c, std::shared_ptr<const EvaluatedModel> parent) {
+        std::swap(coverage_, c);
+        parent_ = std::move(parent);
+        overlaid_ = true;
+    }
+    /// The blocks it holds itself (an overlay's own), for memory counts; quiet times only.
+    template <class F>
+    void forEachBlockHeld(F&& f) const {
+        if (overlaid_ || made_.load(std::memory_order_acquire)) coverage_.forEachBlock(f);
+    }
+    /// Bytes of its coverage's block handles (their capacity; the blocks are counted apart).
+    std::size_t handleBytes() const { return coverage_.handleBytes(); }
+    /// Empty again, keeping the capacity of its buffers (ModelStore, when its last holder goes).
+    void clear() {
+        chromosome.words.clear();
+        chromosome.genes = 0;
+        primitives = tasks = 0;
+        counts = SilhouetteCounts{};
+        coverage_.clear();
+        parent_.reset();
+        overlaid_ = false;
+        made_.store(false, std::memory_order_relaxed);
     }
 
 private:
     mutable std::mutex mutex_;
     mutable std::atomic<bool> made_{false};
+    bool overlaid_ = false;  ///< set before anyone else sees it
+    mutable std::shared_ptr<const EvaluatedModel> parent_;  ///< an overlay's base, until flattened
     mutable CoverageCounts coverage_;
 };
 

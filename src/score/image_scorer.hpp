@@ -12,6 +12,7 @@
 #include "score/image_fitness.hpp"
 #include "score/image_model.hpp"
 #include "score/image_target.hpp"
+#include "score/model_store.hpp"
 #include "score/primitive_cache.hpp"
 #include "score/scorer.hpp"
 #include "score/silhouette_raster.hpp"
@@ -54,6 +55,8 @@ public:
         std::vector<std::uint64_t> merged;  ///< one word per raster word, zero between merges
         std::vector<SubtreeStart> starts;     ///< fromParent: where the changed subtree starts
         std::vector<std::uint32_t> walk, walkStack;  ///< fromParent: genes of a subtree being measured
+        std::shared_ptr<ModelStore> models;  ///< the scorer's (its blocks' pool outlives `coverage`)
+        CoverageCounts coverage;  ///< fromParent: the parent's coverage counts, becoming the child's
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
@@ -65,7 +68,10 @@ public:
     }
 
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
-        return std::make_unique<Workspace>(camera_, cacheBytes());
+        models_->setBound(cacheBytes());  // what the models may take: score.cache_mb per island
+        auto w = std::make_unique<Workspace>(camera_, cacheBytes());
+        w->models = models_;
+        return w;
     }
     std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const override {
         return std::make_unique<Workspace>(camera_, 0);
@@ -77,7 +83,7 @@ public:
         w.made.reset();
         SilhouetteCounts counts;
         if (c.lineage.changed() && w.cache) {
-            const auto* parent = c.lineage.parent->maker == this ? static_cast<const ImageModel*>(c.lineage.parent.get()) : nullptr;
+            const auto* parent = c.lineage.parent->maker == models_.get() ? static_cast<const ImageModel*>(c.lineage.parent.get()) : nullptr;
             if (parent && fromParent(c, *parent, w, counts)) {
                 ++w.fromParent;
                 if (countsOut) *countsOut = counts;
@@ -107,6 +113,10 @@ public:
 
     const Camera& camera() const { return camera_; }
     const ImageTarget& target() const { return target_; }
+    /// Where its models come from, and the memory they take (ModelStore::bytesInUse).
+    const ModelStore& models() const { return *models_; }
+    bool modelsFull() const override { return models_->full(); }
+    std::size_t modelBytesInUse() const override { return models_->bytesInUse(); }
     const Grammar& grammar() const override { return grammar_; }
 
 private:
@@ -127,9 +137,12 @@ private:
     /// caller clears.
     template <class Apply>
     void eachPrimitivesWords(Workspace& w, Apply&& apply) const;
-    /// What a Complete model leaves for its children (its coverage counts made when first asked for).
+    /// What a Complete model leaves for its children (its coverage counts: `overlay`, on the
+    /// counts of `parent`, swapped in, or made when first asked for), or null if the models'
+    /// bound leaves no room for it.
     std::shared_ptr<const EvaluatedModel> keep(const Chromosome& c, std::size_t primitives, std::size_t tasks,
-                                               const SilhouetteCounts& counts, CoverageCounts* coverage = nullptr) const;
+                                               const SilhouetteCounts& counts, CoverageCounts* overlay = nullptr,
+                                               const std::shared_ptr<const EvaluatedModel>& parent = nullptr) const;
     /// The coverage counts of `m`, made by deriving and drawing it whole.
     void makeCoverage(const ImageModel& m, Workspace& w, CoverageCounts& out) const;
 
@@ -137,6 +150,7 @@ private:
     Camera camera_;
     const ImageTarget& target_;
     VolumeFitnessSettings settings_;
+    std::shared_ptr<ModelStore> models_ = ModelStore::make();
 };
 
 /// The silhouette of `geometry` through `camera`, one byte per pixel (rows from the top):

@@ -1,7 +1,9 @@
 // IncrementalSettings: the [score] keys of incremental scoring (Scorer::setIncremental).
 //   score.incremental       = true   reuse subtrees and primitives derived and drawn before (false: derive and draw every one)
 //   score.cache_mb          = 128    the caches' size per evaluation thread, in MiB (half for
-//                                    primitives); past it the oldest are forgotten and drawn again
+//                                    primitives); past it the oldest are forgotten and drawn again.
+//                                    Also the most an island's models may keep for their children
+//                                    (score/model_store.hpp); past it the largest are not kept
 //   score.check_incremental = false  also score every model the full way; stop on any difference
 #pragma once
 #include <cstddef>

@@ -91,6 +91,12 @@ public:
     /// from then on part of the models are drawn the full way. A run says so once.
     bool cacheFull() const { return cacheFull_.load(std::memory_order_relaxed); }
     bool checksIncremental() const { return checkIncremental_; }
+    /// Some model's state for its children (scoring from the parent) was not kept because the
+    /// models of this scorer reached score.cache_mb: its children are scored from the caches
+    /// instead. A run says so once.
+    virtual bool modelsFull() const { return false; }
+    /// Bytes the models of this scorer keep now for their children (0 where it keeps none).
+    virtual std::size_t modelBytesInUse() const { return 0; }
 
     /// genome.max_primitives: derivation stops (Truncated) after this many primitives.
     void setMaxPrimitives(std::size_t n) { maxPrimitives_ = n; }

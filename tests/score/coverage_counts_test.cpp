@@ -1,7 +1,8 @@
 // CoverageCounts (score/coverage_counts.hpp): per-pixel counts as bit planes agree with a
 // brute-force count per pixel after random adds and removes, the deltas with brute-force
 // popcounts against the target, and a copy is not changed by writes to the picture it was
-// copied from (nor the other way round).
+// copied from (nor the other way round); blocks from a pool go back to it and come out again
+// without stale pixels.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -68,7 +69,8 @@ struct Brute {
 
 /// Counts kept both ways, with the deltas CoverageCounts reports.
 struct Tracked {
-    CoverageCounts counts{kWords};
+    explicit Tracked(CoverageBlockPool* pool = nullptr) : counts(kWords, pool) {}
+    CoverageCounts counts;
     Brute brute;
     CoverageCounts::Delta delta;
     void add(const std::vector<WordMask>& words, const ImageTarget& t) {
@@ -114,10 +116,10 @@ TEST(CoverageCounts, AddsAndRemovesAgreeWithABruteForceCountPerPixel) {
     EXPECT_GT(deepest, 32u);  // carries rippled through six planes and more
 }
 
-TEST(CoverageCounts, ACopyKeepsItsPixelsWhileTheOriginalChangesAndTheOtherWayRound) {
-    Rng rng(3);
-    const ImageTarget target = countingTarget(rng);
-    Tracked parent;
+/// A parent of 200 random primitives and a child that shares its blocks and swaps 20 of them,
+/// then the parent goes on: each checked after the other wrote.
+void parentAndChild(Rng& rng, const ImageTarget& target, CoverageBlockPool* pool) {
+    Tracked parent(pool);
     std::vector<std::vector<WordMask>> added;
     for (int k = 0; k < 200; ++k) {
         added.push_back(randomWords(rng));
@@ -134,6 +136,77 @@ TEST(CoverageCounts, ACopyKeepsItsPixelsWhileTheOriginalChangesAndTheOtherWayRou
     expectSame(child.counts, child.brute);
     expectSame(parent.counts, parent.brute);
     EXPECT_EQ(child.delta.covered, child.brute.totals(target).covered);
+}
+
+TEST(CoverageCounts, ACopyKeepsItsPixelsWhileTheOriginalChangesAndTheOtherWayRound) {
+    Rng rng(3);
+    parentAndChild(rng, countingTarget(rng), nullptr);
+}
+
+TEST(CoverageCounts, AnOverlayReadsItsBaseCopiesOnlyWhatItWritesAndOutlivesItOnceFlat) {
+    Rng rng(9);
+    const ImageTarget target = countingTarget(rng);
+    CoverageBlockPool pool(64 << 20);
+    Tracked child(&pool);
+    {
+        Tracked parent(&pool);
+        std::vector<std::vector<WordMask>> added;
+        for (int k = 0; k < 200; ++k) {
+            added.push_back(randomWords(rng));
+            parent.add(added.back(), target);
+        }
+        const std::size_t parentBytes = pool.bytesInUse();
+        child.counts.overlay(parent.counts);  // equal to the parent, holding nothing
+        child.brute = parent.brute;
+        child.delta = parent.delta;
+        EXPECT_TRUE(child.counts.overlaid());
+        expectSame(child.counts, child.brute);
+        EXPECT_EQ(pool.bytesInUse(), parentBytes);
+        child.remove(added[3], target);
+        child.add(randomWords(rng), target);
+        expectSame(child.counts, child.brute);
+        expectSame(parent.counts, parent.brute);  // the parent's blocks were copied, not written
+        EXPECT_GT(pool.bytesInUse(), parentBytes);
+        std::size_t own = 0;
+        child.counts.forEachBlock([&](const void*, std::size_t) { ++own; });
+        EXPECT_LT(own, kWords / CoverageCounts::kBlockWords);  // only the blocks it wrote
+        child.counts.flatten();
+        EXPECT_FALSE(child.counts.overlaid());
+    }  // the parent goes
+    expectSame(child.counts, child.brute);
+    EXPECT_EQ(child.delta.covered, child.brute.totals(target).covered);
+}
+
+TEST(CoverageCounts, BlocksFromAPoolGoBackAndComeOutAgainWithoutStalePixels) {
+    Rng rng(5);
+    const ImageTarget target = countingTarget(rng);
+    CoverageBlockPool pool(64 << 20);
+    parentAndChild(rng, target, &pool);
+    EXPECT_EQ(pool.bytesInUse(), 0u);  // every block came back...
+    const std::size_t kept = pool.bytesKept();
+    EXPECT_GT(kept, 0u);  // ...and is kept for reuse
+    // Other primitives on blocks that still hold the first pictures' pixels: counted as new.
+    std::size_t inUse = 0;
+    {
+        Tracked t(&pool);
+        for (int k = 0; k < 300; ++k) t.add(randomWords(rng), target);
+        expectSame(t.counts, t.brute);
+        inUse = pool.bytesInUse();
+        EXPECT_EQ(t.delta.covered, t.brute.totals(target).covered);
+    }
+    EXPECT_GT(inUse, 0u);
+    EXPECT_LT(pool.bytesKept(), kept + inUse);  // some blocks were reused, not all made anew
+    parentAndChild(rng, target, &pool);
+    EXPECT_EQ(pool.bytesInUse(), 0u);
+}
+
+TEST(CoverageCounts, APoolKeepsNoMoreThanItsBound) {
+    Rng rng(8);
+    const ImageTarget target = countingTarget(rng);
+    CoverageBlockPool pool(10000);  // a few blocks
+    parentAndChild(rng, target, &pool);
+    EXPECT_EQ(pool.bytesInUse(), 0u);
+    EXPECT_LE(pool.bytesKept(), 10000u);
 }
 
 TEST(CoverageCounts, RemovingPixelsNeverAddedIsAProgrammingError) {

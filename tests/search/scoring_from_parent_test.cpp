@@ -5,6 +5,7 @@
 // of those operators are scored that way; a lineage that does not fit the chromosomes is not used.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
+#include "score/image_scorer.hpp"
 #include "search/evaluation_batch.hpp"
 #include "search/evaluator.hpp"
 
@@ -26,13 +28,13 @@ struct ScenePair {
     std::unique_ptr<Scene> incremental, full;
 };
 
-ScenePair loadScenes(const std::string& name) {
+ScenePair loadScenes(const std::string& name, double cacheMb = 16) {
     ScenePair p;
     p.settings = loadConfig(test::sourcePath("configs/" + name + ".toml"));
     p.grammar = std::make_unique<Grammar>(loadGrammar(p.settings.grammarPath, p.settings.grammarAttrs));
     RunSettings on = p.settings, off = p.settings;
     on.incremental.enabled = true;
-    on.incremental.cacheMb = 16;
+    on.incremental.cacheMb = cacheMb;
     off.incremental.enabled = false;
     p.incremental = Scene::load(on, *p.grammar);
     p.full = Scene::load(off, *p.grammar);
@@ -41,11 +43,13 @@ ScenePair loadScenes(const std::string& name) {
 
 class ScoringFromParent : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(ScoringFromParent, ChildrenOfEveryOperatorScoreAsTheFullEvaluationDoes) {
-    ScenePair s = loadScenes(GetParam());
+/// Evolve `s`'s scene 60 generations of 12 children (grow, cut, alter, crossover) on one thread,
+/// each child checked against the full evaluation (then `afterScoring()`); returns how many
+/// children there were.
+std::size_t evolveChecked(ScenePair& s, Evaluator& evaluator, const std::string& name,
+                          const std::function<void()>& afterScoring = [] {}) {
     const Grammar& g = *s.grammar;
     const GenomeLimits limits = s.settings.limits;
-    Evaluator evaluator(s.incremental->scorer(), 1);
     auto fullWorkspace = s.full->scorer().makeWorkspace();
     Rng rng(7);
     GenomeScratch scratch;
@@ -69,9 +73,13 @@ TEST_P(ScoringFromParent, ChildrenOfEveryOperatorScoreAsTheFullEvaluationDoes) {
             }
         }
         evaluator.evaluate(next);
+        afterScoring();
         for (std::size_t i = 0; i < next.size(); ++i) {
             const double full = s.full->scorer().fitness(next.individuals[i], *fullWorkspace);
-            ASSERT_EQ(next.fitness[i], full) << GetParam() << ", generation " << generation << ", child " << i;
+            if (next.fitness[i] != full) {
+                ADD_FAILURE() << name << ", generation " << generation << ", child " << i << ": " << next.fitness[i] << " against " << full;
+                return children;
+            }
             ++children;
         }
         // The better half of both goes on (children compete with their parents).
@@ -81,8 +89,16 @@ TEST_P(ScoringFromParent, ChildrenOfEveryOperatorScoreAsTheFullEvaluationDoes) {
                 pop.fitness[i] = next.fitness[i];
             }
     }
+    return children;
+}
+
+TEST_P(ScoringFromParent, ChildrenOfEveryOperatorScoreAsTheFullEvaluationDoes) {
+    ScenePair s = loadScenes(GetParam());
+    Evaluator evaluator(s.incremental->scorer(), 1);
+    const std::size_t children = evolveChecked(s, evaluator, GetParam());
     // Most children were scored from their parents (the others: a change at the root, a duplicate).
     EXPECT_GT(evaluator.scoredFromParent(), children / 2) << "of " << children;
+    EXPECT_FALSE(s.incremental->scorer().modelsFull());
 }
 
 INSTANTIATE_TEST_SUITE_P(ImageScenes, ScoringFromParent,
@@ -92,6 +108,26 @@ INSTANTIATE_TEST_SUITE_P(ImageScenes, ScoringFromParent,
                              std::replace(n.begin(), n.end(), '-', '_');
                              return n;
                          });
+
+TEST(ScoringFromParentLineage, UnderATightBoundModelsAreNotKeptAndScoresStayExact) {
+    // With room for every model (score.cache_mb = 16), then with score.cache_mb = 1: the tree
+    // sketch's models (their chromosomes and about 50 KB of coverage blocks each, 61 blocks of
+    // 128 words for the 800 x 600 sketch) reach that within the first generations.
+    ScenePair roomy = loadScenes("tree-sketch", 16);
+    Evaluator roomyEvaluator(roomy.incremental->scorer(), 1);
+    evolveChecked(roomy, roomyEvaluator, "tree-sketch");
+    ScenePair s = loadScenes("tree-sketch", 1);
+    Evaluator evaluator(s.incremental->scorer(), 1);
+    const auto& scorer = static_cast<const ImageScorer&>(s.incremental->scorer());
+    std::size_t most = 0;  // bytes the models held, after each generation's scoring
+    evolveChecked(s, evaluator, "tree-sketch", [&] { most = std::max(most, scorer.models().bytesInUse()); });
+    EXPECT_TRUE(scorer.modelsFull());
+    EXPECT_FALSE(roomy.incremental->scorer().modelsFull());
+    EXPECT_GT(most, scorer.models().bound() / 2);
+    EXPECT_LE(most, scorer.models().bound());
+    EXPECT_GT(evaluator.scoredFromParent(), 0u);  // some still were, from the models kept
+    EXPECT_LT(evaluator.scoredFromParent(), roomyEvaluator.scoredFromParent());
+}
 
 TEST(ScoringFromParentLineage, ALineageThatDoesNotFitTheChromosomesIsNotUsed) {
     ScenePair s = loadScenes("tree-sketch");
