@@ -218,12 +218,14 @@ void BM_LargeTreeChild(benchmark::State& state) {
     const bool incremental = state.range(1) != 0;
     const Camera camera = paperCamera();
     const Grammar& g = tree(false);
-    const ImageScorer scorer(g, camera, mickey(), VolumeFitnessSettings{});
+    ImageScorer scorer(g, camera, mickey(), VolumeFitnessSettings{});
     static std::map<std::int64_t, Chromosome> parents;
     if (!parents.count(state.range(2))) parents[state.range(2)] = largeTree(std::uint32_t(state.range(2)));
     const Chromosome& parent = parents[state.range(2)];
     const char* mb = std::getenv("SHAPEVO_BENCH_CACHE_MB");  // score.cache_mb (default 128)
-    ImageScorer::Workspace ws(camera, incremental ? std::size_t(mb ? std::atoi(mb) : 128) << 20 : 0);
+    const std::size_t cacheBytes = incremental ? std::size_t(mb ? std::atoi(mb) : 128) << 20 : 0;
+    scorer.setIncremental(cacheBytes);  // (its models, too, are bounded by score.cache_mb)
+    ImageScorer::Workspace ws(camera, cacheBytes);
     if (state.range(1) == 2) ws.derive.memo->turnOff();  // the primitive caches alone
     SilhouetteCounts counts;
     Rng rng(11);

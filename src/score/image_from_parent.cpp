@@ -84,9 +84,9 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
     const DeriveStatus found = l.childGene != none ? findSubtreeStarts(grammar_, c, l.childGene, w.derive, w.starts, maxPrimitives())
                                                    : findSubtreeStarts(grammar_, before, l.parentGene, w.derive, w.starts, maxPrimitives());
     if (found != DeriveStatus::Complete) return false;
-    // The parent's counts (made now if no child asked before, and there is room for them), then
-    // out with the old subtree and in with the new one, each start in turn.
-    // The child's counts: an overlay on the parent's, which copies only the blocks it writes.
+    // The child's counts: an overlay on the parent's (made now if no child asked before and there
+    // is room for them), which copies only the blocks it writes; then out with the old subtree
+    // and in with the new one, each start in turn.
     CoverageCounts& coverage = w.coverage;
     {
         std::optional<ModelStore::Reservation> room;

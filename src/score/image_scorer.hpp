@@ -56,7 +56,7 @@ public:
         std::vector<SubtreeStart> starts;     ///< fromParent: where the changed subtree starts
         std::vector<std::uint32_t> walk, walkStack;  ///< fromParent: genes of a subtree being measured
         std::shared_ptr<ModelStore> models;  ///< the scorer's (its blocks' pool outlives `coverage`)
-        CoverageCounts coverage;  ///< fromParent: the parent's coverage counts, becoming the child's
+        CoverageCounts coverage;  ///< fromParent: the child's coverage counts (an overlay on the parent's)
     };
 
     /// `target` must outlive the scorer and have the camera's size (loadImageTarget checks that
@@ -68,10 +68,14 @@ public:
     }
 
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
-        models_->setBound(cacheBytes());  // what the models may take: score.cache_mb per island
         auto w = std::make_unique<Workspace>(camera_, cacheBytes());
         w->models = models_;
         return w;
+    }
+    /// Also bounds what its models may keep for their children: `bytes` (score.cache_mb) per island.
+    void setIncremental(std::size_t bytes, bool check = false) override {
+        Scorer::setIncremental(bytes, check);
+        models_->setBound(bytes);
     }
     std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const override {
         return std::make_unique<Workspace>(camera_, 0);

@@ -82,7 +82,7 @@ public:
     /// keeps the rows its primitives drew in a PrimitiveCache of about `bytes` (0: off, every
     /// primitive is drawn anew). With `check`, every model is also scored the full way and a
     /// difference throws IncrementalMismatch. Results never depend on it: only the time does.
-    void setIncremental(std::size_t bytes, bool check = false) {
+    virtual void setIncremental(std::size_t bytes, bool check = false) {
         cacheBytes_ = bytes;
         checkIncremental_ = check && bytes > 0;
     }
