@@ -98,10 +98,9 @@ std::size_t heldByModels(const Population& pop, const Scorer& scorer) {
     std::set<const void*> seen;
     std::size_t bytes = 0;
     for (const Chromosome& c : pop.individuals) {
-        const EvaluatedModel* m0 = c.lineage.parent.get();
-        if (!image || !m0 || m0->maker != &image->models() || !seen.insert(m0).second) continue;
-        const auto* m = static_cast<const ImageModel*>(m0);
-        const ImageModel& model = *m;
+        const EvaluatedModel* m = c.lineage.parent.get();
+        if (!image || !m || m->maker != &image->models() || !seen.insert(m).second) continue;
+        const auto& model = static_cast<const ImageModel&>(*m);
         bytes += sizeof(ImageModel) + model.chromosome.words.capacity() * sizeof(std::uint32_t);
         model.forEachBlockHeld([&](const void* block, std::size_t n) {
             if (seen.insert(block).second) bytes += n;
