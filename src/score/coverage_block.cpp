@@ -7,6 +7,11 @@
 
 namespace shapevo {
 
+void CoverageBlock::freeHeader(Header* h) noexcept {
+    h->~Header();
+    ::operator delete(h);
+}
+
 CoverageBlock CoverageBlock::make(CoverageBlockPool* pool, std::uint32_t planes, bool zero) {
     void* memory = pool ? pool->take(planes) : ::operator new(bytesOf(planes));
     Header* h = new (memory) Header{{1}, planes, pool, nullptr};
@@ -21,21 +26,15 @@ void CoverageBlock::release() noexcept {
     if (h_->refs.fetch_sub(1, std::memory_order_acq_rel) == 1) {
         if (h_->pool)
             h_->pool->give(h_);
-        else {
-            h_->~Header();
-            ::operator delete(h_);
-        }
+        else
+            freeHeader(h_);
     }
     h_ = nullptr;
 }
 
 CoverageBlockPool::~CoverageBlockPool() {
     for (Header*& head : free_)
-        while (head) {
-            Header* h = std::exchange(head, head->next);
-            h->~Header();
-            ::operator delete(h);
-        }
+        while (head) CoverageBlock::freeHeader(std::exchange(head, head->next));
 }
 
 std::size_t CoverageBlockPool::bytesKept() const {
@@ -72,8 +71,7 @@ void CoverageBlockPool::give(Header* h) noexcept {
             return;
         }
     }
-    h->~Header();
-    ::operator delete(h);
+    CoverageBlock::freeHeader(h);
 }
 
 }  // namespace shapevo

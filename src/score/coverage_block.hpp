@@ -74,6 +74,8 @@ private:
     };
     static_assert(sizeof(Header) % sizeof(std::uint64_t) == 0);
     void release() noexcept;
+    /// End a block's header and give its memory back to the heap.
+    static void freeHeader(Header* h) noexcept;
 
     Header* h_ = nullptr;
 };

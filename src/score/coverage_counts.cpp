@@ -32,7 +32,7 @@ void CoverageCounts::flatten() {
 
 const CoverageBlock& CoverageCounts::writable(std::size_t b) {
     CoverageBlock& p = blocks_[b];
-    const CoverageBlock& from = p || !base_ ? p : base_->blocks_[b];  // (an overlay's first write: the base's)
+    const CoverageBlock& from = blockAt(b);  // (an overlay's first write: the base's)
     if (!from) {
         p = CoverageBlock::make(pool_, 1, true);
     } else if (&from != &p || p.shared()) {
