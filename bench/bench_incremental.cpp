@@ -5,8 +5,9 @@
 // up to generation FROM (default 1000), then the children of the next 50 generations are kept
 // as the GA hands them to its evaluator (elites first, children after; each child with its
 // lineage, so the incremental mode scores it from its parent where its operator named the change). Each benchmark iteration makes a
-// fresh Evaluator on one thread, lets it score the population of generation FROM (the children's
-// parents, not timed, so a cache starts as warm as in the run), then times scoring the 50
+// fresh Evaluator on one thread, lets it score the 50 generations before FROM and the population
+// of generation FROM (the children's parents), not timed, so that its cache is as warm and as
+// grown as a run's is by then (its memory written once, not page by page while timed), then times scoring the 50
 // generations' children in order, dropping each generation's models once the next one is
 // scored, as a run does. Counters: evals/s and s/child; duplicates, the share of
 // children the memo answered; from_parent, the share scored from the parent's counts;
@@ -17,6 +18,7 @@
 //   cd build && ninja bench_incremental && ./bench/bench_incremental --benchmark_repetitions=5
 //   SHAPEVO_BENCH_FROM=200 ./bench/bench_incremental     (children of earlier generations)
 //   SHAPEVO_BENCH_KEEP_MODELS=1 ./bench/bench_incremental (every generation's models kept to the end)
+//   SHAPEVO_BENCH_FRESH_CACHE=1 ./bench/bench_incremental (the cache warmed by the parents only)
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -41,12 +43,14 @@ using namespace shapevo;
 
 const char* const kScenes[] = {"tree-logo", "tree-sketch", "spaceship-paper", "spaceship", "castle-volume", "tree-volume"};
 constexpr int kRecordedGenerations = 50;
+constexpr std::uint32_t kWarmGenerations = 50;
 
 struct Recording {
     RunSettings settings;
     std::unique_ptr<Grammar> grammar;
     std::unique_ptr<Scene> full, incremental;
     Population parents;
+    std::vector<Population> before;       ///< the kWarmGenerations generations' batches before FROM, no lineage
     std::vector<Population> generations;
     std::size_t elite = 0, children = 0;
     std::vector<double> fitness;  ///< every child's fitness (the full evaluation's), in order
@@ -75,7 +79,15 @@ Recording& recording(int scene) {
     Evaluator evaluator(r.incremental->scorer(), 1);
     method->initialize(evaluator);
     const std::uint32_t from = fromGeneration();
+    while (method->generation() + kWarmGenerations < from) method->step(evaluator);
+    // The generations before: what a run's caches hold by generation FROM (scored again untimed
+    // before each pass, without their models).
+    evaluator.observeBatches([&](const Population& p, std::size_t) {
+        r.before.push_back(p);
+        for (Chromosome& c : r.before.back().individuals) c.lineage = {};
+    });
     while (method->generation() < from) method->step(evaluator);
+    evaluator.observeBatches(nullptr);
     r.parents = method->population();
     // The children as the GA hands them to the evaluator: each with its lineage (the parent's
     // evaluation and the subtree its operator changed), which scoring would replace.
@@ -119,6 +131,8 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
     std::vector<Population> work;
     // SHAPEVO_BENCH_KEEP_MODELS=1: keep every generation's models to the end (as before 2026-12-06)
     const bool keepModels = std::getenv("SHAPEVO_BENCH_KEEP_MODELS") && std::string(std::getenv("SHAPEVO_BENCH_KEEP_MODELS")) == "1";
+    // SHAPEVO_BENCH_FRESH_CACHE=1: warm the cache with the parents only (as before 2026-12-06)
+    const bool freshCache = std::getenv("SHAPEVO_BENCH_FRESH_CACHE") && std::string(std::getenv("SHAPEVO_BENCH_FRESH_CACHE")) == "1";
     std::uint64_t reused = 0, fromParent = 0;
     std::size_t modelBytes = 0;
     std::size_t cacheBytes = 0;
@@ -126,6 +140,11 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
         state.PauseTiming();
         work = r.generations;  // scoring replaces their lineage
         Evaluator evaluator(s.scorer(), 1);
+        if (!freshCache)  // warm as a run's caches are at generation FROM: its last generations drawn
+            for (const Population& p : r.before) {
+                Population copy = p;
+                evaluator.evaluate(copy);
+            }
         Population parents = r.parents;
         evaluator.evaluate(parents);  // warm: the parents' primitives are in the cache
         const std::uint64_t reusedBefore = evaluator.reused();

@@ -18,6 +18,7 @@ void tally(CoverageCounts::Delta& delta, std::int64_t sign, std::uint64_t pixels
 
 void CoverageCounts::overlay(const CoverageCounts& base) {
     if (base.base_) throw std::logic_error("CoverageCounts::overlay: the base is an overlay itself");
+    layout_ = base.layout_;
     blocks_.assign(base.blocks_.size(), CoverageBlock());
     pool_ = base.pool_;
     base_ = &base;
@@ -55,60 +56,79 @@ void CoverageCounts::grow(std::size_t b) {
     blocks_[b] = std::move(block);
 }
 
+/// The blocks one add() or remove() writes, each made writable once: a primitive's rows cross the
+/// same few tiles in turn, so the last few opened are remembered (a block written stays held by
+/// this picture alone until the call returns).
+class CoverageCounts::OpenBlocks {
+public:
+    struct Open {
+        std::uint32_t block = UINT32_MAX, planes = 0;
+        std::uint64_t* cells = nullptr;
+        std::uint64_t* cell(std::uint32_t offset) const { return cells + std::size_t(offset) * (1 + planes); }
+    };
+    explicit OpenBlocks(CoverageCounts& counts) : counts_(counts) {}
+    Open& open(std::uint32_t block) {
+        for (Open& o : open_)
+            if (o.block == block) return o;
+        Open& o = open_[next_++ % kOpen];
+        const CoverageBlock& b = counts_.writable(block);
+        o = {block, b.planes(), b.cells()};
+        return o;
+    }
+    /// Give `o`'s block one more plane (all zero).
+    void grow(Open& o) {
+        counts_.grow(o.block);
+        const CoverageBlock& b = counts_.blocks_[o.block];
+        o.planes = b.planes();
+        o.cells = b.cells();
+    }
+
+private:
+    static constexpr unsigned kOpen = 4;
+    CoverageCounts& counts_;
+    Open open_[kOpen];
+    unsigned next_ = 0;
+};
+
 void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
-    std::size_t at = SIZE_MAX;  // the block being written (words come mostly in order)
-    std::uint64_t* block = nullptr;
-    std::uint32_t planes = 0;
+    OpenBlocks blocks(*this);
     for (const WordMask& m : words) {
-        if (m.index / kBlockWords != at) {
-            at = m.index / kBlockWords;
-            const CoverageBlock& b = writable(at);
-            block = b.cells();
-            planes = b.planes();
-        }
-        const std::size_t w = m.index % kBlockWords;
-        std::uint64_t* c = block + w * (1 + planes);
+        const CoverageLayout::Place place = layout_.place(m.index);
+        OpenBlocks::Open& block = blocks.open(place.block);
+        std::uint64_t* c = block.cell(place.offset);
         const std::uint64_t mask = m.mask();
         tally(delta, 1, mask & ~c[0], m.index, target);
         c[0] |= mask;
         std::uint64_t carry = mask;
-        for (std::uint32_t p = 1; p <= planes && carry; ++p) {
+        for (std::uint32_t p = 1; p <= block.planes && carry; ++p) {
             const std::uint64_t next = c[p] & carry;
             c[p] ^= carry;
             carry = next;
         }
         if (carry) {
-            grow(at);
-            block = blocks_[at].cells();
-            planes = blocks_[at].planes();
-            block[w * (1 + planes) + planes] = carry;
+            blocks.grow(block);
+            block.cell(place.offset)[block.planes] = carry;
         }
     }
 }
 
 void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
-    std::size_t at = SIZE_MAX;
-    std::uint64_t* block = nullptr;
-    std::uint32_t planes = 0;
+    OpenBlocks blocks(*this);
     for (const WordMask& m : words) {
-        if (m.index / kBlockWords != at) {
-            at = m.index / kBlockWords;
-            const CoverageBlock& b = writable(at);
-            block = b.cells();
-            planes = b.planes();
-        }
-        std::uint64_t* c = block + (m.index % kBlockWords) * (1 + planes);
+        const CoverageLayout::Place place = layout_.place(m.index);
+        const OpenBlocks::Open& block = blocks.open(place.block);
+        std::uint64_t* c = block.cell(place.offset);
         const std::uint64_t mask = m.mask();
         if (mask & ~c[0]) throw std::logic_error("CoverageCounts::remove: pixels that were not added");
         std::uint64_t borrow = mask, any = 0;
         std::uint32_t p = 1;
-        for (; p <= planes && borrow; ++p) {
+        for (; p <= block.planes && borrow; ++p) {
             const std::uint64_t next = ~c[p] & borrow;
             c[p] ^= borrow;
             any |= c[p];
             borrow = next;
         }
-        for (; p <= planes; ++p) any |= c[p];
+        for (; p <= block.planes; ++p) any |= c[p];
         const std::uint64_t gone = mask & ~any;
         c[0] &= ~gone;
         tally(delta, -1, gone, m.index, target);
@@ -116,14 +136,16 @@ void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& 
 }
 
 std::uint64_t CoverageCounts::covered(std::size_t i) const {
-    const CoverageBlock& p = blockAt(i / kBlockWords);
-    return p ? p.cell(i % kBlockWords)[0] : 0;
+    const CoverageLayout::Place place = layout_.place(std::uint32_t(i));
+    const CoverageBlock& p = blockAt(place.block);
+    return p ? p.cell(place.offset)[0] : 0;
 }
 
 std::uint32_t CoverageCounts::count(std::size_t i, int bit) const {
-    const CoverageBlock& p = blockAt(i / kBlockWords);
+    const CoverageLayout::Place place = layout_.place(std::uint32_t(i));
+    const CoverageBlock& p = blockAt(place.block);
     if (!p) return 0;
-    const std::uint64_t* c = p.cell(i % kBlockWords);
+    const std::uint64_t* c = p.cell(place.offset);
     std::uint32_t n = 0;
     for (std::uint32_t k = 0; k < p.planes(); ++k) n |= std::uint32_t(c[1 + k] >> bit & 1) << k;
     return n;

@@ -4,8 +4,8 @@
 //
 // Layout: per 64-pixel word of the picture, the counts as bit planes (plane p holds bit p of the
 // 64 counts) after one plane of the pixels whose count is above zero; words in blocks of
-// kBlockWords (score/coverage_block.hpp), each block with as many planes as its largest count
-// needs. A block no primitive touched is absent (all zero).
+// kBlockWords (score/coverage_block.hpp), tiles of the picture (score/coverage_layout.hpp), each
+// block with as many planes as its largest count needs. A block no primitive touched is absent (all zero).
 //
 // Promises:
 //  - Exact: after add()s and remove()s (each remove() of one primitive's words that an add()
@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "score/coverage_block.hpp"
+#include "score/coverage_layout.hpp"
 #include "score/image_target.hpp"
 #include "score/silhouette_raster.hpp"
 
@@ -41,12 +42,13 @@ public:
     };
 
     CoverageCounts() = default;
-    /// A picture of `words` 64-pixel words, all zero, its blocks from `pool` (null: the heap).
-    explicit CoverageCounts(std::size_t words, CoverageBlockPool* pool = nullptr)
-        : blocks_((words + kBlockWords - 1) / kBlockWords), pool_(pool) {}
-    /// All zero again: `words` 64-pixel words, blocks from `pool`, keeping the capacity.
-    void reset(std::size_t words, CoverageBlockPool* pool) {
-        blocks_.assign((words + kBlockWords - 1) / kBlockWords, CoverageBlock());
+    /// A picture laid out as `layout`, all zero, its blocks from `pool` (null: the heap).
+    explicit CoverageCounts(const CoverageLayout& layout, CoverageBlockPool* pool = nullptr)
+        : layout_(layout), blocks_(layout.blocks()), pool_(pool) {}
+    /// All zero again: laid out as `layout`, blocks from `pool`, keeping the capacity.
+    void reset(const CoverageLayout& layout, CoverageBlockPool* pool) {
+        layout_ = layout;
+        blocks_.assign(layout.blocks(), CoverageBlock());
         pool_ = pool;
         base_ = nullptr;
     }
@@ -74,7 +76,7 @@ public:
     std::uint32_t count(std::size_t i, int bit) const;
     /// Bytes of its handles and of the blocks it holds (shared ones included whole).
     std::size_t bytes() const;
-    std::size_t words() const { return blocks_.size() * kBlockWords; }
+    const CoverageLayout& layout() const { return layout_; }
     /// Call f(key, bytes) for every block it holds (an overlay: its own, not its base's): equal
     /// keys are one block shared (memory counts).
     template <class F>
@@ -84,6 +86,7 @@ public:
     }
 
 private:
+    class OpenBlocks;
     /// Block `b`, made or copied so that only this picture holds it.
     const CoverageBlock& writable(std::size_t b);
     /// Give block `b` (held only here) one more plane (all zero).
@@ -92,6 +95,7 @@ private:
     /// Block `b` as read: its own, or its base's.
     const CoverageBlock& blockAt(std::size_t b) const { return blocks_[b] || !base_ ? blocks_[b] : base_->blocks_[b]; }
 
+    CoverageLayout layout_;
     std::vector<CoverageBlock> blocks_;
     CoverageBlockPool* pool_ = nullptr;
     const CoverageCounts* base_ = nullptr;  ///< an overlay's base (null: none)

@@ -57,7 +57,7 @@ std::shared_ptr<const EvaluatedModel> ImageScorer::keep(const Chromosome& c, std
 
 void ImageScorer::makeCoverage(const ImageModel& m, Workspace& w, CoverageCounts& out) const {
     derive(grammar_, m.chromosome, w.geometry, w.derive, maxPrimitives());
-    out.reset(w.raster.bits().size(), &models_->blocks());
+    out.reset(coverageLayout_, &models_->blocks());
     CoverageCounts::Delta delta;
     eachPrimitivesWords(w, [&](std::span<const WordMask> words) { out.add(words, target_, delta); });
     w.raster.clear();
@@ -91,7 +91,7 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
     {
         std::optional<ModelStore::Reservation> room;
         if (!parent.coverageAtHand()) {
-            room.emplace(models_->reserve(models_->estimateCoverage(w.raster.bits().size())));
+            room.emplace(models_->reserve(models_->estimateCoverage(coverageLayout_.blocks())));
             if (!*room) return false;
         }
         coverage.overlay(parent.coverage([&](CoverageCounts& out) {

@@ -65,6 +65,7 @@ public:
         : grammar_(g), camera_(camera), target_(target), settings_(settings) {
         if (target.width != camera.width() || target.height != camera.height())
             throw std::invalid_argument("ImageScorer: the target's size differs from the camera's");
+        coverageLayout_ = CoverageLayout(std::uint32_t(target.wordsPerRow()), std::uint32_t(target.height));
     }
 
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override {
@@ -154,6 +155,7 @@ private:
     Camera camera_;
     const ImageTarget& target_;
     VolumeFitnessSettings settings_;
+    CoverageLayout coverageLayout_;  ///< the target's picture, in the tiles of its coverage counts
     std::shared_ptr<ModelStore> models_ = ModelStore::make();
 };
 

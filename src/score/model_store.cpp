@@ -57,8 +57,7 @@ ModelStore::Reservation ModelStore::reserve(std::size_t bytes) {
 
 std::size_t ModelStore::estimate(std::size_t words) { return sizeof(ImageModel) + words * sizeof(std::uint32_t); }
 
-std::size_t ModelStore::estimateCoverage(std::size_t pictureWords) const {
-    const std::size_t blocks = (pictureWords + CoverageBlock::kPictureWords - 1) / CoverageBlock::kPictureWords;
+std::size_t ModelStore::estimateCoverage(std::size_t blocks) const {
     return std::max(largestCoverage_.load(std::memory_order_relaxed), blocks * (sizeof(CoverageBlock) + CoverageBlock::bytesOf(1)));
 }
 

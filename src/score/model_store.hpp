@@ -70,9 +70,9 @@ public:
     void count(ImageModel& m);
     /// About the bytes a model of `words` chromosome words will be counted for (for reserve()).
     static std::size_t estimate(std::size_t words);
-    /// About the bytes coverage counts of `pictureWords` words will take (for reserve()): the
-    /// most any made so far took (noteCoverage), at least one plane in every block.
-    std::size_t estimateCoverage(std::size_t pictureWords) const;
+    /// About the bytes coverage counts of `blocks` blocks will take (for reserve()): the most any
+    /// made so far took (noteCoverage), at least one plane in every block.
+    std::size_t estimateCoverage(std::size_t blocks) const;
     /// Coverage counts of `bytes` were made (CoverageCounts::bytes()).
     void noteCoverage(std::size_t bytes);
     CoverageBlockPool& blocks() { return blocks_; }

@@ -2,7 +2,8 @@
 // brute-force count per pixel after random adds and removes, the deltas with brute-force
 // popcounts against the target, and a copy is not changed by writes to the picture it was
 // copied from (nor the other way round); blocks from a pool go back to it and come out again
-// without stale pixels.
+// without stale pixels; the tiles of CoverageLayout place every word of a picture in a cell of
+// its own, as a division would.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -14,12 +15,13 @@
 namespace shapevo {
 namespace {
 
-constexpr std::size_t kWords = 700;  // five and a half blocks
+constexpr std::size_t kWords = 700;  // 4 words a row, 175 rows: tiles 2 words wide, the last ones cut short
+const CoverageLayout kLayout(4, 175);
 
 ImageTarget countingTarget(Rng& rng) {
     ImageTarget t;
-    t.width = 64;
-    t.height = int(kWords);
+    t.width = 256;
+    t.height = 175;
     t.hit.resize(kWords);
     t.avoid.resize(kWords);
     for (std::size_t i = 0; i < kWords; ++i) {
@@ -69,7 +71,7 @@ struct Brute {
 
 /// Counts kept both ways, with the deltas CoverageCounts reports.
 struct Tracked {
-    explicit Tracked(CoverageBlockPool* pool = nullptr) : counts(kWords, pool) {}
+    explicit Tracked(CoverageBlockPool* pool = nullptr) : counts(kLayout, pool) {}
     CoverageCounts counts;
     Brute brute;
     CoverageCounts::Delta delta;
@@ -169,7 +171,7 @@ TEST(CoverageCounts, AnOverlayReadsItsBaseCopiesOnlyWhatItWritesAndOutlivesItOnc
         EXPECT_GT(pool.bytesInUse(), parentBytes);
         std::size_t own = 0;
         child.counts.forEachBlock([&](const void*, std::size_t) { ++own; });
-        EXPECT_LT(own, kWords / CoverageCounts::kBlockWords);  // only the blocks it wrote
+        EXPECT_LT(own, kLayout.blocks());  // only the blocks it wrote
         child.counts.flatten();
         EXPECT_FALSE(child.counts.overlaid());
     }  // the parent goes
@@ -209,10 +211,45 @@ TEST(CoverageCounts, APoolKeepsNoMoreThanItsBound) {
     EXPECT_LE(pool.bytesKept(), 10000u);
 }
 
+/// Where a word goes, by division: tiles kTileWords wide (as wide as the picture if narrower,
+/// rounded up to a power of two) and kBlockWords / that many rows tall.
+CoverageLayout::Place placeByDivision(std::uint64_t wordsPerRow, std::uint64_t i) {
+    std::uint64_t tileWords = 1;
+    while (tileWords < wordsPerRow && tileWords < CoverageLayout::kTileWords) tileWords *= 2;
+    const std::uint64_t tileRows = CoverageLayout::kBlockWords / tileWords, tilesPerRow = (wordsPerRow + tileWords - 1) / tileWords;
+    const std::uint64_t row = i / wordsPerRow, col = i % wordsPerRow;
+    return {std::uint32_t(row / tileRows * tilesPerRow + col / tileWords), std::uint32_t(row % tileRows * tileWords + col % tileWords)};
+}
+
+TEST(CoverageLayout, PlacesEveryWordOfAPictureInItsOwnCellOfATile) {
+    for (const std::uint32_t wordsPerRow : {1u, 2u, 3u, 4u, 13u, 64u, 4096u})
+        for (const std::uint32_t rows : {1u, 2u, 63u, 64u, 65u, 130u, 600u}) {
+            const CoverageLayout layout(wordsPerRow, rows);
+            std::vector<std::uint8_t> used(layout.blocks() * CoverageLayout::kBlockWords, 0);
+            for (std::uint32_t i = 0; i < layout.words(); ++i) {
+                const CoverageLayout::Place p = layout.place(i), want = placeByDivision(wordsPerRow, i);
+                ASSERT_EQ(p.block, want.block) << wordsPerRow << " x " << rows << " word " << i;
+                ASSERT_EQ(p.offset, want.offset) << wordsPerRow << " x " << rows << " word " << i;
+                ASSERT_LT(p.block, layout.blocks());
+                ASSERT_EQ(used[p.block * CoverageLayout::kBlockWords + p.offset]++, 0) << "two words in one cell";
+            }
+        }
+    // The largest picture it takes: the division by a multiplication stays exact to the last word.
+    const CoverageLayout large(4096, 65536);
+    for (std::uint64_t i = 0; i < large.words(); i += 999'983) {
+        const std::uint32_t k = std::uint32_t(i);
+        ASSERT_EQ(large.place(k).block, placeByDivision(4096, k).block) << k;
+        ASSERT_EQ(large.place(k).offset, placeByDivision(4096, k).offset) << k;
+    }
+    EXPECT_EQ(large.place(std::uint32_t(large.words() - 1)).block, large.blocks() - 1);
+    EXPECT_THROW(CoverageLayout(4097, 1), std::logic_error);
+    EXPECT_THROW(CoverageLayout(1, 65537), std::logic_error);
+}
+
 TEST(CoverageCounts, RemovingPixelsNeverAddedIsAProgrammingError) {
     Rng rng(1);
     const ImageTarget target = countingTarget(rng);
-    CoverageCounts counts(kWords);
+    CoverageCounts counts(kLayout);
     CoverageCounts::Delta delta;
     const std::vector<WordMask> words{{5, 1, 0}};
     EXPECT_THROW(counts.remove(words, target, delta), std::logic_error);

@@ -65,7 +65,7 @@ TEST(ModelStore, ModelsAndTheirBlocksMayOutliveEveryOtherHandleOnTheStore) {
     target.hit.assign(256, 0);
     target.avoid.assign(256, 0);
     m->coverage([&](CoverageCounts& counts) {
-        counts.reset(256, &store->blocks());
+        counts.reset(CoverageLayout(1, 256), &store->blocks());
         CoverageCounts::Delta delta;
         const std::vector<WordMask> words{{3, 1, 0}, {200, 0, 5}};
         counts.add(words, target, delta);
