@@ -56,6 +56,12 @@ struct Recording {
     std::vector<double> fitness;  ///< every child's fitness (the full evaluation's), in order
 };
 
+/// Whether the environment variable `name` is "1".
+bool switchedOn(const char* name) {
+    const char* v = std::getenv(name);
+    return v && std::string(v) == "1";
+}
+
 std::uint32_t fromGeneration() {
     const char* v = std::getenv("SHAPEVO_BENCH_FROM");
     return v ? std::uint32_t(std::strtoul(v, nullptr, 10)) : 1000;
@@ -130,9 +136,9 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
                    std::to_string(fromGeneration() + 1) + "-" + std::to_string(fromGeneration() + kRecordedGenerations));
     std::vector<Population> work;
     // SHAPEVO_BENCH_KEEP_MODELS=1: keep every generation's models to the end (as before 2026-12-06)
-    const bool keepModels = std::getenv("SHAPEVO_BENCH_KEEP_MODELS") && std::string(std::getenv("SHAPEVO_BENCH_KEEP_MODELS")) == "1";
+    const bool keepModels = switchedOn("SHAPEVO_BENCH_KEEP_MODELS");
     // SHAPEVO_BENCH_FRESH_CACHE=1: warm the cache with the parents only (as before 2026-12-06)
-    const bool freshCache = std::getenv("SHAPEVO_BENCH_FRESH_CACHE") && std::string(std::getenv("SHAPEVO_BENCH_FRESH_CACHE")) == "1";
+    const bool freshCache = switchedOn("SHAPEVO_BENCH_FRESH_CACHE");
     std::uint64_t reused = 0, fromParent = 0;
     std::size_t modelBytes = 0;
     std::size_t cacheBytes = 0;

@@ -354,22 +354,21 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         ga.initialize(evaluator);
         stop = afterGeneration();
     }
+    // Once each: incremental scoring's caches, and its models, have reached score.cache_mb.
     bool saidCacheFull = false, saidModelsFull = false;
+    const auto sayBoundReached = [&](bool& said, bool reached, const char* what, const char* fromNowOn) {
+        if (said || !reached) return;
+        said = true;
+        log << "shapevo: rank " << mpi.rank() << ": " << what << " score.cache_mb = " << s.incremental.cacheMb << " at generation "
+            << ga.generation() << "; " << fromNowOn << " (results are the same; raise score.cache_mb for speed)\n";
+    };
     while (!stop) {
         if (ga.generation() < s.ga.generations) {
             ga.step(evaluator);
-            if (!saidCacheFull && scene.scorer().cacheFull()) {
-                saidCacheFull = true;
-                log << "shapevo: rank " << mpi.rank() << ": incremental scoring has filled score.cache_mb = " << s.incremental.cacheMb
-                    << " at generation " << ga.generation()
-                    << "; the primitives it cannot keep, and models too large for it, are drawn the full way from now on (results are the same; raise score.cache_mb for speed)\n";
-            }
-            if (!saidModelsFull && scene.scorer().modelsFull()) {
-                saidModelsFull = true;
-                log << "shapevo: rank " << mpi.rank() << ": the models kept for scoring children from their parents have reached score.cache_mb = "
-                    << s.incremental.cacheMb << " at generation " << ga.generation()
-                    << "; the largest are not kept from now on, and their children are scored from the caches (results are the same; raise score.cache_mb for speed)\n";
-            }
+            sayBoundReached(saidCacheFull, scene.scorer().cacheFull(), "incremental scoring has filled",
+                            "the primitives it cannot keep, and models too large for it, are drawn the full way from now on");
+            sayBoundReached(saidModelsFull, scene.scorer().modelsFull(), "the models kept for scoring children from their parents have reached",
+                            "the largest are not kept from now on, and their children are scored from the caches");
             stop = afterGeneration();
         } else {  // async only: done with its generations, waiting for the others (the run's end)
             {

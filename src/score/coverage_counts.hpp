@@ -76,7 +76,6 @@ public:
     std::uint32_t count(std::size_t i, int bit) const;
     /// Bytes of its handles and of the blocks it holds (shared ones included whole).
     std::size_t bytes() const;
-    const CoverageLayout& layout() const { return layout_; }
     /// Call f(key, bytes) for every block it holds (an overlay: its own, not its base's): equal
     /// keys are one block shared (memory counts).
     template <class F>

@@ -45,9 +45,6 @@ public:
 
     std::size_t words() const { return std::size_t(wordsPerRow_) * rows_; }
     std::size_t blocks() const { return blocks_; }
-    std::uint32_t wordsPerRow() const { return wordsPerRow_; }
-    std::uint32_t rows() const { return rows_; }
-    bool operator==(const CoverageLayout& o) const { return wordsPerRow_ == o.wordsPerRow_ && rows_ == o.rows_; }
 
     Place place(std::uint32_t i) const {
         const std::uint32_t row = std::uint32_t((std::uint64_t(i) * magic_) >> 40);
