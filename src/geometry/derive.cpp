@@ -371,6 +371,11 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
                 const Slot& slot = r.slots[st.slot];
                 for (std::uint32_t k = slot.maxCount; k-- > 0;) {
                     const std::int32_t off = childOffsets[slot.firstChild + k];
+                    if constexpr (F == Focus::Path) {  // only the path's genes are run: the others are not pushed
+                        const std::uint32_t child = task.gene + std::uint32_t(off);
+                        if (off > 0 && child != focus && std::find(ancestors.begin(), ancestors.end(), child) == ancestors.end())
+                            continue;
+                    }
                     if (off > 0) {
                         if (stored == UINT32_MAX) {
                             scopes.push_back(s);

@@ -68,8 +68,13 @@ public:
     };
     explicit OpenBlocks(CoverageCounts& counts) : counts_(counts) {}
     Open& open(std::uint32_t block) {
-        for (Open& o : open_)
-            if (o.block == block) return o;
+        if (open_[last_].block == block) return open_[last_];  // (mostly: the word before's block)
+        for (unsigned k = 0; k < kOpen; ++k)
+            if (open_[k].block == block) {
+                last_ = k;
+                return open_[k];
+            }
+        last_ = next_ % kOpen;
         Open& o = open_[next_++ % kOpen];
         const CoverageBlock& b = counts_.writable(block);
         o = {block, b.planes(), b.cells()};
@@ -87,7 +92,7 @@ private:
     static constexpr unsigned kOpen = 4;
     CoverageCounts& counts_;
     Open open_[kOpen];
-    unsigned next_ = 0;
+    unsigned next_ = 0, last_ = 0;
 };
 
 void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
@@ -100,7 +105,7 @@ void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& tar
         tally(delta, 1, mask & ~c[0], m.index, target);
         c[0] |= mask;
         std::uint64_t carry = mask;
-        for (std::uint32_t p = 1; p <= block.planes && carry; ++p) {
+        for (std::uint32_t p = 1; p <= block.planes; ++p) {  // (every plane: no branch on the data)
             const std::uint64_t next = c[p] & carry;
             c[p] ^= carry;
             carry = next;
@@ -121,14 +126,12 @@ void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& 
         const std::uint64_t mask = m.mask();
         if (mask & ~c[0]) throw std::logic_error("CoverageCounts::remove: pixels that were not added");
         std::uint64_t borrow = mask, any = 0;
-        std::uint32_t p = 1;
-        for (; p <= block.planes && borrow; ++p) {
+        for (std::uint32_t p = 1; p <= block.planes; ++p) {  // (every plane: no branch on the data)
             const std::uint64_t next = ~c[p] & borrow;
             c[p] ^= borrow;
             any |= c[p];
             borrow = next;
         }
-        for (; p <= block.planes; ++p) any |= c[p];
         const std::uint64_t gone = mask & ~any;
         c[0] &= ~gone;
         tally(delta, -1, gone, m.index, target);

@@ -6,20 +6,27 @@
 // Complete exactly when its totals of primitives and tasks are within the limits.
 #include <algorithm>
 #include <optional>
+#include <vector>
 
-#include "genome/regrow.hpp"
 #include "score/image_scorer.hpp"
 
 namespace shapevo {
 
 namespace {
-/// Genes and words of the subtree at `root` of `c` (`genes`, `stack`: scratch).
-void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, std::vector<std::uint32_t>& genes,
-                    std::vector<std::uint32_t>& stack, std::uint32_t& geneCount, std::uint32_t& words) {
-    subtreePreorder(g, c, root, genes, stack);
-    geneCount = std::uint32_t(genes.size()) + 1;
-    words = g.rules[c.rule(root)].geneWords();
-    for (const std::uint32_t pos : genes) words += g.rules[c.rule(pos)].geneWords();
+/// Genes and words of the subtree at `root` of `c` (`stack`: scratch).
+void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, std::vector<std::uint32_t>& stack,
+                    std::uint32_t& geneCount, std::uint32_t& words) {
+    geneCount = words = 0;
+    stack.assign(1, root);
+    while (!stack.empty()) {
+        const std::uint32_t pos = stack.back();
+        stack.pop_back();
+        const Rule& r = g.rules[c.rule(pos)];
+        ++geneCount;
+        words += r.geneWords();
+        for (std::uint32_t e = 0; e < r.childOffsets; ++e)
+            if (c.child(pos, e) > 0) stack.push_back(pos + std::uint32_t(c.child(pos, e)));
+    }
 }
 }  // namespace
 
@@ -75,8 +82,8 @@ bool ImageScorer::fromParent(const Chromosome& c, const ImageModel& parent, Work
         return false;
     // The lineage must account for the sizes: the parent less its old subtree plus the new one.
     std::uint32_t oldGenes = 0, oldWords = 0, newGenes = 0, newWords = 0;
-    if (l.parentGene != none) measureSubtree(grammar_, before, l.parentGene, w.walk, w.walkStack, oldGenes, oldWords);
-    if (l.childGene != none) measureSubtree(grammar_, c, l.childGene, w.walk, w.walkStack, newGenes, newWords);
+    if (l.parentGene != none) measureSubtree(grammar_, before, l.parentGene, w.walkStack, oldGenes, oldWords);
+    if (l.childGene != none) measureSubtree(grammar_, c, l.childGene, w.walkStack, newGenes, newWords);
     if (std::uint64_t(before.genes) + newGenes != std::uint64_t(c.genes) + oldGenes ||
         std::uint64_t(before.size()) + newWords != std::uint64_t(c.size()) + oldWords)
         return false;

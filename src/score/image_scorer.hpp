@@ -41,7 +41,7 @@ public:
         }
         std::vector<RowSpan> spans;  ///< one primitive's rows, on their way into the cache as...
         std::vector<WordMask> words;  ///< ...the words they set
-        std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
+        std::vector<CacheProbe<WordMask>> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
         /// Subtrees replayed whole (primitive index ranges), and those to keep whole once drawn
         /// with the words their primitives set, gathered in `gathered`.
         struct SubtreeRange {
@@ -54,7 +54,7 @@ public:
         std::vector<WordMask> gathered;
         std::vector<std::uint64_t> merged;  ///< one word per raster word, zero between merges
         std::vector<SubtreeStart> starts;     ///< fromParent: where the changed subtree starts
-        std::vector<std::uint32_t> walk, walkStack;  ///< fromParent: genes of a subtree being measured
+        std::vector<std::uint32_t> walkStack;  ///< fromParent: genes of a subtree still to be measured
         std::shared_ptr<ModelStore> models;  ///< the scorer's (its blocks' pool outlives `coverage`)
         CoverageCounts coverage;  ///< fromParent: the child's coverage counts (an overlay on the parent's)
     };

@@ -73,6 +73,7 @@ public:
     struct Found {
         std::span<const Record> records;
         std::uint64_t extra = 0;
+        std::uint64_t at = 0;  ///< where the records lie in the ring (stillHolds)
     };
     struct Stats {
         std::uint64_t hits = 0, misses = 0, stored = 0, tooLarge = 0;
@@ -106,11 +107,18 @@ public:
             out.records = e.count == kEmpty ? std::span<const Record>()
                                             : std::span<const Record>(&ring_[e.at % ringSize_], e.count);
             out.extra = e.extra;
+            out.at = e.at;
             ++stats_.hits;
             return true;
         }
         ++stats_.misses;
         return false;
+    }
+
+    /// Whether the records `found` (by find()) are still there: no store() since overwrote them
+    /// or replaced the ring.
+    bool stillHolds(const Found& found) const {
+        return found.records.empty() || (found.at >= ringStart_ && head_ - found.at <= ringSize_);
     }
 
     // (find() counts lookups as hits + misses; store() grows the ring when one in 16 lookups since
@@ -235,10 +243,14 @@ private:
     Stats stats_;
 };
 
-/// One primitive on its way through the cache: its index in the model and its key's hash.
+/// One primitive on its way through the cache: its index in the model, its key's hash and what
+/// the cache holds for it (`hit`: found).
+template <class Record>
 struct CacheProbe {
     std::uint32_t index;
+    bool hit;
     std::uint64_t hash;
+    typename PrimitiveCache<Record>::Found found;
 };
 
 /// Draw every primitive through `cache`: `drawDirect(p, i)` first (i: its index), which draws a
@@ -251,26 +263,35 @@ struct CacheProbe {
 /// `probes` and `records` are scratch space kept between calls (no allocation once warm).
 template <class Record, class DrawDirect, class Replay, class Compute, class Computed>
 void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive>& primitives,
-                      std::vector<CacheProbe>& probes, std::vector<Record>& records, DrawDirect&& drawDirect,
+                      std::vector<CacheProbe<Record>>& probes, std::vector<Record>& records, DrawDirect&& drawDirect,
                       Replay&& replay, Compute&& compute, Computed&& computed) {
+    // Every lookup waits on memory twice (its bucket, then its records): ask for all the buckets
+    // first, then look every key up and ask for the records found, then use them, so that the
+    // waits overlap instead of adding up.
     probes.clear();
-    for (std::size_t i = 0; i < primitives.size(); ++i) {  // the lookups wait on memory: ask for it all first
+    for (std::size_t i = 0; i < primitives.size(); ++i) {
         if (drawDirect(primitives[i], i)) continue;
         const std::uint64_t h = PrimitiveKey(primitives[i]).hash();
         cache.prefetch(h);
-        probes.push_back({std::uint32_t(i), h});
+        probes.push_back({std::uint32_t(i), false, h, {}});
     }
-    typename PrimitiveCache<Record>::Found found;
-    for (const CacheProbe& probe : probes) {
-        const Primitive& p = primitives[probe.index];
-        const PrimitiveKey key(p);
-        if (cache.find(key, probe.hash, found)) {
-            replay(found, probe.index);
+    for (CacheProbe<Record>& probe : probes) {
+        probe.hit = cache.find(PrimitiveKey(primitives[probe.index]), probe.hash, probe.found);
+        if (!probe.hit) continue;
+        const char* const first = reinterpret_cast<const char*>(probe.found.records.data());
+        const std::size_t bytes = std::min<std::size_t>(probe.found.records.size_bytes(), 8 * 64);
+        for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(first + b);
+    }
+    for (const CacheProbe<Record>& probe : probes) {
+        // (a store below may overwrite records found above: those are drawn again)
+        if (probe.hit && cache.stillHolds(probe.found)) {
+            replay(probe.found, probe.index);
             continue;
         }
+        const Primitive& p = primitives[probe.index];
         records.clear();
         const std::uint64_t extra = compute(p, records);
-        cache.store(key, probe.hash, records, extra);
+        cache.store(PrimitiveKey(p), probe.hash, records, extra);
         computed(std::span<const Record>(records), extra, probe.index);
     }
 }

@@ -28,7 +28,7 @@ public:
             return ScoreWorkspace::cacheBytesUsed() + (cache ? cache->bytesUsed() : 0);
         }
         std::vector<VoxelRun> runs;  ///< one primitive's runs, on their way into the cache
-        std::vector<CacheProbe> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
+        std::vector<CacheProbe<VoxelRun>> probes;  ///< the primitives to look up, with their keys' hashes (after prefetching)
     };
 
     VolumeScorer(const Grammar& g, const VolumeTarget& target, const VolumeFitnessSettings& settings)
