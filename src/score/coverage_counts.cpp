@@ -1,5 +1,6 @@
 // CoverageCounts: counting adds and subtracts one per pixel with a ripple through the bit
-// planes, 64 pixels at a time; it stops at the first plane with no carry (or borrow) left.
+// planes, 64 pixels at a time, through every plane of the word's block (a carry or borrow of
+// zero changes nothing; a loop that stopped at it would branch on the data).
 #include "score/coverage_counts.hpp"
 
 #include <bit>
@@ -9,11 +10,24 @@
 namespace shapevo {
 
 namespace {
-void tally(CoverageCounts::Delta& delta, std::int64_t sign, std::uint64_t pixels, std::size_t i, const ImageTarget& t) {
-    delta.covered += sign * std::popcount(pixels);
-    delta.hit += sign * std::popcount(pixels & t.hit[i]);
-    delta.avoided += sign * std::popcount(pixels & t.avoid[i]);
-}
+/// The change in covered, hit and avoided pixels of one add() or remove(), in registers: the
+/// counts' words are written through pointers the compiler cannot tell from Delta's.
+struct Tally {
+    const std::uint64_t* hit;
+    const std::uint64_t* avoid;
+    std::int64_t covered = 0, hits = 0, avoided = 0;
+    explicit Tally(const ImageTarget& t) : hit(t.hit.data()), avoid(t.avoid.data()) {}
+    void count(std::uint64_t pixels, std::size_t i) {
+        covered += std::popcount(pixels);
+        hits += std::popcount(pixels & hit[i]);
+        avoided += std::popcount(pixels & avoid[i]);
+    }
+    void addTo(CoverageCounts::Delta& delta, std::int64_t sign) const {
+        delta.covered += sign * covered;
+        delta.hit += sign * hits;
+        delta.avoided += sign * avoided;
+    }
+};
 }  // namespace
 
 void CoverageCounts::overlay(const CoverageCounts& base) {
@@ -97,15 +111,17 @@ private:
 
 void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
     OpenBlocks blocks(*this);
+    Tally tally(target);
     for (const WordMask& m : words) {
         const CoverageLayout::Place place = layout_.place(m.index);
         OpenBlocks::Open& block = blocks.open(place.block);
-        std::uint64_t* c = block.cell(place.offset);
+        const std::uint32_t planes = block.planes;
+        std::uint64_t* const c = block.cell(place.offset);
         const std::uint64_t mask = m.mask();
-        tally(delta, 1, mask & ~c[0], m.index, target);
+        tally.count(mask & ~c[0], m.index);
         c[0] |= mask;
         std::uint64_t carry = mask;
-        for (std::uint32_t p = 1; p <= block.planes; ++p) {  // (every plane: no branch on the data)
+        for (std::uint32_t p = 1; p <= planes; ++p) {  // (every plane: no branch on the data)
             const std::uint64_t next = c[p] & carry;
             c[p] ^= carry;
             carry = next;
@@ -115,18 +131,21 @@ void CoverageCounts::add(std::span<const WordMask> words, const ImageTarget& tar
             block.cell(place.offset)[block.planes] = carry;
         }
     }
+    tally.addTo(delta, 1);
 }
 
 void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& target, Delta& delta) {
     OpenBlocks blocks(*this);
+    Tally tally(target);
     for (const WordMask& m : words) {
         const CoverageLayout::Place place = layout_.place(m.index);
         const OpenBlocks::Open& block = blocks.open(place.block);
-        std::uint64_t* c = block.cell(place.offset);
+        const std::uint32_t planes = block.planes;
+        std::uint64_t* const c = block.cell(place.offset);
         const std::uint64_t mask = m.mask();
         if (mask & ~c[0]) throw std::logic_error("CoverageCounts::remove: pixels that were not added");
         std::uint64_t borrow = mask, any = 0;
-        for (std::uint32_t p = 1; p <= block.planes; ++p) {  // (every plane: no branch on the data)
+        for (std::uint32_t p = 1; p <= planes; ++p) {  // (every plane: no branch on the data)
             const std::uint64_t next = ~c[p] & borrow;
             c[p] ^= borrow;
             any |= c[p];
@@ -134,8 +153,9 @@ void CoverageCounts::remove(std::span<const WordMask> words, const ImageTarget& 
         }
         const std::uint64_t gone = mask & ~any;
         c[0] &= ~gone;
-        tally(delta, -1, gone, m.index, target);
+        tally.count(gone, m.index);
     }
+    tally.addTo(delta, -1);
 }
 
 std::uint64_t CoverageCounts::covered(std::size_t i) const {
