@@ -84,28 +84,41 @@ public:
     explicit PrimitiveCache(std::size_t bytes) {
         bytes = std::max<std::size_t>(bytes, 64 * 1024);
         maxBuckets_ = 1;
-        while (maxBuckets_ * 2 * kWays * sizeof(Entry) <= bytes / 4) maxBuckets_ *= 2;
-        ringMax_ = std::max<std::size_t>(1, (bytes - maxBuckets_ * kWays * sizeof(Entry)) / sizeof(Record));
+        while (maxBuckets_ * 2 * sizeof(Bucket) <= bytes / 4) maxBuckets_ *= 2;
+        ringMax_ = std::max<std::size_t>(1, (bytes - maxBuckets_ * sizeof(Bucket)) / sizeof(Record));
         growRing(std::min(ringMax_, kFirstRingBytes / sizeof(Record)));
         resize(std::min<std::size_t>(maxBuckets_, kFirstBuckets));
     }
 
-    /// Bring the bucket of hash `h` towards the cache (looking up many keys: prefetch them all first).
-    void prefetch(std::uint64_t h) const { __builtin_prefetch(&entries_[(h & mask_) * kWays]); }
+    /// Bring the tags of the bucket of hash `h` towards the cache (looking up many keys: prefetch
+    /// them all first, then prefetchEntry() them all, then find()).
+    void prefetch(std::uint64_t h) const { __builtin_prefetch(&table_[h & mask_]); }
+    /// Once its tags are at hand: bring the entry whose tag is `h`, if any, towards the cache.
+    void prefetchEntry(std::uint64_t h) const {
+        const Bucket& b = table_[h & mask_];
+        for (std::size_t w = 0; w < kWays; ++w)
+            if (b.hash[w] == h) {
+                const char* const e = reinterpret_cast<const char*>(&b.entry[w]);
+                for (std::size_t at = 0; at < sizeof(Entry); at += 64) __builtin_prefetch(e + at);
+                __builtin_prefetch(e + sizeof(Entry) - 1);  // (an entry may straddle one line more)
+                return;
+            }
+    }
 
     /// The records stored for `key` (hash `h` = key.hash()) into `out`; false if there are none.
     bool find(const Key& key, std::uint64_t h, Found& out) {
-        Entry* bucket = &entries_[(h & mask_) * kWays];
+        Bucket& b = table_[h & mask_];
         for (std::size_t w = 0; w < kWays; ++w) {
-            Entry& e = bucket[w];
-            if (e.hash != h || e.count == 0 || !(e.key == key)) continue;
-            if (!live(e)) {  // seen, but its records were overwritten: the ring may be too small
+            if (b.hash[w] != h || b.count[w] == 0) continue;
+            Entry& e = b.entry[w];
+            if (!(e.key == key)) continue;
+            if (!live(b.count[w], e.at)) {  // seen, but its records were overwritten: the ring may be too small
                 ++stale_;
                 continue;
             }
             e.used = ++clock_;
-            out.records = e.count == kEmpty ? std::span<const Record>()
-                                            : std::span<const Record>(&ring_[e.at % ringSize_], e.count);
+            out.records = b.count[w] == kEmpty ? std::span<const Record>()
+                                               : std::span<const Record>(&ring_[e.at % ringSize_], b.count[w]);
             out.extra = e.extra;
             out.at = e.at;
             ++stats_.hits;
@@ -142,23 +155,23 @@ public:
         const std::uint64_t at = head_;
         head_ += n;
         if (n > 0) std::memcpy(&ring_[at % size], records.data(), n * sizeof(Record));
-        Entry* bucket = &entries_[(h & mask_) * kWays];
-        Entry* victim = bucket;
+        Bucket& b = table_[h & mask_];
+        std::size_t victim = 0;
         for (std::size_t w = 0; w < kWays; ++w) {
-            Entry& e = bucket[w];
-            if (e.count == 0 || !live(e)) {
-                victim = &e;
-                entriesUsed_ += e.used == 0;  // (a stale entry was counted when first used)
+            if (b.count[w] == 0 || !live(b.count[w], b.entry[w].at)) {
+                victim = w;
+                entriesUsed_ += b.entry[w].used == 0;  // (a stale entry was counted when first used)
                 break;
             }
-            if (e.used < victim->used) victim = &e;
+            if (b.entry[w].used < b.entry[victim].used) victim = w;
         }
-        victim->key = key;
-        victim->hash = h;
-        victim->at = at;
-        victim->count = n == 0 ? kEmpty : std::uint32_t(n);
-        victim->extra = extra;
-        victim->used = ++clock_;
+        Entry& e = b.entry[victim];
+        e.key = key;
+        b.hash[victim] = h;
+        e.at = at;
+        b.count[victim] = n == 0 ? kEmpty : std::uint32_t(n);
+        e.extra = extra;
+        e.used = ++clock_;
         ++stats_.stored;
         recordsStored_ += n;
         // Grow the table while over half full, but only to ~4x the entries whose records the ring
@@ -183,9 +196,9 @@ public:
     bool full() const { return full_; }
     /// Bytes of entries and records written so far (what the system had to map; at most bytes()).
     std::size_t bytesUsed() const {
-        return buckets() * kWays * sizeof(Entry) + std::min<std::uint64_t>(head_ - ringStart_, ringSize_) * sizeof(Record);
+        return buckets() * sizeof(Bucket) + std::min<std::uint64_t>(head_ - ringStart_, ringSize_) * sizeof(Record);
     }
-    std::size_t bytes() const { return maxBuckets_ * kWays * sizeof(Entry) + ringMax_ * sizeof(Record); }
+    std::size_t bytes() const { return maxBuckets_ * sizeof(Bucket) + ringMax_ * sizeof(Record); }
 
 private:
     static constexpr std::size_t kWays = 4;
@@ -193,13 +206,21 @@ private:
     static constexpr std::size_t kFirstRingBytes = 256 << 10;
     /// count of an entry that wrote no record (a primitive reaching no pixel or voxel)
     static constexpr std::uint32_t kEmpty = UINT32_MAX;
-    struct Entry {  // all zero: free
+    struct Entry {
         Key key;
-        std::uint64_t hash, at, extra, used;
-        std::uint32_t count;  ///< 0: free; kEmpty: stored with no records
+        std::uint64_t at, extra, used;  ///< used: 0 never used
     };
-    /// Its records are still in the ring (none was overwritten since it was stored).
-    bool live(const Entry& e) const { return e.count == kEmpty || (e.at >= ringStart_ && head_ - e.at <= ringSize_); }
+    /// A bucket, all zero when free: the tags of its ways first, in the one cache line a
+    /// prefetch() brings, so that a lookup reads no entry but the one whose tag matches.
+    struct alignas(64) Bucket {
+        std::uint64_t hash[kWays];
+        std::uint32_t count[kWays];  ///< 0: free; kEmpty: stored with no records
+        Entry entry[kWays];
+    };
+    /// An entry's records are still in the ring (none was overwritten since it was stored).
+    bool live(std::uint32_t count, std::uint64_t at) const {
+        return count == kEmpty || (at >= ringStart_ && head_ - at <= ringSize_);
+    }
 
     /// A ring of `records` records, empty: every record of the old one is forgotten (their entries
     /// become stale, misses). Rare: the ring only grows (x4), from 256 KB to its share of `bytes`.
@@ -216,25 +237,28 @@ private:
     /// A table of `buckets` buckets holding the live entries of the current one (rare: the table
     /// only grows, at most log4 of its final size times).
     void resize(std::size_t buckets) {
-        ZeroPages<Entry> old = std::move(entries_);
+        ZeroPages<Bucket> old = std::move(table_);
         const std::size_t oldCount = old.size();
-        entries_ = ZeroPages<Entry>(buckets * kWays);  // all-zero entries are free ones
+        table_ = ZeroPages<Bucket>(buckets);  // all-zero buckets are free ones
         mask_ = buckets - 1;
         entriesUsed_ = 0;
-        for (std::size_t i = 0; i < oldCount; ++i) {
-            const Entry& e = old[i];
-            if (e.used == 0 || !live(e)) continue;
-            Entry* bucket = &entries_[(e.hash & mask_) * kWays];
-            for (std::size_t w = 0; w < kWays; ++w)
-                if (bucket[w].used == 0) {
-                    bucket[w] = e;
-                    ++entriesUsed_;
-                    break;
-                }
-        }
+        for (std::size_t i = 0; i < oldCount; ++i)
+            for (std::size_t v = 0; v < kWays; ++v) {
+                const Bucket& from = old[i];
+                if (from.entry[v].used == 0 || !live(from.count[v], from.entry[v].at)) continue;
+                Bucket& to = table_[from.hash[v] & mask_];
+                for (std::size_t w = 0; w < kWays; ++w)
+                    if (to.entry[w].used == 0) {
+                        to.hash[w] = from.hash[v];
+                        to.count[w] = from.count[v];
+                        to.entry[w] = from.entry[v];
+                        ++entriesUsed_;
+                        break;
+                    }
+            }
     }
 
-    ZeroPages<Entry> entries_;
+    ZeroPages<Bucket> table_;
     ZeroPages<Record> ring_;
     std::size_t maxBuckets_ = 1, ringMax_ = 1, ringSize_ = 0, mask_ = 0;
     std::uint64_t head_ = 0, clock_ = 0, entriesUsed_ = 0, recordsStored_ = 0;
@@ -265,9 +289,9 @@ template <class Record, class DrawDirect, class Replay, class Compute, class Com
 void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive>& primitives,
                       std::vector<CacheProbe<Record>>& probes, std::vector<Record>& records, DrawDirect&& drawDirect,
                       Replay&& replay, Compute&& compute, Computed&& computed) {
-    // Every lookup waits on memory twice (its bucket, then its records): ask for all the buckets
-    // first, then look every key up and ask for the records found, then use them, so that the
-    // waits overlap instead of adding up.
+    // Every lookup waits on memory three times (its bucket's tags, the entry, its records): ask
+    // for every bucket first, then for every entry whose tag matches, then look every key up and
+    // ask for the records found, then use them, so that the waits overlap instead of adding up.
     probes.clear();
     for (std::size_t i = 0; i < primitives.size(); ++i) {
         if (drawDirect(primitives[i], i)) continue;
@@ -275,6 +299,7 @@ void drawThroughCache(PrimitiveCache<Record>& cache, const std::vector<Primitive
         cache.prefetch(h);
         probes.push_back({std::uint32_t(i), false, h, {}});
     }
+    for (const CacheProbe<Record>& probe : probes) cache.prefetchEntry(probe.hash);
     for (CacheProbe<Record>& probe : probes) {
         probe.hit = cache.find(PrimitiveKey(primitives[probe.index]), probe.hash, probe.found);
         if (!probe.hit) continue;
