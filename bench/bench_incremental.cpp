@@ -43,14 +43,13 @@ using namespace shapevo;
 
 const char* const kScenes[] = {"tree-logo", "tree-sketch", "spaceship-paper", "spaceship", "castle-volume", "tree-volume"};
 constexpr int kRecordedGenerations = 50;
-constexpr std::uint32_t kWarmGenerations = 50;
 
 struct Recording {
     RunSettings settings;
     std::unique_ptr<Grammar> grammar;
     std::unique_ptr<Scene> full, incremental;
     Population parents;
-    std::vector<Population> before;       ///< the kWarmGenerations generations' batches before FROM, no lineage
+    std::vector<Population> before;       ///< the warmGenerations()' batches before FROM, no lineage
     std::vector<Population> generations;
     std::size_t elite = 0, children = 0;
     std::vector<double> fitness;  ///< every child's fitness (the full evaluation's), in order
@@ -60,6 +59,12 @@ struct Recording {
 bool switchedOn(const char* name) {
     const char* v = std::getenv(name);
     return v && std::string(v) == "1";
+}
+
+/// Generations before FROM that warm the cache (SHAPEVO_BENCH_WARM, default 200).
+std::uint32_t warmGenerations() {
+    const char* v = std::getenv("SHAPEVO_BENCH_WARM");
+    return v ? std::uint32_t(std::strtoul(v, nullptr, 10)) : 200;
 }
 
 std::uint32_t fromGeneration() {
@@ -85,7 +90,7 @@ Recording& recording(int scene) {
     Evaluator evaluator(r.incremental->scorer(), 1);
     method->initialize(evaluator);
     const std::uint32_t from = fromGeneration();
-    while (method->generation() + kWarmGenerations < from) method->step(evaluator);
+    while (method->generation() + warmGenerations() < from) method->step(evaluator);
     // The generations before: what a run's caches hold by generation FROM (scored again untimed
     // before each pass, without their models).
     evaluator.observeBatches([&](const Population& p, std::size_t) {
@@ -146,7 +151,7 @@ void BM_ScoreRecordedChildren(benchmark::State& state) {
         state.PauseTiming();
         work = r.generations;  // scoring replaces their lineage
         Evaluator evaluator(s.scorer(), 1);
-        if (!freshCache)  // warm as a run's caches are at generation FROM: its last generations drawn
+        if (!freshCache && incremental)  // warm as a run's caches are at generation FROM: its last generations drawn
             for (const Population& p : r.before) {
                 Population copy = p;
                 evaluator.evaluate(copy);
