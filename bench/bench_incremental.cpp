@@ -5,9 +5,10 @@
 // up to generation FROM (default 1000), then the children of the next 50 generations are kept
 // as the GA hands them to its evaluator (elites first, children after; each child with its
 // lineage, so the incremental mode scores it from its parent where its operator named the change). Each benchmark iteration makes a
-// fresh Evaluator on one thread, lets it score the 50 generations before FROM and the population
-// of generation FROM (the children's parents), not timed, so that its cache is as warm and as
-// grown as a run's is by then (its memory written once, not page by page while timed), then times scoring the 50
+// fresh Evaluator on one thread, lets the incremental one score the 200 generations before FROM
+// and the population of generation FROM (the children's parents), not timed, so that its cache is
+// as warm and as grown as a run's is by then (its ring of records has wrapped: its memory written
+// once, not page by page while timed; 50 generations did not do that), then times scoring the 50
 // generations' children in order, dropping each generation's models once the next one is
 // scored, as a run does. Counters: evals/s and s/child; duplicates, the share of
 // children the memo answered; from_parent, the share scored from the parent's counts;
@@ -19,6 +20,7 @@
 //   SHAPEVO_BENCH_FROM=200 ./bench/bench_incremental     (children of earlier generations)
 //   SHAPEVO_BENCH_KEEP_MODELS=1 ./bench/bench_incremental (every generation's models kept to the end)
 //   SHAPEVO_BENCH_FRESH_CACHE=1 ./bench/bench_incremental (the cache warmed by the parents only)
+//   SHAPEVO_BENCH_WARM=50 ./bench/bench_incremental       (warmed by 50 generations, as before 2026-12-06 10:00)
 #include <benchmark/benchmark.h>
 
 #include <cstdio>

@@ -30,6 +30,15 @@ void measureSubtree(const Grammar& g, const Chromosome& c, std::uint32_t root, s
 }
 }  // namespace
 
+void ImageScorer::prepare(const Chromosome& c) const {
+    if (!c.lineage.changed() || c.lineage.parent->maker != models_.get()) return;
+    const auto& parent = static_cast<const ImageModel&>(*c.lineage.parent);
+    const char* const first = reinterpret_cast<const char*>(parent.chromosome.words.data());
+    const std::size_t bytes = parent.chromosome.words.size() * sizeof(std::uint32_t);
+    for (std::size_t at = 0; at < bytes; at += 64) __builtin_prefetch(first + at);
+    parent.prefetchCoverageHandles();
+}
+
 template <class Apply>
 void ImageScorer::eachPrimitivesWords(Workspace& w, Apply&& apply) const {
     drawThroughCache(

@@ -62,6 +62,10 @@ struct ImageModel final : EvaluatedModel {
     void forEachBlockHeld(F&& f) const {
         if (overlaid_ || made_.load(std::memory_order_acquire)) coverage_.forEachBlock(f);
     }
+    /// Ask for its coverage's block handles, if made (a child reads them as it copies blocks).
+    void prefetchCoverageHandles() const {
+        if (made_.load(std::memory_order_acquire)) coverage_.prefetchHandles();
+    }
     /// Bytes of its coverage's block handles (their capacity; the blocks are counted apart).
     std::size_t handleBytes() const { return coverage_.handleBytes(); }
     /// Empty again, keeping the capacity of its buffers (ModelStore, when its last holder goes).

@@ -84,6 +84,8 @@ public:
     double fitness(const Chromosome& c, ScoreWorkspace& w) const override {
         return fitness(c, static_cast<Workspace&>(w), nullptr);
     }
+    /// Asks for the parent's chromosome (a generation old, read when the child is scored from it).
+    void prepare(const Chromosome& c) const override;
     double fitness(const Chromosome& c, Workspace& w, SilhouetteCounts* countsOut) const {
         w.made.reset();
         SilhouetteCounts counts;

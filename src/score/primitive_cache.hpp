@@ -13,7 +13,11 @@
 //    when one lookup in 16 finds records already overwritten, or a primitive does not fit. A few
 //    reallocations in all (none once grown), in zero pages (base/zero_pages.hpp).
 //  - Records live in one ring: storing overwrites the oldest, and an entry whose records were
-//    overwritten is simply not found (a miss, never a wrong answer).
+//    overwritten is simply not found (a miss, never a wrong answer); records found before a store
+//    are checked again (stillHolds) before they are used.
+//  - A lookup reads one cache line of its bucket's tags, then only the entry whose tag matches,
+//    then the records: drawThroughCache asks for each of these for all of a model's primitives
+//    before it waits on any (the waits overlap).
 //  - Derived data only: a cold cache gives the same results as a warm one, only slower.
 //  - A model larger than it can hold (holds()) is not put through it: its scorer draws it the
 //    full way, as fast as without a cache, and says once that the cache is full.

@@ -76,6 +76,9 @@ public:
     virtual std::unique_ptr<ScoreWorkspace> makePlainWorkspace() const { return makeWorkspace(); }
     /// Higher is better. Must not allocate once the workspace is warm.
     virtual double fitness(const Chromosome& c, ScoreWorkspace& w) const = 0;
+    /// A hint that `c` is scored next on this thread: bring what it will read towards the
+    /// processor's cache (no result depends on it).
+    virtual void prepare(const Chromosome& c) const { (void)c; }
     virtual const Grammar& grammar() const = 0;
 
     /// Incremental scoring (score.incremental, score.cache_mb): each workspace made from now on

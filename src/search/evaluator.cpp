@@ -15,6 +15,15 @@ int Evaluator::usableThreads(int requested) {
 
 Evaluator::Evaluator(const Scorer& scorer, int threads) : scorer_(scorer), arena_(usableThreads(threads)) {}
 
+namespace {
+/// Ask for every cache line of `c`'s words (a batch's chromosomes were written a while ago).
+void prefetchWords(const Chromosome& c) {
+    const char* const first = reinterpret_cast<const char*>(c.words.data());
+    const std::size_t bytes = c.words.size() * sizeof(std::uint32_t);
+    for (std::size_t at = 0; at < bytes; at += 64) __builtin_prefetch(first + at);
+}
+}  // namespace
+
 void Evaluator::evaluate(Population& pop, std::size_t from) {
     if (observer_) observer_(pop, from);
     const std::size_t n = pop.size();
@@ -29,6 +38,7 @@ void Evaluator::evaluate(Population& pop, std::size_t from) {
         status_.resize(n);
         for (std::size_t i = from; i < n; ++i) {
             const Chromosome& c = pop.individuals[i];
+            if (i + 1 < n) prefetchWords(pop.individuals[i + 1]);  // hashed next: on its way meanwhile
             const std::uint64_t h = FitnessMemo::hashOf(c);
             if (FitnessMemo::Entry* e = memo_->find(c, h)) {
                 if (e->pending >= 0) {
@@ -56,6 +66,7 @@ void Evaluator::evaluate(Population& pop, std::size_t from) {
             if (!ws) ws = scorer_.makeWorkspace();
             for (std::size_t k = r.begin(); k != r.end(); ++k) {
                 const std::size_t i = todo_[k];
+                if (k + 1 != r.end()) scorer_.prepare(pop.individuals[todo_[k + 1]]);
                 pop.fitness[i] = scorer_.fitness(pop.individuals[i], *ws);
                 // What scoring left for its children (or nothing): its lineage from now on.
                 pop.individuals[i].lineage = Lineage{std::move(ws->made)};

@@ -166,6 +166,49 @@ TEST(IncrementalScoring, OverwrittenRecordsAreMissesNeverWrongRecords) {
     EXPECT_EQ(cache.stats().stored, prims.size());
 }
 
+TEST(IncrementalScoring, RecordsFoundBeforeAStoreOverwroteThemAreDrawnAgain) {
+    // drawThroughCache looks every primitive up before it draws the new ones: a primitive found
+    // then, whose records the new ones' stores overwrite, must be drawn again, not replayed.
+    PrimitiveCache<RowSpan> cache(64 * 1024);  // a ring of ~4,200 records
+    auto rowsOf = [](const Primitive& p, std::vector<RowSpan>& out) {
+        const auto id = std::int32_t(p.centre.x);
+        for (std::int32_t r = 0; r < (id == 0 ? 10 : 500); ++r) out.push_back({id, r, id + r});
+    };
+    std::vector<Primitive> prims(10);
+    for (std::size_t i = 0; i < prims.size(); ++i) prims[i].centre = {float((i + 1) % prims.size()), 0.0f, 0.0f};
+    const Primitive& old = prims.back();  // id 0: stored first, looked up last
+    std::vector<RowSpan> rows;
+    rowsOf(old, rows);
+    cache.store(PrimitiveKey(old), PrimitiveKey(old).hash(), rows, 0);
+    PrimitiveCache<RowSpan>::Found found;
+    ASSERT_TRUE(cache.find(PrimitiveKey(old), PrimitiveKey(old).hash(), found));
+    EXPECT_TRUE(cache.stillHolds(found));
+    std::vector<CacheProbe<RowSpan>> probes;
+    std::vector<RowSpan> scratch;
+    int drawn = 0, replayed = 0;
+    auto expectRowsOf = [&](std::span<const RowSpan> got, std::size_t i) {
+        std::vector<RowSpan> want;
+        rowsOf(prims[i], want);
+        ASSERT_EQ(got.size(), want.size()) << i;
+        for (std::size_t r = 0; r < want.size(); ++r) ASSERT_EQ(got[r].hi, want[r].hi) << i << " row " << r;
+    };
+    drawThroughCache(
+        cache, prims, probes, scratch, [](const Primitive&, std::size_t) { return false; },
+        [&](const PrimitiveCache<RowSpan>::Found& f, std::size_t i) {
+            ++replayed;
+            expectRowsOf(f.records, i);
+        },
+        [&](const Primitive& p, std::vector<RowSpan>& out) -> std::uint64_t {
+            ++drawn;
+            rowsOf(p, out);
+            return 0;
+        },
+        [&](std::span<const RowSpan> got, std::uint64_t, std::size_t i) { expectRowsOf(got, i); });
+    EXPECT_FALSE(cache.stillHolds(found));  // the nine new primitives' 4,500 records wrapped the ring
+    EXPECT_EQ(drawn, 10);
+    EXPECT_EQ(replayed, 0);
+}
+
 /// Random trees and their mutated and crossed children (the shape of a GA's stream of models).
 std::vector<Chromosome> treesAndChildren(const Grammar& g, std::size_t count) {
     Rng rng(17);
