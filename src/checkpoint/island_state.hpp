@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "search/genetic_algorithm.hpp"
+#include "search/generation_stats.hpp"
+#include "search/population.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {

@@ -1,7 +1,7 @@
 // GLB writer: glTF JSON chunk (space-padded) and BIN chunk (zero-padded), both 4-byte aligned.
 // Without materials the index accessor covers all triangles and no primitive names a material,
-// so a plain mesh gives the same bytes as before materials existed; without textures the same
-// bytes as before textures existed (what textures add comes after everything else).
+// so a plain mesh is the minimal file (positions and indices only); what materials add, and then
+// what textures add, comes after everything a plain mesh writes, so neither changes its bytes.
 #include "mesh/glb_writer.hpp"
 
 #include <algorithm>

@@ -8,7 +8,7 @@
 // defines it; metallicFactor 0, roughness glTF's default 1), and one mesh primitive per material
 // that has triangles: all share the POSITION accessor, each has its own index accessor into the
 // one index buffer view, where each material's triangles follow one another in mesh order.
-// Without materials there is one primitive with no material, exactly as before materials existed.
+// Without materials there is one primitive with no material and the file holds nothing else.
 // Textures (a mesh with UVs and textured materials): every primitive also has TEXCOORD_0 (float
 // VEC2, one per vertex, glTF's v = 1 - the mesh's v, the accessor after the index accessors, in
 // buffer view 2 after the indices), each MeshTexture is an image (mimeType image/png, its bytes

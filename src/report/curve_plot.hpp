@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "search/genetic_algorithm.hpp"
+#include "search/generation_stats.hpp"
 
 namespace shapevo {
 

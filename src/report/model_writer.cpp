@@ -1,5 +1,5 @@
 // Model writers: a model's surface (geometry/tessellation.hpp) as OBJ (+ MTL) / PLY, written
-// atomically; plain geometry exactly as before colours when the mesh has no materials.
+// atomically; a mesh without materials is written as plain geometry (no MTL, no colour columns).
 #include "report/model_writer.hpp"
 
 #include <cstdio>

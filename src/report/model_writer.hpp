@@ -1,8 +1,8 @@
 // Model writers: a model's primitives as a triangle mesh in OBJ or PLY (binary little endian).
 // Every primitive kind is tessellated as in geometry/tessellation.hpp (outward-facing, mirrored
 // frames too); the files appear atomically (temporary file, then rename). A mesh without
-// materials (a grammar without colours) is written as plain geometry, byte for byte as before
-// colours existed. With materials (mesh/mesh.hpp):
+// materials (a grammar without colours) is written as plain geometry: no material library, no
+// colour columns. With materials (mesh/mesh.hpp):
 //   OBJ  a material library next to the OBJ (mtlPathFor: same folder and stem, extension .mtl)
 //        with one `newmtl NAME` and `Kd R G B` per material, the linear colour as it is (the
 //        way Blender reads and writes Kd); the OBJ names it (`mtllib m.mtl`) and lists the faces

@@ -1,6 +1,7 @@
 // CoverageCounts: how many primitives cover each pixel of a picture, so that a child can start
 // from its parent's picture, take away the primitives its operator replaced and add the new
-// ones, without drawing the rest (incremental evaluation, score/model_state.hpp).
+// ones, without drawing the rest (incremental evaluation: score/image_model.hpp holds a model's
+// coverage, score/image_from_parent.cpp scores a child from it).
 //
 // Layout: per 64-pixel word of the picture, the counts as bit planes (plane p holds bit p of the
 // 64 counts) after one plane of the pixels whose count is above zero; words in blocks of
