@@ -1,0 +1,35 @@
+// `shapevo target MESH -o FILE`: a volume or picture target made from a mesh (run/target_from_mesh.hpp).
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "run/target_from_mesh.hpp"
+
+namespace shapevo {
+
+namespace {
+
+TargetRequest targetOptions;
+
+}  // namespace
+
+void TargetCommand::addOptions(CLI::App& command) {
+    TargetRequest& o = targetOptions;
+    command.add_option("mesh", o.meshPath, "triangle mesh, format by extension: .obj, .ply, .stl (read by shapevo) or .off, "
+                                           ".gltf, .glb, .fbx, .3mf, .dae, .3ds, .x, .blend, ... (read by Assimp; an unknown "
+                                           "extension's error lists them all; a scene's meshes are merged in world space); for "
+                                           "a volume its inside must be determinable (holes filled, at most half its surface)")
+        ->required();
+    command.add_option("-o,--output", o.output, "output .vdb, or .png with --image (must not exist)")->required();
+    auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize, "voxel edge length in model units")->capture_default_str();
+    command.add_option("--image", o.imageConfig, "draw the mesh through the camera of this image config ([target] image and "
+                                                 "[camera]) into a PNG of the camera's size that its pixel rule reads as hit "
+                                                 "where the mesh is")
+        ->excludes(voxelOpt);
+}
+
+void TargetCommand::run(const CommandContext&) { makeTargetFromMesh(targetOptions, std::cout, std::cerr); }
+
+}  // namespace shapevo

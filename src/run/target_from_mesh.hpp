@@ -1,0 +1,27 @@
+// makeTargetFromMesh: what `shapevo target` does. A triangle mesh (any format mesh/mesh_reader.hpp
+// reads) becomes a volume target (repaired for a determinable inside, mesh/mesh_repair.hpp, then
+// an OpenVDB level set, score/vdb_target_file.hpp) or, given an image config, a picture target
+// (the mesh drawn through the config's camera into a PNG its pixel rule reads as hit where the
+// mesh is, score/mesh_image_target.hpp). Promises: the output name (its extension, that it does
+// not exist) and the image config are checked before the mesh is read; nothing is overwritten.
+#pragma once
+#include <iosfwd>
+#include <string>
+
+namespace shapevo {
+
+/// The options of `shapevo target`, as the command line gives them.
+struct TargetRequest {
+    std::string meshPath;     ///< the mesh to read
+    std::string output;       ///< -o: .vdb, or .png with imageConfig; must not exist
+    double voxelSize = 0.1;   ///< --voxel-size: a volume's voxel edge in model units
+    std::string imageConfig;  ///< --image: a config with an image target and camera ("" = a volume)
+};
+
+/// Writes the target `request` asks for. Prints what was made ("mesh: ...", "inside: ..." or the
+/// pixels covered, "wrote FILE") to `out`, and the mesh reader's warnings ("shapevo: warning:
+/// ...") to `err`. @throw InputError for a bad output name, an image config without an image
+/// target, or a mesh that cannot be read, repaired or made into the target.
+void makeTargetFromMesh(const TargetRequest& request, std::ostream& out, std::ostream& err);
+
+}  // namespace shapevo
