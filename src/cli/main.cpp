@@ -34,7 +34,7 @@
 #include "report/render/model_picture.hpp"
 #include "cli/log_router.hpp"
 #include "run/config_file.hpp"
-#include "run/island_loop.hpp"
+#include "island/together.hpp"
 #include "run/memory_check.hpp"
 #include "run/model_export.hpp"
 #include "run/run_job.hpp"
