@@ -64,7 +64,9 @@ struct RunEnd {
     RunTotals totals;
     std::uint32_t generation = 0;  ///< rank 0's island's
     std::size_t population = 0;    ///< individuals per island
-    int threads = 0, islands = 1, ranks = 1;
+    int threads = 0;               ///< evaluation threads per island
+    int islands = 1;               ///< islands taking part (1 without MPI): the wait shares' mean
+    int ranks = 1;                 ///< MPI ranks (summary.json's islands)
     StopReason stop;
 };
 
