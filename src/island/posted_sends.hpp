@@ -23,7 +23,6 @@ public:
     void post(const void* data, std::size_t count, Type type, int rank, int tag);
     /// Every posted send has completed (tests each; never blocks).
     bool allComplete();
-    std::size_t inFlight() const { return sends_.size(); }
 
 private:
     struct Send;

@@ -13,7 +13,7 @@
 #include "grammar/parser.hpp"
 #include "run/command_options.hpp"
 #include "run/config_file.hpp"
-#include "run/island_loop.hpp"
+#include "island/together.hpp"
 #include "run/memory_check.hpp"
 #include "run/run_job.hpp"
 #include "search/evaluator.hpp"
