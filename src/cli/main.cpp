@@ -24,7 +24,7 @@
 #include "genome/genome_file.hpp"
 #include "genome/sample.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "island/mpi_session.hpp"
 #include "island/stop_signal.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -198,12 +198,12 @@ int main(int argc, char** argv) {
         ->excludes(voxelOpt);
 
     // translate
-    auto* translate = app.add_subcommand("translate", "Print what a CastleMaker rule file (.rule) compiles into, in the shapevo "
-                                                      "grammar language: shapevo translate FILE.rule");
+    auto* translate = app.add_subcommand("translate", "Print what " + translatingFrontEnds() + " compiles into, in the shapevo "
+                                                      "grammar language: shapevo translate FILE");
     std::string translatePath;
     std::vector<std::string> translateAttrs;
-    translate->add_option("rule_file", translatePath, "CastleMaker rule file (grammars/castlemaker/README.md)")->required();
-    translate->add_option("--attr", translateAttrs, "replace an attr of the rule file, NAME=VALUE (repeatable)");
+    translate->add_option("file", translatePath, "grammar file to translate: " + translatingFrontEnds())->required();
+    translate->add_option("--attr", translateAttrs, "replace an attr of the file, NAME=VALUE (repeatable)");
 
     // evaluate
     auto* evaluate = app.add_subcommand("evaluate", "Score a saved chromosome against a config's target (volume or image), "
@@ -367,7 +367,7 @@ int main(int argc, char** argv) {
             // A recursion that ends only by chance (a rule file's recursive stochastic rule,
             // castlemaker-crl.txt §5.2) may grow without end: --max-genes stops each draw, and
             // genome.max_primitives (its default: sample has no config) each model.
-            const bool mayNeverEnd = isRuleFile(grammarPath) || hasOptionalRecursion(g);
+            const bool mayNeverEnd = grammarFrontEndFor(grammarPath).recursionsEndOnlyByChance || hasOptionalRecursion(g);
             const std::string neverEnds = "a recursive stochastic rule may never end (castlemaker-crl.txt §5.2): ";
             Geometry geo;
             DeriveScratch scratch;
@@ -453,8 +453,7 @@ int main(int argc, char** argv) {
                           << "wrote " << vdbOut << "\n";
             }
         } else if (*translate) {
-            if (!isRuleFile(translatePath)) throw InputError(translatePath, "", "not a CastleMaker rule file (expected a .rule file)");
-            std::cout << translateRuleFile(translatePath, parseAttrOptions(translateAttrs));
+            std::cout << translateGrammarFile(translatePath, parseAttrOptions(translateAttrs));
         } else if (*evaluate) {
             const RunSettings s = loadConfig(evalConfig, evalSets);
             const Grammar g = loadGrammar(s.grammarPath, s.grammarAttrs);
