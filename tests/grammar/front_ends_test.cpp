@@ -21,7 +21,7 @@ using test::writeFile;
 
 /// The what() of the InputError `f` throws ("" if it throws none).
 template <class F>
-std::string errorOf(F&& f) {
+std::string inputErrorOf(F&& f) {
     try {
         f();
     } catch (const InputError& e) {
@@ -82,9 +82,9 @@ TEST(FrontEnds, AnyOtherExtensionIsReadAsTheShapevoLanguage) {
     writeFile(dir.file("good.txt"), "start A\nrule A { box }\n");
     EXPECT_EQ(loadGrammar(dir.file("good.txt")).rules.size(), 1u);
     writeFile(dir.file("bad.txt"), "start A\nrule A {\n  rotate q 3\n}\n");
-    EXPECT_EQ(errorOf([&] { loadGrammar(dir.file("bad.txt")); }).rfind(dir.file("bad.txt") + ":3:10: ", 0), 0u);
-    EXPECT_EQ(errorOf([&] { loadGrammar(dir.file("none.txt")); }), dir.file("none.txt") + ": cannot open grammar file");
-    EXPECT_EQ(errorOf([&] { loadGrammar(dir.file("none.rule")); }), dir.file("none.rule") + ": cannot open rule file");
+    EXPECT_EQ(inputErrorOf([&] { loadGrammar(dir.file("bad.txt")); }).rfind(dir.file("bad.txt") + ":3:10: ", 0), 0u);
+    EXPECT_EQ(inputErrorOf([&] { loadGrammar(dir.file("none.txt")); }), dir.file("none.txt") + ": cannot open grammar file");
+    EXPECT_EQ(inputErrorOf([&] { loadGrammar(dir.file("none.rule")); }), dir.file("none.rule") + ": cannot open rule file");
 }
 
 TEST(FrontEnds, RuleFilesCompileThroughTheTable) {
@@ -112,11 +112,11 @@ TEST(TranslateGrammarFile, TakesAttrOverrides) {
 
 TEST(TranslateGrammarFile, RefusesAFileThatNeedsNoTranslation) {
     const std::string path = sourcePath("grammars/castle.grammar");
-    EXPECT_EQ(errorOf([&] { translateGrammarFile(path); }),
+    EXPECT_EQ(inputErrorOf([&] { translateGrammarFile(path); }),
               path + ": is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule)");
-    EXPECT_EQ(errorOf([&] { translateGrammarFile("missing.txt"); }),
+    EXPECT_EQ(inputErrorOf([&] { translateGrammarFile("missing.txt"); }),
               "missing.txt: is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule)");
-    EXPECT_EQ(errorOf([&] { translateGrammarFile("missing.rule"); }), "missing.rule: cannot open rule file");
+    EXPECT_EQ(inputErrorOf([&] { translateGrammarFile("missing.rule"); }), "missing.rule: cannot open rule file");
 }
 
 // A problem the rule-file reader finds, and one only the parse of its translation finds, are both
@@ -124,13 +124,13 @@ TEST(TranslateGrammarFile, RefusesAFileThatNeedsNoTranslation) {
 TEST(TranslateGrammarFile, ErrorsAreLocatedInTheRuleFile) {
     TempDir dir;
     writeFile(dir.file("bad.rule"), "L = rect(0, 0, 1, 1);\nL -> extrude(2) {Missing};\n");
-    EXPECT_EQ(errorOf([&] { translateGrammarFile(dir.file("bad.rule")); }).rfind(dir.file("bad.rule") + ":2:18: handle 'Missing'", 0), 0u);
+    EXPECT_EQ(inputErrorOf([&] { translateGrammarFile(dir.file("bad.rule")); }).rfind(dir.file("bad.rule") + ":2:18: handle 'Missing'", 0), 0u);
     writeFile(dir.file("main.rule"), "L = rect(0, 0, 1, 1);\nL -> add_texture(\"stone\", \"stone.png\", 2, 1) {A};\n"
                                      "A -> insert_volume(1, 1, 1, 0, 0, 1);\n");
     writeFile(dir.file("stone.png"), "png");
     const std::string expected = dir.file("main.rule") + ":2:6: texture 'stone.png' is not a PNG";
-    EXPECT_EQ(errorOf([&] { translateGrammarFile(dir.file("main.rule")); }).rfind(expected, 0), 0u);
-    EXPECT_EQ(errorOf([&] { loadGrammar(dir.file("main.rule")); }).rfind(expected, 0), 0u);
+    EXPECT_EQ(inputErrorOf([&] { translateGrammarFile(dir.file("main.rule")); }).rfind(expected, 0), 0u);
+    EXPECT_EQ(inputErrorOf([&] { loadGrammar(dir.file("main.rule")); }).rfind(expected, 0), 0u);
 }
 
 // Any front end that translates gets this: a parse error of the translated text names the place
@@ -140,7 +140,7 @@ TEST(CompileTranslation, ReportsTheTranslatedTextsErrorsAtTheirOrigin) {
     t.text = "start A\nrule A {\n  rotate q 3\n}\n";
     t.origin = {{"street.pcg", 1, 1}, {"street.pcg", 4, 2}, {"street.pcg", 7, 5}, {"street.pcg", 4, 2}};
     t.files = {"lamp.pcg"};
-    EXPECT_EQ(errorOf([&] { compileTranslation(t, "graph text", "/x/street.pcg", {}); }).rfind("street.pcg:7:5: ", 0), 0u);
+    EXPECT_EQ(inputErrorOf([&] { compileTranslation(t, "graph text", "/x/street.pcg", {}); }).rfind("street.pcg:7:5: ", 0), 0u);
     t.text = "start A\nrule A {\n  box\n}\n";
     const Grammar g = compileTranslation(t, "graph text", "/x/street.pcg", {});
     EXPECT_EQ(g.source, "graph text");
