@@ -27,7 +27,7 @@ struct GrammarFrontEnd {
     Translation (*translate)(const std::string& text, const std::string& path, const AttrOverrides& overrides);
     /// Its recursions may end only by chance (a CastleMaker recursive stochastic rule,
     /// castlemaker-crl.txt §5.2), so an uncontrolled derivation may grow without end whatever
-    /// genome::hasOptionalRecursion finds in the compiled Grammar.
+    /// hasOptionalRecursion (genome/sample.hpp) finds in the compiled Grammar.
     bool recursionsEndOnlyByChance = false;
 };
 
