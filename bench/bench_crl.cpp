@@ -16,7 +16,7 @@
 #include "genome/sample.hpp"
 #include "geometry/derive.hpp"
 #include "geometry/tessellation.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "mesh/glb_writer.hpp"
 
 #include "run_derive.hpp"

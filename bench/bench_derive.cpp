@@ -15,7 +15,7 @@
 
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 #include "breadth_first_tree.hpp"
 

@@ -9,7 +9,7 @@
 
 #include <cstdint>
 
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"

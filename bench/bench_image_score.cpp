@@ -27,7 +27,7 @@
 #include "bench_main.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/image_scorer.hpp"
 
 #include <glm/gtc/quaternion.hpp>

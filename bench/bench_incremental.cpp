@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "bench_main.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 #include "score/image_model.hpp"

@@ -16,7 +16,7 @@
 #include <cstdio>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "island/async_control.hpp"
 #include "island/island_meeting.hpp"
 #include "island/ring_migration.hpp"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/search_methods.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "checkpoint/checkpoint_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "test_support.hpp"
 
 namespace shapevo::test {

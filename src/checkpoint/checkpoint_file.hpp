@@ -7,13 +7,13 @@
 // flushed; a folder without a valid MANIFEST, or whose files do not match it, is incomplete.
 // The HDF5 layouts (stable names) are documented at the top of island_file.cpp and run_file.cpp.
 #pragma once
-#include "grammar/parser.hpp"
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "checkpoint/island_state.hpp"
 #include "genome/chromosome.hpp"
+#include "grammar/attr_overrides.hpp"
 
 namespace shapevo {
 

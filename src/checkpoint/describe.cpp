@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "checkpoint/checkpoint_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {

@@ -19,7 +19,8 @@ constexpr std::array<CommandEntry, 9> kCommands{{
      "a picture of its silhouette or shadow",
      false, TargetCommand::addOptions, TargetCommand::run},
     {"translate",
-     "Print what a CastleMaker rule file (.rule) compiles into, in the shapevo grammar language: shapevo translate FILE.rule",
+     "Print what a grammar file of another front end (a CastleMaker rule file, .rule) compiles into, in the shapevo grammar "
+     "language: shapevo translate FILE",
      false, TranslateCommand::addOptions, TranslateCommand::run},
     {"evaluate",
      "Score a saved chromosome against a config's target (volume or image), as run scores it: shapevo evaluate CONFIG.toml "

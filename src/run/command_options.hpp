@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "grammar/parser.hpp"
+#include "grammar/attr_overrides.hpp"
 
 namespace shapevo {
 

@@ -8,7 +8,7 @@
 #include "base/input_error.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "mesh/glb_writer.hpp"
 #include "report/model_writer.hpp"
 #include "report/run_report.hpp"

@@ -7,7 +7,7 @@
 
 #include "base/atomic_write.hpp"
 #include "checkpoint/checkpoint_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "base/input_error.hpp"
 #include "run/island_loop.hpp"

@@ -10,7 +10,7 @@
 #include "genome/genome_file.hpp"
 #include "genome/sample.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "report/model_writer.hpp"
 #include "report/render/contact_sheet.hpp"
 #include "run/command_options.hpp"
@@ -103,7 +103,7 @@ void sampleModels(const SampleRequest& r, std::ostream& out) {
     }
     // Every derivation is drawn once before anything is written, so a size window that cannot
     // be met leaves no files behind; the second draw repeats the first exactly.
-    Sampler s{g, r, seed, isRuleFile(r.grammarPath) || hasOptionalRecursion(g), {}, {}};
+    Sampler s{g, r, seed, grammarFrontEndFor(r.grammarPath).recursionsEndOnlyByChance || hasOptionalRecursion(g), {}, {}};
     Chromosome c;
     for (std::uint32_t k = 1; k <= count; ++k) drawModel(s, k, c);
     for (std::uint32_t k = 1; k <= count; ++k) {

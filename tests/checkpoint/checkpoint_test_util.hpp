@@ -11,7 +11,7 @@
 
 #include "checkpoint/checkpoint_file.hpp"
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo::test {

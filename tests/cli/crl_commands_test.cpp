@@ -1,6 +1,7 @@
 // CastleMaker rule files through every command: a config's grammar.file may name a .rule file;
 // run (with checkpoints), resume (equal to the uninterrupted run), export, evaluate, sample and
-// translate take it; an include changed since the run started is caught on resume.
+// translate take it (translate refuses a .grammar file); an include changed since the run started
+// is caught on resume.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -80,6 +81,16 @@ TEST(CrlCommands, ABadRuleFileIsOneLocatedMessageAndExitTwo) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("bad.rule:2:18: handle 'Missing' is never defined"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("x.obj")));
+}
+
+TEST(CrlCommands, TranslateRefusesAFileThatNeedsNoTranslation) {
+    const std::string grammar = sourcePath("grammars/castle.grammar");
+    const auto r = runShapevo("translate " + grammar);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find(grammar + ": is read as a shapevo grammar, which needs no translation; shapevo translate reads a "
+                                      "CastleMaker rule file (.rule)"),
+              std::string::npos)
+        << r.output;
 }
 
 }  // namespace

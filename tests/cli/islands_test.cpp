@@ -14,7 +14,7 @@
 #include "../island_compare.hpp"
 #include "../test_support.hpp"
 #include "checkpoint/checkpoint_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

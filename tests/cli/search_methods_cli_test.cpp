@@ -9,7 +9,7 @@
 #include "search/search_methods.hpp"
 #include "../test_support.hpp"
 #include "checkpoint/checkpoint_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -45,7 +45,7 @@
 #include "checkpoint/island_codec.hpp"
 #include "genome/operators.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
 namespace {

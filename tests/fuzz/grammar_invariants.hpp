@@ -12,7 +12,7 @@
 
 #include "base/input_error.hpp"
 #include "grammar/expression.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo::fuzz {
 

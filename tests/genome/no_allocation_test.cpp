@@ -11,7 +11,7 @@
 #include "../score/silhouette_test_util.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/vdb_target_file.hpp"
 #include "score/image_scorer.hpp"
 #include "score/volume_scorer.hpp"

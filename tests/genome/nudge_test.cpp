@@ -11,7 +11,7 @@
 #include "genome/operators.hpp"
 #include "genome/priors.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

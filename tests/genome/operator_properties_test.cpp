@@ -5,7 +5,7 @@
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

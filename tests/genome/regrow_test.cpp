@@ -10,7 +10,7 @@
 #include "genome/operators.hpp"
 #include "genome/regrow.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

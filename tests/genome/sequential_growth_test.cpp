@@ -6,7 +6,7 @@
 #include "../test_support.hpp"
 #include "genome/sequential_growth.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -15,7 +15,7 @@
 #include "geometry/derive.hpp"
 #include "geometry/tessellation.hpp"
 #include "grammar/crl/crl_syntax.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -14,7 +14,7 @@
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/expression.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -11,7 +11,7 @@
 #include "base/input_error.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -11,7 +11,7 @@
 #include "genome/random.hpp"
 #include "genome/sample.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

@@ -15,7 +15,7 @@
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/primitive_cache.hpp"
 
 namespace shapevo {

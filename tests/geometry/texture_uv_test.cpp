@@ -16,7 +16,7 @@
 #include "geometry/tessellation.hpp"
 #include "geometry/texture_look.hpp"
 #include "geometry/texture_uv.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

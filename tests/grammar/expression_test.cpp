@@ -8,7 +8,7 @@
 
 #include "../test_support.hpp"
 #include "grammar/expression.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "grammar/grammar.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo::test {
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {

@@ -11,7 +11,7 @@
 
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 
 namespace shapevo {
 namespace {

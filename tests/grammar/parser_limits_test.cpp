@@ -5,7 +5,7 @@
 #include <string>
 
 #include "grammar/expression.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {

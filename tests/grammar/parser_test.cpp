@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "grammar_test_util.hpp"
 #include "base/input_error.hpp"
 

@@ -15,7 +15,7 @@
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "geometry/tessellation.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "report/model_writer.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/memory_check.hpp"
 #include "search/memory_estimate.hpp"

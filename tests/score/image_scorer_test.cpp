@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/image_scorer.hpp"
 #include "../small_tree_grammar.hpp"
 #include "silhouette_test_util.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/image_scorer.hpp"
 #include "../model_stream.hpp"
 #include "../small_tree_grammar.hpp"

@@ -5,7 +5,7 @@
 #include <thread>
 
 #include "function_scorer.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "search/evaluator.hpp"
 
 namespace shapevo {

@@ -7,7 +7,7 @@
 #include <atomic>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "search/evaluator.hpp"
 #include "../small_tree_grammar.hpp"
 

@@ -11,7 +11,7 @@
 #include "../test_support.hpp"
 #include "spaceship_fixture.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/hybrid_search.hpp"

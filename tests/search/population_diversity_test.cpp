@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "search/genetic_algorithm.hpp"
 #include "search/population_diversity.hpp"
 #include "function_scorer.hpp"

@@ -10,7 +10,7 @@
 
 #include "function_scorer.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "search/rjmcmc.hpp"
 
 namespace shapevo {

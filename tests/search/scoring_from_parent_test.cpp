@@ -12,7 +12,7 @@
 
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 #include "score/image_scorer.hpp"

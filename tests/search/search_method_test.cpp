@@ -9,7 +9,7 @@
 #include "function_scorer.hpp"
 #include "genome/sequential_growth.hpp"
 #include "genome/validate.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 #include "search/rjmcmc.hpp"

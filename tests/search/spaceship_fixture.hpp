@@ -2,7 +2,7 @@
 // scene the search tests run their methods on.
 #pragma once
 #include "../test_support.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "score/vdb_target_file.hpp"
 #include "score/volume_scorer.hpp"
 

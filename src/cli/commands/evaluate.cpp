@@ -8,7 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "genome/genome_file.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 

@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/command_options.hpp"
 #include "run/config_file.hpp"
 #include "island/together.hpp"

@@ -1,5 +1,5 @@
-// `shapevo translate FILE.rule`: print what a CastleMaker rule file compiles into, in the shapevo
-// grammar language (grammar/parser.hpp).
+// `shapevo translate FILE`: print what a grammar file of a front end that translates (a CastleMaker
+// rule file today; grammar/front_ends.hpp) compiles into, in the shapevo grammar language.
 #include <iostream>
 #include <string>
 #include <vector>
@@ -8,7 +8,7 @@
 
 #include "base/input_error.hpp"
 #include "cli/commands.hpp"
-#include "grammar/parser.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/command_options.hpp"
 
 namespace shapevo {
@@ -25,14 +25,14 @@ TranslateOptions translateOptions;
 
 void TranslateCommand::addOptions(CLI::App& command) {
     TranslateOptions& o = translateOptions;
-    command.add_option("rule_file", o.path, "CastleMaker rule file (grammars/castlemaker/README.md)")->required();
-    command.add_option("--attr", o.attrs, "replace an attr of the rule file, NAME=VALUE (repeatable)");
+    command.add_option("file", o.path, "grammar file to translate: " + translatingFrontEnds() + " (grammars/castlemaker/README.md)")
+        ->required();
+    command.add_option("--attr", o.attrs, "replace an attr of the file, NAME=VALUE (repeatable)");
 }
 
 void TranslateCommand::run(const CommandContext&) {
     const TranslateOptions& o = translateOptions;
-    if (!isRuleFile(o.path)) throw InputError(o.path, "", "not a CastleMaker rule file (expected a .rule file)");
-    std::cout << translateRuleFile(o.path, parseAttrOptions(o.attrs));
+    std::cout << translateGrammarFile(o.path, parseAttrOptions(o.attrs));
 }
 
 }  // namespace shapevo

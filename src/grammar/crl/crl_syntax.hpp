@@ -6,12 +6,9 @@
 #include <string>
 #include <vector>
 
-namespace shapevo::crl {
+#include "grammar/translation.hpp"  // Location: a place in the user's file
 
-struct Location {
-    std::string file;  ///< as shown in messages (the path the file was read from)
-    int line = 0, column = 0;
-};
+namespace shapevo::crl {
 
 enum class ArgKind { Number, Name, Rand, String };
 /// One argument of a function: a number, an attr's name, rand(a, b) (bounds: numbers or attr

@@ -18,17 +18,12 @@
 #include <vector>
 
 #include "grammar/crl/crl_syntax.hpp"
+#include "grammar/translation.hpp"
 
 namespace shapevo::crl {
 
-/// The .grammar text of a rule file and where each of its lines came from.
-struct Translation {
-    std::string text;
-    std::vector<Location> origin;     ///< per line of `text`
-    std::vector<std::string> files;   ///< every included or inserted rule file read, relative to the main file's folder
-};
-
-/// Translate the rule file `path` (its text given). `attrs` replaces attrs' values as a config's
+/// Translate the rule file `path` (its text given) into the shapevo language (grammar/translation.hpp;
+/// Translation::files: every included or inserted rule file read). `attrs` replaces attrs' values as a config's
 /// [grammar.attr] does (the translation needs them where a count shapes the model).
 /// @throw InputError at file:line:column for every problem the rule file has.
 Translation translateCrl(const std::string& text, const std::string& path, const std::map<std::string, double>& attrs);
