@@ -30,12 +30,6 @@ std::string jsonString(const std::string& s) {
 }
 }  // namespace
 
-std::string formatDouble(double v) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, end);
-}
-
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path) {
     std::string text = "generation,seconds,evaluations,best,mean,std,iou\n";
     for (const auto& s : curve) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/format_double.hpp"  // formatDouble, for the reports' users
 #include "search/genetic_algorithm.hpp"
 
 namespace shapevo {
@@ -42,7 +43,5 @@ struct RunSummary {
 /// best model's voxel or silhouette IoU, is empty where it was not measured).
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path);
 void writeSummaryJson(const RunSummary& s, const std::string& path);
-/// Doubles in reports: shortest text that reads back to the same value.
-std::string formatDouble(double v);
 
 }  // namespace shapevo
