@@ -11,7 +11,7 @@
 
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace {

@@ -12,7 +12,7 @@
 
 #include "grammar/parser.hpp"
 #include "run/config_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
 #include "search/search_methods.hpp"
 
 namespace {

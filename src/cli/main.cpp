@@ -39,9 +39,7 @@
 #include "run/model_export.hpp"
 #include "run/run_job.hpp"
 #include "run/scene.hpp"
-#include "score/camera.hpp"
-#include "score/mesh_image_target.hpp"
-#include "score/vdb_target_file.hpp"
+#include "score/volume/vdb_target_file.hpp"
 #include "search/evaluator.hpp"
 
 namespace {
@@ -246,7 +244,10 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--format", exportFormat,
                           "obj, ply, glb (the model), vdb (its voxels on a volume target's grid) or png (its silhouette "
                           "over an image target); must match the output file's extension")
-        ->check(CLI::IsMember({"obj", "ply", "glb", "vdb", "png"}));
+        ->check(CLI::IsMember([] {
+            const std::vector<std::string_view> formats = exportFormats();  // meshes and every target kind's
+            return std::vector<std::string>(formats.begin(), formats.end());
+        }()));
 
     // render
     auto* renderCmd = app.add_subcommand("render", "Draw a shaded picture of a model (PNG; on the CPU, no display needed): "
@@ -317,7 +318,7 @@ int main(int argc, char** argv) {
             }
             std::cout << describeCheckpoint(folder, inspectVerbose, attrs);
         } else if (*exportCmd) {
-            requireOutputFormat(exportOut, kExportFormats, "-o", exportFormat);
+            requireOutputFormat(exportOut, exportFormats(), "-o", exportFormat);
             refuseExisting(exportOut);
             std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(exportPath)), exportFormat, exportOut) << "\n";
         } else if (*renderCmd) {
@@ -430,20 +431,15 @@ int main(int argc, char** argv) {
             std::optional<RunSettings> imageSettings;
             if (!imageConfig.empty()) {
                 imageSettings = loadConfig(imageConfig, {});
-                if (!imageSettings->image)
+                if (!imageSettings->target->kind().drawMeshTarget)
                     throw InputError(imageConfig, "", "has no image target and camera ([target] image = \"FILE.png\" and a "
                                                       "[camera] section); --image draws through an image config's camera");
             }
             const Mesh mesh = readMesh(meshPath);
             for (const std::string& w : mesh.warnings) std::cerr << "shapevo: warning: " << w << "\n";
             if (imageSettings) {
-                const Camera camera = Camera::compile(imageSettings->image->camera, imageConfig);
-                const std::uint64_t covered =
-                    writeMeshImageTarget(mesh, camera, imageSettings->image->rule, meshPath, imageConfig + " [target]", vdbOut);
-                std::cout << "mesh: " << groupedNumber(mesh.triangles.size()) << " triangles; "
-                          << (camera.projection() == Projection::Shadow ? "shadow" : "silhouette") << " covers "
-                          << groupedNumber(covered) << " of " << camera.width() << " x " << camera.height() << " pixels\n"
-                          << "wrote " << vdbOut << "\n";
+                const TargetSettings& through = *imageSettings->target;
+                std::cout << through.kind().drawMeshTarget(through, mesh, meshPath, imageConfig, vdbOut);
             } else {
                 const MeshRepair repaired = repairForVolume(mesh, meshPath);
                 std::cout << "mesh: " << describeRepair(repaired) << std::endl;

@@ -17,8 +17,10 @@ struct RunSummary {
     std::uint64_t evaluations = 0;
     double wallSeconds = 0;
     double bestFitness = 0;
-    std::optional<double> voxelIoU;       ///< volume targets
-    std::optional<double> silhouetteIoU;  ///< image targets
+    /// The best model's IoU under its target kind's key (TargetKind::iouKey: "voxel_iou",
+    /// "silhouette_iou"); no key, no field.
+    std::string iouKey;
+    double iou = 0;
     std::uint32_t bestGenes = 0;
     std::size_t bestPrimitives = 0;
     std::uint64_t targetHash = 0;

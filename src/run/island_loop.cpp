@@ -430,7 +430,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         writeCurveCsv(meta.curve, folder + "/curve.csv");
         CurvePlotLabels plot;
         plot.title = (s.name.empty() ? std::string("shapevo run") : s.name) + ": " + scene.description();
-        plot.iouName = s.image ? "silhouette IoU" : "voxel IoU";
+        plot.iouName = scene.kind().iouName;
         writeCurveSvg(meta.curve, plot, folder + "/curve.svg");
         writeCurvePng(meta.curve, plot, folder + "/curve.png");
         RunSummary sum;
@@ -446,8 +446,7 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         sum.bestPrimitives = geometry.primitives.size();
         sum.targetHash = scene.hash();
         scene.reportBest(champion, folder, sum);
-        const bool image = sum.silhouetteIoU.has_value();
-        result.iou = image ? *sum.silhouetteIoU : sum.voxelIoU.value_or(0.0);
+        result.iou = sum.iou;
         sum.threads = evaluator.threads();
         sum.islands = mpi.size();
         sum.changedInputs = options.changedInputs;
@@ -475,9 +474,9 @@ JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar&
         if (!options.quiet || result.stoppedBySignal) {
             char line[300];
             if (!bySignal)
-                std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, %s IoU %.4f, %llu evaluations in %s -> %s/\n",
+                std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, %s %.4f, %llu evaluations in %s -> %s/\n",
                               stopReason == "done" ? "" : " after ", stopReason == "done" ? "" : stopReason.c_str(),
-                              result.bestFitness, image ? "silhouette" : "voxel", result.iou, static_cast<unsigned long long>(result.evaluations),
+                              result.bestFitness, std::string(scene.kind().iouName).c_str(), result.iou, static_cast<unsigned long long>(result.evaluations),
                               humanSeconds(result.wallSeconds).c_str(), folder.c_str());
             else
                 std::snprintf(line, sizeof line,

@@ -3,6 +3,8 @@
 
 #include <array>
 
+#include "base/format_double.hpp"
+
 #include "score/image/image_kind.hpp"
 #include "score/volume/volume_kind.hpp"
 
