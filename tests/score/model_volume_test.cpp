@@ -16,7 +16,7 @@
 #include "../test_support.hpp"
 
 namespace shapevo {
-namespace {
+namespace model_volume_test {  // named: a unity batch may hold another testGrid()
 
 GridSpec testGrid() {
     GridSpec g;
@@ -118,5 +118,5 @@ TEST(ModelVolume, EmptyGridOrUnwritablePathThrowsInputError) {
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
-}  // namespace
+}  // namespace model_volume_test
 }  // namespace shapevo

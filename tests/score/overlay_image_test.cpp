@@ -9,7 +9,7 @@
 #include "../test_support.hpp"
 
 namespace shapevo {
-namespace {
+namespace overlay_image_test {  // named: a unity batch may hold another pixel()
 
 Rgba pixel(const test::RgbaImage& img, int x, int y) {
     return {img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2), img.at(x, y, 3)};
@@ -60,5 +60,5 @@ TEST(OverlayImage, OutcomeColoursAreClearlyDifferent) {
         }
 }
 
-}  // namespace
+}  // namespace overlay_image_test
 }  // namespace shapevo
