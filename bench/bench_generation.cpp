@@ -11,7 +11,8 @@
 
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
+#include "score/volume/volume_kind.hpp"
 #include "search/genetic_algorithm.hpp"
 
 namespace {
@@ -21,7 +22,8 @@ using namespace shapevo;
 void BM_GaRun(benchmark::State& state) {
     const RunSettings s = loadConfig(SHAPEVO_SOURCE_DIR "/configs/spaceship.toml");
     const Grammar grammar = loadGrammar(s.grammarPath);
-    const VolumeTarget target = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
+    const auto& volume = static_cast<const VolumeTargetSettings&>(*s.target);  // spaceship.toml is a volume config
+    const VolumeTarget target = loadVolumeTarget(volume.targets, volume.grid ? &*volume.grid : nullptr);
     const VolumeScorer scorer(grammar, target, s.fitness);
     Evaluator evaluator(scorer, int(state.range(0)));
     std::uint64_t evaluations = 0;

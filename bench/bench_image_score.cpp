@@ -28,7 +28,7 @@
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/image_scorer.hpp"
+#include "score/image/image_scorer.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -126,7 +126,7 @@ void setCounters(benchmark::State& state, std::uint64_t primitives, std::uint64_
 void scoreOnly(benchmark::State& state, bool cylinderLeaves) {
     const Grammar& g = tree(cylinderLeaves);
     const Camera camera = paperCamera();
-    const VolumeFitnessSettings settings;
+    const FitnessSettings settings;
     std::vector<Geometry> models(trees().size());
     DeriveScratch scratch;
     for (std::size_t k = 0; k < models.size(); ++k) derive(g, trees()[k], models[k], scratch);
@@ -152,7 +152,7 @@ void BM_ImageScoreCylinders(benchmark::State& state) { scoreOnly(state, true); }
 
 void BM_ImageDeriveScore(benchmark::State& state) {
     const Camera camera = paperCamera();
-    const ImageScorer scorer(tree(false), camera, mickey(), VolumeFitnessSettings{});
+    const ImageScorer scorer(tree(false), camera, mickey(), FitnessSettings{});
     ImageScorer::Workspace ws(camera);
     SilhouetteCounts counts;
     for (const Chromosome& c : trees()) scorer.fitness(c, ws, &counts);  // warm
@@ -181,7 +181,7 @@ Chromosome largeTree(std::uint32_t genes) {
 void BM_LargeTree(benchmark::State& state) {
     const int part = int(state.range(0));
     const Camera camera = paperCamera();
-    const ImageScorer scorer(tree(false), camera, mickey(), VolumeFitnessSettings{});
+    const ImageScorer scorer(tree(false), camera, mickey(), FitnessSettings{});
     static const Chromosome c = largeTree(50000);
     ImageScorer::Workspace ws(camera);
     SilhouetteCounts counts;
@@ -218,7 +218,7 @@ void BM_LargeTreeChild(benchmark::State& state) {
     const bool incremental = state.range(1) != 0;
     const Camera camera = paperCamera();
     const Grammar& g = tree(false);
-    ImageScorer scorer(g, camera, mickey(), VolumeFitnessSettings{});
+    ImageScorer scorer(g, camera, mickey(), FitnessSettings{});
     static std::map<std::int64_t, Chromosome> parents;
     if (!parents.count(state.range(2))) parents[state.range(2)] = largeTree(std::uint32_t(state.range(2)));
     const Chromosome& parent = parents[state.range(2)];

@@ -35,8 +35,8 @@
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
-#include "score/image_model.hpp"
-#include "score/image_scorer.hpp"
+#include "score/image/image_model.hpp"
+#include "score/image/image_scorer.hpp"
 #include "search/search_methods.hpp"
 
 namespace {
@@ -116,7 +116,7 @@ Recording& recording(int scene) {
     return r;
 }
 
-/// Bytes the models of `pop` hold for their children (score/image_model.hpp): chromosome
+/// Bytes the models of `pop` hold for their children (score/image/image_model.hpp): chromosome
 /// copies and coverage counts, each shared block once.
 std::size_t heldByModels(const Population& pop, const Scorer& scorer) {
     const auto* image = dynamic_cast<const ImageScorer*>(&scorer);  // (volume scorers keep no models)

@@ -26,8 +26,8 @@
 
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/vdb_target_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/vdb_target_file.hpp"
+#include "score/volume/volume_scorer.hpp"
 
 namespace {
 
@@ -89,7 +89,7 @@ void setCounters(benchmark::State& state, std::uint64_t rows, const GridSpec* gr
 
 void BM_DeriveScore(benchmark::State& state) {
     const VolumeTarget& target = targetFor(state.range(0));
-    const VolumeScorer scorer(spaceship(), target, VolumeFitnessSettings{});
+    const VolumeScorer scorer(spaceship(), target, FitnessSettings{});
     const auto& pop = population();
     auto ws = std::make_unique<VolumeScorer::Workspace>(target.grid);
     VoxelCounts counts;

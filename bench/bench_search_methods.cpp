@@ -12,7 +12,8 @@
 
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_kind.hpp"
+#include "score/volume/volume_scorer.hpp"
 #include "search/search_methods.hpp"
 
 namespace {
@@ -27,7 +28,8 @@ void BM_SearchRun(benchmark::State& state) {
     s.search.rjmcmc.delayedRejection = i == methods.size();
     state.SetLabel(std::string(s.search.method) + (s.search.rjmcmc.delayedRejection ? " +DR" : ""));
     const Grammar grammar = loadGrammar(s.grammarPath);
-    const VolumeTarget target = loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr);
+    const auto& volume = static_cast<const VolumeTargetSettings&>(*s.target);  // spaceship.toml is a volume config
+    const VolumeTarget target = loadVolumeTarget(volume.targets, volume.grid ? &*volume.grid : nullptr);
     const VolumeScorer scorer(grammar, target, s.fitness);
     Evaluator evaluator(scorer, 1);
     std::uint64_t evaluations = 0;

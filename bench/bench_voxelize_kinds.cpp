@@ -24,7 +24,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "genome/random.hpp"
-#include "score/voxelizer.hpp"
+#include "score/volume/voxelizer.hpp"
 
 namespace {
 

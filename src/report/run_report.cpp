@@ -30,12 +30,6 @@ std::string jsonString(const std::string& s) {
 }
 }  // namespace
 
-std::string formatDouble(double v) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, end);
-}
-
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path) {
     std::string text = "generation,seconds,evaluations,best,mean,std,iou\n";
     for (const auto& s : curve) {
@@ -58,8 +52,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     t += "  \"evaluations\": " + std::to_string(s.evaluations) + ",\n";
     t += "  \"wall_seconds\": " + formatDouble(s.wallSeconds) + ",\n";
     t += "  \"best_fitness\": " + formatDouble(s.bestFitness) + ",\n";
-    if (s.voxelIoU) t += "  \"voxel_iou\": " + formatDouble(*s.voxelIoU) + ",\n";
-    if (s.silhouetteIoU) t += "  \"silhouette_iou\": " + formatDouble(*s.silhouetteIoU) + ",\n";
+    if (!s.iouKey.empty()) t += "  " + jsonString(s.iouKey) + ": " + formatDouble(s.iou) + ",\n";
     t += "  \"best_genes\": " + std::to_string(s.bestGenes) + ",\n";
     t += "  \"best_primitives\": " + std::to_string(s.bestPrimitives) + ",\n";
     t += "  \"target_hash\": \"" + hashHex(s.targetHash) + "\",\n";

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "search/generation_stats.hpp"
+#include "base/format_double.hpp"  // formatDouble, for the reports' users
 
 namespace shapevo {
 
@@ -16,8 +17,10 @@ struct RunSummary {
     std::uint64_t evaluations = 0;
     double wallSeconds = 0;
     double bestFitness = 0;
-    std::optional<double> voxelIoU;       ///< volume targets
-    std::optional<double> silhouetteIoU;  ///< image targets
+    /// The best model's IoU under its target kind's key (TargetKind::iouKey: "voxel_iou",
+    /// "silhouette_iou"); no key, no field.
+    std::string iouKey;
+    double iou = 0;
     std::uint32_t bestGenes = 0;
     std::size_t bestPrimitives = 0;
     std::uint64_t targetHash = 0;
@@ -42,7 +45,5 @@ struct RunSummary {
 /// best model's voxel or silhouette IoU, is empty where it was not measured).
 void writeCurveCsv(const std::vector<GenerationStats>& curve, const std::string& path);
 void writeSummaryJson(const RunSummary& s, const std::string& path);
-/// Doubles in reports: shortest text that reads back to the same value.
-std::string formatDouble(double v);
 
 }  // namespace shapevo

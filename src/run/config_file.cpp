@@ -1,4 +1,7 @@
-// Config reader: toml++ parse, --set overrides, then a strict walk over known sections and keys.
+// Config reader: toml++ parse, --set overrides, then each stage reads its own section through a
+// SectionReader (base/section_reader.hpp) implemented here over toml++; this file only gathers
+// them (and reads [run] and [grammar], which are the run's own), checks across stages, and
+// rejects what no stage asked for.
 // A value that came from --set is blamed on --set, never on a line of the file; a value quoted
 // in a message is cut to 80 characters.
 #include "run/config_file.hpp"
@@ -14,10 +17,15 @@
 
 #include <toml++/toml.h>
 
-#include "base/section_reader.hpp"
 #include "base/input_error.hpp"
+#include "base/section_reader.hpp"
+#include "checkpoint/checkpoint_section.hpp"
+#include "genome/genome_section.hpp"
+#include "island/migration_section.hpp"
 #include "run/output_folder.hpp"
-#include "search/search_methods.hpp"
+#include "score/score_section.hpp"
+#include "score/target_kinds.hpp"
+#include "search/search_sections.hpp"
 
 namespace shapevo {
 
@@ -31,6 +39,8 @@ std::string place(const toml::node& n) {
 class Reader {
 public:
     Reader(const toml::table& root, std::string path) : root_(root), path_(std::move(path)) {}
+
+    const std::string& path() const { return path_; }
 
     /// Values from --set were parsed on their own and carry no file: name the option instead.
     [[noreturn]] void fail(const toml::node& n, const std::string& what) const {
@@ -46,7 +56,7 @@ public:
 
     /// A rule over several keys ("ga.elitism", "ga.population") is broken: blame --set if one of
     /// them came from it, else the place of the last of them in the file, else `section`.
-    [[noreturn]] void failKeys(std::initializer_list<std::string_view> keys, const std::string& section,
+    [[noreturn]] void failKeys(const std::vector<std::string>& keys, const std::string& section,
                                const std::string& what) const {
         const toml::node* last = nullptr;
         for (const std::string_view qualified : keys) {
@@ -146,27 +156,17 @@ public:
         }
         return out;
     }
-    bool vec3(const toml::table* t, const std::string& sec, const std::string& k, glm::dvec3& out) {
+    /// An array of exactly out.size() numbers; returns whether the key is present.
+    bool numbers(const toml::table* t, const std::string& sec, const std::string& k, std::span<double> out) {
         const toml::node* n = key(t, sec, k);
         if (!n) return false;
+        const std::string what = sec + "." + k + " must be an array of " + std::to_string(out.size()) + " numbers";
         const toml::array* a = n->as_array();
-        if (!a || a->size() != 3) fail(*n, sec + "." + k + " must be an array of 3 numbers");
-        for (int i = 0; i < 3; ++i) {
-            const auto& e = (*a)[std::size_t(i)];
+        if (!a || a->size() != out.size()) fail(*n, what);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const auto& e = (*a)[i];
             if (auto v = e.value<double>()) out[i] = *v;
-            else fail(e, sec + "." + k + " must be an array of 3 numbers");
-        }
-        return true;
-    }
-    bool vec2(const toml::table* t, const std::string& sec, const std::string& k, glm::dvec2& out) {
-        const toml::node* n = key(t, sec, k);
-        if (!n) return false;
-        const toml::array* a = n->as_array();
-        if (!a || a->size() != 2) fail(*n, sec + "." + k + " must be an array of 2 numbers");
-        for (int i = 0; i < 2; ++i) {
-            const auto& e = (*a)[std::size_t(i)];
-            if (auto v = e.value<double>()) out[i] = *v;
-            else fail(e, sec + "." + k + " must be an array of 2 numbers");
+            else fail(e, what);
         }
         return true;
     }
@@ -250,97 +250,66 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     t->insert_or_assign(leaf, std::move(*parsed.get("v")));
 }
 
-/// A SectionReader over one [section] of the config, for stages that read their own keys.
+/// A SectionReader over one [section] of the config: the stages read their own keys through it.
 class TomlSection final : public SectionReader {
 public:
-    TomlSection(Reader& rd, const toml::table* t, std::string section) : rd_(rd), t_(t), section_(std::move(section)) {}
+    TomlSection(Reader& rd, std::string section, std::filesystem::path folder)
+        : rd_(rd), section_(std::move(section)), t_(rd.section(section_)), folder_(std::move(folder)) {}
     void number(std::string_view key, double& v, double lo, double hi) override { rd_.number(t_, section_, std::string(key), v, lo, hi); }
     void count(std::string_view key, std::uint32_t& v, double lo, double hi) override {
         rd_.number(t_, section_, std::string(key), v, lo, hi);
     }
-    void flag(std::string_view key, bool& v) override {
-        if (const toml::node* n = rd_.key(t_, section_, std::string(key))) {
-            if (!n->is_boolean()) rd_.fail(*n, section_ + "." + std::string(key) + " must be true or false");
-            v = *n->value<bool>();
-        }
+    void flag(std::string_view key, bool& v) override { rd_.boolean(t_, section_, std::string(key), v); }
+    void string(std::string_view key, std::string& v) override { rd_.string(t_, section_, std::string(key), v); }
+    std::vector<std::string> strings(std::string_view key) override { return rd_.strings(t_, section_, std::string(key)); }
+    bool numbers(std::string_view key, std::span<double> v) override { return rd_.numbers(t_, section_, std::string(key), v); }
+    bool has(std::string_view key) override { return rd_.key(t_, section_, std::string(key)) != nullptr; }
+    bool present() const override { return t_ != nullptr; }
+    const std::string& file() const override { return rd_.path(); }
+    std::string resolvePath(const std::string& p) const override {
+        return std::filesystem::path(p).is_absolute() ? p : (folder_ / p).lexically_normal().string();
+    }
+    [[noreturn]] void fail(std::string_view key, const std::string& what) const override {
+        const toml::node* n = t_ ? t_->get(key) : nullptr;
+        if (!n) throw InputError(rd_.path(), "[" + section_ + "]", what);
+        rd_.fail(*n, what);
+    }
+    [[noreturn]] void failKeys(const std::vector<std::string>& keys, const std::string& where,
+                               const std::string& what) const override {
+        rd_.failKeys(keys, where, what);
+    }
+    [[noreturn]] void failSection(const std::string& what) const override {
+        if (t_ && !t_->source().path) throw InputError("--set", "", what);
+        throw InputError(rd_.path(), "[" + section_ + "]", what);
+    }
+    void located(const std::function<void()>& check) const override { rd_.located(check); }
+
+private:
+    Reader& rd_;
+    std::string section_;
+    const toml::table* t_;
+    std::filesystem::path folder_;
+};
+
+/// The config's sections, each opened (and made known) when a stage first asks for it.
+class TomlConfig final : public ConfigReader {
+public:
+    TomlConfig(Reader& rd, std::filesystem::path folder) : rd_(rd), folder_(std::move(folder)) {}
+    SectionReader& section(std::string_view name) override {
+        for (const auto& s : sections_)
+            if (s.first == name) return *s.second;
+        sections_.emplace_back(std::string(name), std::make_unique<TomlSection>(rd_, std::string(name), folder_));
+        return *sections_.back().second;
     }
 
 private:
     Reader& rd_;
-    const toml::table* t_;
-    std::string section_;
+    std::filesystem::path folder_;
+    std::vector<std::pair<std::string, std::unique_ptr<TomlSection>>> sections_;
 };
 
-/// [search]: the method (a name in search/search_methods.cpp's table) and every method's own
-/// keys, each read by the method's entry (so a key of another method is known, not an error).
-void readSearch(Reader& rd, RunSettings& r) {
-    const toml::table* t = rd.section("search");
-    SearchSettings& s = r.search;
-    rd.string(t, "search", "method", s.method);
-    if (!findSearchMethod(s.method))
-        rd.fail(*t->get("method"), "search.method must be " + searchMethodNames() + ", got \"" + shortened(s.method) + "\"");
-    rd.boolean(t, "search", "diagnostics", s.diagnostics);
-    TomlSection section(rd, t, "search");
-    for (const SearchMethodEntry& e : searchMethods()) e.readSettings(section, s);
-}
-
-/// [camera]: projection = "perspective" | "orthographic" | "shadow" and its settings; checked by
-/// Camera::compile when the scene is loaded.
-void readCamera(Reader& rd, const toml::table* t, CameraSpec& c, const std::string& path) {
-    const std::string sec = "camera";
-    std::string projection = "perspective";
-    rd.string(t, sec, "projection", projection);
-    if (projection == "perspective") c.projection = Projection::Perspective;
-    else if (projection == "orthographic") c.projection = Projection::Orthographic;
-    else if (projection == "shadow") c.projection = Projection::Shadow;
-    else rd.fail(*t->get("projection"), "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + shortened(projection) + "\"");
-    rd.number(t, sec, "width", c.width, 1, 16384);
-    rd.number(t, sec, "height", c.height, 1, 16384);
-    rd.vec3(t, sec, "eye", c.eye);
-    rd.vec3(t, sec, "look_at", c.lookAt);
-    rd.vec3(t, sec, "up", c.up);
-    rd.number(t, sec, "fov_degrees", c.fovDegrees, -1e9, 1e9);
-    rd.number(t, sec, "view_height", c.viewHeight, -1e12, 1e12);
-    rd.number(t, sec, "near", c.near, -1e12, 1e12);
-    rd.vec3(t, sec, "light", c.light);
-    rd.number(t, sec, "ground_y", c.groundY, -1e12, 1e12);
-    rd.vec2(t, sec, "ground_min", c.groundMin);
-    rd.vec2(t, sec, "ground_max", c.groundMax);
-    rd.located([&] { Camera::compile(c, path, sec); });  // located errors now, not when the run starts
-}
-
-}  // namespace
-
-RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        const auto& s = e.source();
-        throw InputError(path, std::to_string(s.begin.line) + ":" + std::to_string(s.begin.column),
-                         std::string(e.description()));
-    }
-    for (const auto& o : overrides) applyOverride(root, o);
-    // A relative target.image given with --set was typed in the shell: take it from the current
-    // directory (not the config's), and record it absolute so that a resume finds the same file.
-    if (toml::table* t = root["target"].as_table())
-        if (const toml::node* n = t->get("image"); n && !n->source().path)
-            if (const auto v = n->value_exact<std::string>(); v && !v->empty() && !std::filesystem::path(*v).is_absolute())
-                t->insert_or_assign("image", std::filesystem::absolute(*v).lexically_normal().string());
-
-    RunSettings r;
-    r.configPath = path;
-    {
-        std::ostringstream s;
-        s << root;
-        r.configText = overrides.empty() ? text : s.str();
-    }
-    const std::filesystem::path base = std::filesystem::path(path).parent_path();
-    auto resolve = [&](const std::string& p) {
-        return std::filesystem::path(p).is_absolute() ? p : (base / p).lexically_normal().string();
-    };
-    Reader rd(root, path);
-
+/// [run]: name, seed, threads, out, wall_time, target_fitness.
+void readRunSection(Reader& rd, RunSettings& r) {
     const toml::table* run = rd.section("run");
     rd.string(run, "run", "name", r.name);
     if (const std::string problem = runNameProblem(r.name); !problem.empty())
@@ -357,11 +326,14 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
         rd.number(run, "run", "target_fitness", t, -1e300, 1e300);
         r.targetFitness = t;
     }
+}
 
+/// [grammar]: file (resolved against the config's folder) and [grammar.attr] NAME = number.
+void readGrammarSection(Reader& rd, RunSettings& r, const std::filesystem::path& folder) {
     const toml::table* grammar = rd.section("grammar");
     rd.string(grammar, "grammar", "file", r.grammarPath);
     if (r.grammarPath.empty()) rd.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
-    r.grammarPath = resolve(r.grammarPath);
+    if (!std::filesystem::path(r.grammarPath).is_absolute()) r.grammarPath = (folder / r.grammarPath).lexically_normal().string();
     if (const toml::node* attrs = rd.key(grammar, "grammar", "attr")) {
         if (!attrs->is_table()) rd.fail(*attrs, "grammar.attr must be a table of numbers ([grammar.attr] NAME = 1.5)");
         for (const auto& [name, value] : *attrs->as_table()) {
@@ -373,130 +345,13 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
             r.grammarAttrs[std::string(name.str())] = v;
         }
     }
+}
 
-    const toml::table* target = rd.section("target");
-    for (const auto& f : rd.strings(target, "target", "fill")) r.targets.push_back({resolve(f), false});
-    for (const auto& f : rd.strings(target, "target", "avoid")) r.targets.push_back({resolve(f), true});
-    GridOverride grid;
-    const bool hasMin = rd.vec3(target, "target", "grid_min", grid.min);
-    const bool hasMax = rd.vec3(target, "target", "grid_max", grid.max);
-    rd.number(target, "target", "voxel_size", grid.voxelSize, 1e-6, 1e6);
-    std::string image;
-    rd.string(target, "target", "image", image);
-    ImageSceneSettings pixels;
-    rd.number(target, "target", "hit_min", pixels.rule.hitMin, 0, 255);
-    rd.number(target, "target", "hit_max", pixels.rule.hitMax, 0, 255);
-    rd.number(target, "target", "avoid_min", pixels.rule.avoidMin, 0, 255);
-    rd.number(target, "target", "avoid_max", pixels.rule.avoidMax, 0, 255);
-    rd.number(target, "target", "alpha_threshold", pixels.rule.alphaThreshold, 0, 256);
-    // target.cover: a preset for the four ranges, so it is either it or them; alpha_threshold
-    // goes with both.
-    std::string cover;
-    rd.string(target, "target", "cover", cover);
-    if (rd.key(target, "target", "cover")) {
-        const TargetCover presets[] = {TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
-        const TargetCover* preset = nullptr;
-        for (const TargetCover& c : presets)
-            if (cover == targetCoverName(c)) preset = &c;
-        if (!preset)
-            rd.fail(*target->get("cover"), "target.cover must be \"dark\", \"light\" or \"opaque\", got \"" + shortened(cover) + "\"");
-        for (const char* k : {"hit_min", "hit_max", "avoid_min", "avoid_max"})
-            if (rd.key(target, "target", k))
-                rd.failKeys({"target.cover", "target.hit_min", "target.hit_max", "target.avoid_min", "target.avoid_max"}, "[target]",
-                            "target.cover and target." + std::string(k) +
-                                " both say which pixels to cover: give the preset (cover = \"dark\", \"light\" or "
-                                "\"opaque\") or the luminance ranges (hit_min, hit_max, avoid_min, avoid_max), not both");
-        pixels.rule = PixelRule::forCover(*preset, pixels.rule.alphaThreshold);
-    }
-    std::string fit = targetFitName(pixels.fit);
-    rd.string(target, "target", "fit", fit);
-    if (rd.key(target, "target", "fit")) {
-        bool known = false;
-        for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
-            if (fit == targetFitName(f)) pixels.fit = f, known = true;
-        if (!known)
-            rd.fail(*target->get("fit"),
-                    "target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"" + shortened(fit) + "\"");
-    }
-    rd.number(target, "target", "scale", pixels.scale, 0.01, 1.0);
-    if (rd.key(target, "target", "scale") && pixels.scale < 1.0 && pixels.fit != TargetFit::Contain &&
-        pixels.fit != TargetFit::Stretch)
-        rd.failKeys({"target.scale", "target.fit"}, "[target]",
-                    "target.scale makes the picture take part of the frame, which only target.fit = \"contain\" or "
-                    "\"stretch\" do (\"" + std::string(targetFitName(pixels.fit)) + "\" takes the whole frame)");
-    const toml::table* camera = rd.section("camera");
-    if (!image.empty()) {
-        if (!r.targets.empty() || hasMin || hasMax || rd.key(target, "target", "voxel_size"))
-            rd.failKeys({"target.image", "target.fill", "target.avoid", "target.grid_min", "target.grid_max", "target.voxel_size"},
-                        "[target]", "an image target cannot be combined with fill/avoid volumes or a grid");
-        pixels.png = resolve(image);
-        rd.located([&] { pixels.rule.check(path, "target"); });
-        readCamera(rd, camera, pixels.camera, path);
-        r.image = pixels;
-    } else {
-        if (camera) {
-            if (!camera->source().path) throw InputError("--set", "", "a camera is only used with an image target ([target] image = \"FILE.png\")");
-            throw InputError(path, "[camera]", "a camera is only used with an image target ([target] image = \"FILE.png\")");
-        }
-        if (r.targets.empty() || r.targets.front().avoid)
-            rd.failKeys({"target.fill", "target.avoid"}, "",
-                        "missing [target] fill = \"FILE.vdb\" (at least one fill target) or image = \"FILE.png\"");
-        if (hasMin != hasMax || (hasMin && grid.voxelSize <= 0) || (!hasMin && rd.key(target, "target", "voxel_size")))
-            rd.failKeys({"target.grid_min", "target.grid_max", "target.voxel_size"}, "[target]",
-                        "grid_min, grid_max and voxel_size must be given together");
-        if (hasMin) r.grid = grid;
-    }
-
-    const toml::table* score = rd.section("score");
-    std::string form = "smootherstep";
-    rd.string(score, "score", "form", form);
-    if (form == "smootherstep") r.fitness.form = VolumeFitnessSettings::Form::Smootherstep;
-    else if (form == "weighted") r.fitness.form = VolumeFitnessSettings::Form::WeightedSum;
-    else rd.fail(*score->get("form"), "score.form must be \"smootherstep\" or \"weighted\", got \"" + shortened(form) + "\"");
-    auto& f = r.fitness;
-    constexpr double big = 1e12;
-    rd.number(score, "score", "alpha", f.alpha, -big, big);
-    rd.number(score, "score", "beta", f.beta, -big, big);
-    rd.number(score, "score", "gamma", f.gamma, -big, big);
-    rd.number(score, "score", "length_optimal", f.lengthOptimal, 0, big);
-    rd.number(score, "score", "length_max", f.lengthMax, 0, big);
-    rd.number(score, "score", "fill_weight", f.fillWeight, -big, big);
-    rd.number(score, "score", "empty_weight", f.emptyWeight, -big, big);
-    rd.number(score, "score", "avoid_weight", f.avoidWeight, -big, big);
-    rd.number(score, "score", "overlap_weight", f.overlapWeight, -big, big);
-    rd.number(score, "score", "outside_weight", f.outsideWeight, -big, big);
-    rd.boolean(score, "score", "incremental", r.incremental.enabled);
-    rd.number(score, "score", "cache_mb", r.incremental.cacheMb, 1, 1 << 20);
-    rd.boolean(score, "score", "check_incremental", r.incremental.check);
-    if (f.lengthMax <= f.lengthOptimal)
-        rd.failKeys({"score.length_optimal", "score.length_max"}, "[score]", "length_max must be greater than length_optimal");
-
-    const toml::table* genome = rd.section("genome");
-    rd.number(genome, "genome", "max_genes", r.limits.maxGenes, 1, 1e7);
-    rd.number(genome, "genome", "max_primitives", r.limits.maxPrimitives, 1, 1 << 26);
-
-    const toml::table* ga = rd.section("ga");
-    auto& g = r.ga;
-    rd.number(ga, "ga", "population", g.population, 2, 1e7);
-    rd.number(ga, "ga", "generations", g.generations, 1, 1e9);
-    rd.number(ga, "ga", "elitism", g.elitism, 0, 1e7);
-    rd.number(ga, "ga", "tournament", g.tournament, 1, 1e7);
-    rd.number(ga, "ga", "mutation", g.mutation, 0, 1);
-    rd.number(ga, "ga", "grow", g.growWeight, 0, big);
-    rd.number(ga, "ga", "cut", g.cutWeight, 0, big);
-    rd.number(ga, "ga", "alter", g.alterWeight, 0, big);
-    rd.number(ga, "ga", "crossover_retries", g.crossoverRetries, 1, 1000);
-    rd.number(ga, "ga", "initial_genes_min", g.initialGenesMin, 1, 1e7);
-    rd.number(ga, "ga", "initial_genes_max", g.initialGenesMax, 1, 1e7);
+/// Checks across stages, after each has read its own keys: the initial lengths fit the genome's
+/// limit and each other.
+void checkInitialGenes(const Reader& rd, const RunSettings& r) {
     const auto n = [](std::uint32_t v) { return std::to_string(v); };
-    if (g.elitism >= g.population)
-        rd.failKeys({"ga.elitism", "ga.population"}, "[ga]",
-                    "elitism must be smaller than population (ga.elitism = " + n(g.elitism) + ", ga.population = " + n(g.population) + ")");
-    if (g.tournament > g.population)
-        rd.failKeys({"ga.tournament", "ga.population"}, "[ga]",
-                    "tournament must not exceed population (ga.tournament = " + n(g.tournament) + ", ga.population = " + n(g.population) + ")");
-    if (g.growWeight + g.cutWeight + g.alterWeight <= 0)
-        rd.failKeys({"ga.grow", "ga.cut", "ga.alter"}, "[ga]", "grow, cut and alter weights must not all be 0");
+    const GaSettings& g = r.ga;
     if (g.initialGenesMin > r.limits.maxGenes)
         rd.failKeys({"ga.initial_genes_min", "genome.max_genes"}, "[ga]",
                     "ga.initial_genes_min = " + n(g.initialGenesMin) + " exceeds genome.max_genes = " + n(r.limits.maxGenes) +
@@ -511,25 +366,66 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
         rd.failKeys({"ga.initial_genes_min", "ga.initial_genes_max"}, "[ga]",
                     "initial_genes_min must not exceed initial_genes_max (ga.initial_genes_min = " + n(g.initialGenesMin) +
                         ", ga.initial_genes_max = " + n(g.initialGenesMax) + ")");
-    readSearch(rd, r);
-    const toml::table* migration = rd.section("migration");
-    rd.number(migration, "migration", "interval", r.migration.interval, 0, 1e9);
-    rd.number(migration, "migration", "count", r.migration.count, 0, 1e7);
-    rd.number(migration, "migration", "meeting_interval", r.migration.meetingInterval, 0, 1e9);
-    std::string mode = "sync";
-    rd.string(migration, "migration", "mode", mode);
-    if (mode != "sync" && mode != "async")
-        rd.fail(*migration->get("mode"), "migration.mode must be \"sync\" or \"async\", got \"" + shortened(mode) + "\"");
-    r.migration.async = mode == "async";
-    if (r.migration.count > g.population - g.elitism && r.migration.interval > 0)
+}
+
+/// Migration sends the best `count` to replace the receiver's worst, never its elites.
+void checkMigrationCount(const Reader& rd, const RunSettings& r) {
+    const auto n = [](std::uint32_t v) { return std::to_string(v); };
+    if (r.migration.count > r.ga.population - r.ga.elitism && r.migration.interval > 0)
         rd.failKeys({"migration.count", "migration.interval", "ga.population", "ga.elitism"}, "[migration]",
                     "count must not exceed population - elitism (migration.count = " + n(r.migration.count) +
-                        ", ga.population - ga.elitism = " + n(g.population - g.elitism) + ")");
+                        ", ga.population - ga.elitism = " + n(r.ga.population - r.ga.elitism) + ")");
+}
 
-    const toml::table* checkpoint = rd.section("checkpoint");
-    rd.number(checkpoint, "checkpoint", "interval", r.checkpoint.interval, 0, 1e9);
-    rd.number(checkpoint, "checkpoint", "seconds", r.checkpoint.seconds, 0, 1e9);
-    rd.number(checkpoint, "checkpoint", "keep", r.checkpoint.keep, 1, 1e6);
+/// A relative file path a target kind reads from [target] (target.image) given with --set was
+/// typed in the shell: take it from the current directory (not the config's), and record it
+/// absolute so that a resume finds the same file.
+void absoluteShellPaths(toml::table& root) {
+    toml::table* t = root["target"].as_table();
+    if (!t) return;
+    for (const TargetKind* kind : targetKinds())
+        for (std::string_view key : kind->shellRelativeFiles)
+            if (const toml::node* n = t->get(key); n && !n->source().path)
+                if (const auto v = n->value_exact<std::string>(); v && !v->empty() && !std::filesystem::path(*v).is_absolute())
+                    t->insert_or_assign(key, std::filesystem::absolute(*v).lexically_normal().string());
+}
+
+}  // namespace
+
+RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+    toml::table root;
+    try {
+        root = toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        const auto& s = e.source();
+        throw InputError(path, std::to_string(s.begin.line) + ":" + std::to_string(s.begin.column),
+                         std::string(e.description()));
+    }
+    for (const auto& o : overrides) applyOverride(root, o);
+    absoluteShellPaths(root);
+
+    RunSettings r;
+    r.configPath = path;
+    {
+        std::ostringstream s;
+        s << root;
+        r.configText = overrides.empty() ? text : s.str();
+    }
+    Reader rd(root, path);
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    TomlConfig config(rd, folder);
+    // Each stage reads its own section; the order is the order errors are found in.
+    readRunSection(rd, r);
+    readGrammarSection(rd, r, folder);
+    r.target = readTargetSettings(config);
+    readScoreSection(config.section("score"), r.fitness, r.incremental);
+    readGenomeSection(config.section("genome"), r.limits);
+    readGaSection(config.section("ga"), r.ga);
+    checkInitialGenes(rd, r);
+    readSearchSection(config.section("search"), r.search);
+    readMigrationSection(config.section("migration"), r.migration);
+    checkMigrationCount(rd, r);
+    readCheckpointSection(config.section("checkpoint"), r.checkpoint);
     rd.rejectUnknown();
     return r;
 }

@@ -14,6 +14,7 @@
 #include "report/run_report.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
+#include "score/target_kinds.hpp"
 
 namespace shapevo {
 
@@ -23,6 +24,21 @@ std::string formatOfPath(const std::string& path) {
     for (char& c : ext)
         if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
     return ext;
+}
+
+std::vector<std::string_view> exportFormats() {
+    std::vector<std::string_view> formats(kModelFormats.begin(), kModelFormats.end());
+    for (std::string_view f : targetExportFormats()) formats.push_back(f);
+    return formats;
+}
+
+std::string formatList(std::span<const std::string_view> formats) {
+    std::string list;
+    for (std::size_t i = 0; i < formats.size(); ++i) {
+        if (i) list += i + 1 == formats.size() ? " or " : ", ";
+        list += formats[i];
+    }
+    return list;
 }
 
 std::string requireOutputFormat(const std::string& path, std::span<const std::string_view> accepted,
@@ -75,9 +91,12 @@ std::string exportCheckpointBest(const CheckpointBest& b, std::string format, co
     Geometry geo;
     DeriveScratch scratch;
     derive(b.grammar, b.best, geo, scratch);
-    if (format == "vdb" || format == "png") Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
-    else if (format == "obj" || format == "ply" || format == "glb") writeModelFile(geo, format, path, Replace::Never);
-    else throw InputError(path, "", "unknown format '" + format + "' (expected obj, ply, glb, vdb or png)");
+    const std::vector<std::string_view> all = exportFormats();
+    if (std::find(kModelFormats.begin(), kModelFormats.end(), format) != kModelFormats.end())
+        writeModelFile(geo, format, path, Replace::Never);
+    else if (std::find(all.begin(), all.end(), format) != all.end())
+        Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
+    else throw InputError(path, "", "unknown format '" + format + "' (expected " + formatList(all) + ")");
     return "wrote " + path + " (" + std::to_string(geo.primitives.size()) + " primitives; " + b.from + ")";
 }
 

@@ -1,13 +1,15 @@
 // Model export: the files `shapevo sample` and `shapevo export` write. A model is written as a
-// mesh (obj, ply, glb); `export` also writes what only the run's scene can make (vdb: the model's
-// voxels on a volume target's grid; png: its silhouette over an image target), loading the scene
-// from the config and grammar stored in the checkpoint, exactly as `resume` does.
+// mesh (obj, ply, glb); `export` also writes what only the run's target kind can make (its
+// TargetKind::exportFormats: vdb, the model's voxels on a volume target's grid; png, its
+// silhouette over an image target), loading the scene from the config and grammar stored in the
+// checkpoint, exactly as `resume` does.
 // Every command checks its output file's extension before it reads or writes anything.
 #pragma once
 #include <array>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "base/atomic_write.hpp"
 #include "genome/chromosome.hpp"
@@ -20,10 +22,14 @@ namespace shapevo {
 /// A file's format from its extension, lower-cased ("out/m.OBJ" -> "obj"; "" without one).
 std::string formatOfPath(const std::string& path);
 
-/// What `shapevo sample -o` writes (a mesh), what `shapevo export` writes, what `shapevo target` writes.
+/// What `shapevo sample -o` writes (a mesh), what `shapevo target` writes.
 inline constexpr std::array<std::string_view, 3> kModelFormats{"obj", "ply", "glb"};
-inline constexpr std::array<std::string_view, 5> kExportFormats{"obj", "ply", "glb", "vdb", "png"};
 inline constexpr std::array<std::string_view, 1> kTargetFormats{"vdb"};
+/// What `shapevo export` writes: the mesh formats, then every target kind's export formats
+/// (score/target_kinds.hpp): obj, ply, glb, vdb, png.
+std::vector<std::string_view> exportFormats();
+/// "obj, ply, glb or png": formats for a message.
+std::string formatList(std::span<const std::string_view> formats);
 /// What `shapevo sample --genome` writes.
 inline constexpr std::array<std::string_view, 1> kGenomeFormats{"genome"};
 
@@ -55,7 +61,8 @@ struct CheckpointBest {
 CheckpointBest bestOfCheckpoint(const std::string& folder);
 
 /// Write `b.best` to `path` in `format` (empty: the path's extension): obj, ply, glb (never
-/// replacing an existing file, the OBJ's MTL included), or vdb / png through the run's scene. Returns what was written, e.g. "wrote m.obj (12 primitives; island 0,
+/// replacing an existing file, the OBJ's MTL included), or a target kind's format (vdb, png)
+/// through the run's scene. Returns what was written, e.g. "wrote m.obj (12 primitives; island 0,
 /// fitness 0.91)". @throw InputError for an unknown format or one that does not fit the target.
 std::string exportCheckpointBest(const CheckpointBest& b, std::string format, const std::string& path);
 

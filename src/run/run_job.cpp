@@ -39,8 +39,7 @@ std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g) {
     for (const std::string& f : g.includes) inputs.push_back(hashInput("include", (grammarDir / f).string()));
     for (const MeshShape& m : g.meshes) inputs.push_back(hashInput("mesh", (grammarDir / m.path).string()));
     for (const Texture& t : g.textures) inputs.push_back(hashInput("texture", t.file));
-    for (const TargetVolumeSpec& t : s.targets) inputs.push_back(hashInput("target", t.path));
-    if (s.image) inputs.push_back(hashInput("target", s.image->png));
+    for (const std::string& t : s.target->inputFiles()) inputs.push_back(hashInput("target", t));
     return inputs;
 }
 

@@ -97,7 +97,7 @@ void writeCurves(const RunEnd& end) {
     writeCurveCsv(end.meta.curve, folder + "/curve.csv");
     CurvePlotLabels plot;
     plot.title = (s.name.empty() ? std::string("shapevo run") : s.name) + ": " + end.scene.description();
-    plot.iouName = s.image ? "silhouette IoU" : "voxel IoU";
+    plot.iouName = end.scene.kind().iouName;
     writeCurveSvg(end.meta.curve, plot, folder + "/curve.svg");
     writeCurvePng(end.meta.curve, plot, folder + "/curve.png");
 }
@@ -114,14 +114,14 @@ void warnAboutModels(const RunSummary& sum, const GenomeLimits& limits) {
 }
 
 /// "done ...: best fitness ..., voxel IoU ..." or "stopped on SIGTERM after generation ...".
-void printClosingLine(const RunEnd& end, const JobResult& result, bool image, std::ostream& log) {
+void printClosingLine(const RunEnd& end, const JobResult& result, std::ostream& log) {
     const std::string& stopReason = end.stop.why;
     const std::string& folder = end.folder;
     char line[300];
     if (!end.stop.bySignal)
-        std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, %s IoU %.4f, %llu evaluations in %s -> %s/\n",
+        std::snprintf(line, sizeof line, "done%s%s: best fitness %.5f, %s %.4f, %llu evaluations in %s -> %s/\n",
                       stopReason == "done" ? "" : " after ", stopReason == "done" ? "" : stopReason.c_str(),
-                      result.bestFitness, image ? "silhouette" : "voxel", result.iou, static_cast<unsigned long long>(result.evaluations),
+                      result.bestFitness, std::string(end.scene.kind().iouName).c_str(), result.iou, static_cast<unsigned long long>(result.evaluations),
                       humanSeconds(result.wallSeconds).c_str(), folder.c_str());
     else
         std::snprintf(line, sizeof line,
@@ -151,8 +151,7 @@ void writeRunOutputs(const RunEnd& end, JobResult& result, std::ostream& log) {
     sum.bestPrimitives = primitives;
     sum.targetHash = end.scene.hash();
     end.scene.reportBest(end.champion, end.folder, sum);
-    const bool image = sum.silhouetteIoU.has_value();
-    result.iou = image ? *sum.silhouetteIoU : sum.voxelIoU.value_or(0.0);
+    result.iou = sum.iou;
     sum.threads = end.threads;
     sum.islands = end.ranks;
     sum.changedInputs = end.options.changedInputs;
@@ -171,7 +170,7 @@ void writeRunOutputs(const RunEnd& end, JobResult& result, std::ostream& log) {
     sum.maxRssBytes = t.maxRssBytes;
     sum.population = end.population;
     writeSummaryJson(sum, end.folder + "/summary.json");
-    if (!end.options.quiet || result.stoppedBySignal) printClosingLine(end, result, image, log);
+    if (!end.options.quiet || result.stoppedBySignal) printClosingLine(end, result, log);
 }
 
 }  // namespace shapevo

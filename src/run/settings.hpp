@@ -1,9 +1,11 @@
 // RunSettings: everything a run needs, read from a TOML config (run/config_file.hpp) with
 // defaults from the papers. Paths are already resolved relative to the config file. Each stage
-// owns its part (search/, island/, checkpoint/, score/); this struct only gathers them.
+// owns its part and reads its own keys (search/, island/, checkpoint/, genome/, score/ and the
+// target kinds); this struct only gathers them.
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,9 +13,9 @@
 #include "genome/chromosome.hpp"
 #include "checkpoint/checkpoint_settings.hpp"
 #include "island/migration_settings.hpp"
+#include "score/fitness_settings.hpp"
 #include "score/incremental_settings.hpp"
-#include "score/target_settings.hpp"
-#include "score/volume_fitness.hpp"
+#include "score/target_kind.hpp"
 #include "search/search_settings.hpp"
 
 namespace shapevo {
@@ -30,11 +32,11 @@ struct RunSettings {
 
     std::string grammarPath;
     std::map<std::string, double> grammarAttrs;  ///< [grammar.attr]: values replacing the grammar's attrs
-    std::vector<TargetVolumeSpec> targets;   ///< volume targets (empty for an image target)
-    std::optional<GridOverride> grid;
-    std::optional<ImageSceneSettings> image;  ///< image target instead of volumes
+    /// [target] (and [camera]): the settings of the target kind the config names, made by the
+    /// kind's reader (score/target_kinds.hpp); run/ uses it only through its interface.
+    std::shared_ptr<const TargetSettings> target;
 
-    VolumeFitnessSettings fitness;
+    FitnessSettings fitness;  ///< [score] form and weights
     IncrementalSettings incremental;  ///< [score] incremental, cache_mb, check_incremental
     GenomeLimits limits;
     SearchSettings search;  ///< which method runs ([search]); [ga] sizes apply to all

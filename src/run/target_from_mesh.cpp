@@ -13,9 +13,7 @@
 #include "run/command_options.hpp"
 #include "run/config_file.hpp"
 #include "run/model_export.hpp"
-#include "score/camera.hpp"
-#include "score/mesh_image_target.hpp"
-#include "score/vdb_target_file.hpp"
+#include "score/volume/vdb_target_file.hpp"
 
 namespace shapevo {
 
@@ -31,17 +29,6 @@ void writeVolumeTarget(const Mesh& mesh, const TargetRequest& r, std::ostream& o
         << "wrote " << r.output << "\n";
 }
 
-/// The mesh drawn through the camera of `settings` (an image config's).
-void writePictureTarget(const Mesh& mesh, const RunSettings& settings, const TargetRequest& r, std::ostream& out) {
-    const Camera camera = Camera::compile(settings.image->camera, r.imageConfig);
-    const std::uint64_t covered =
-        writeMeshImageTarget(mesh, camera, settings.image->rule, r.meshPath, r.imageConfig + " [target]", r.output);
-    out << "mesh: " << groupedNumber(mesh.triangles.size()) << " triangles; "
-        << (camera.projection() == Projection::Shadow ? "shadow" : "silhouette") << " covers " << groupedNumber(covered) << " of "
-        << camera.width() << " x " << camera.height() << " pixels\n"
-        << "wrote " << r.output << "\n";
-}
-
 }  // namespace
 
 void makeTargetFromMesh(const TargetRequest& r, std::ostream& out, std::ostream& err) {
@@ -52,13 +39,16 @@ void makeTargetFromMesh(const TargetRequest& r, std::ostream& out, std::ostream&
     std::optional<RunSettings> imageSettings;
     if (!r.imageConfig.empty()) {
         imageSettings = loadConfig(r.imageConfig, {});
-        if (!imageSettings->image)
+        if (!imageSettings->target->kind().drawMeshTarget)
             throw InputError(r.imageConfig, "", "has no image target and camera ([target] image = \"FILE.png\" and a "
                                                 "[camera] section); --image draws through an image config's camera");
     }
     const Mesh mesh = readMesh(r.meshPath);
     for (const std::string& w : mesh.warnings) err << "shapevo: warning: " << w << "\n";
-    if (imageSettings) writePictureTarget(mesh, *imageSettings, r, out);
+    if (imageSettings) {
+        const TargetSettings& through = *imageSettings->target;
+        out << through.kind().drawMeshTarget(through, mesh, r.meshPath, r.imageConfig, r.output);
+    }
     else writeVolumeTarget(mesh, r, out);
 }
 

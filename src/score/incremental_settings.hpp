@@ -3,7 +3,7 @@
 //   score.cache_mb          = 128    the caches' size per evaluation thread, in MiB (half for
 //                                    primitives); past it the oldest are forgotten and drawn again.
 //                                    Also the most an island's models may keep for their children
-//                                    (score/model_store.hpp); past it the largest are not kept
+//                                    (score/image/model_store.hpp); past it the largest are not kept
 //   score.check_incremental = false  also score every model the full way; stop on any difference
 #pragma once
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Scorer: the one interface search methods see: chromosome -> fitness, a pure function.
-// Volume (score/volume_scorer.hpp) and image (score/image_scorer.hpp) targets implement it;
+// Volume (score/volume/volume_scorer.hpp) and image (score/image/image_scorer.hpp) targets implement it;
 // each thread brings its own workspace, made by the scorer that uses it. A model whose
 // derivation makes a non-finite or absurd number (geometry/derive.hpp) gets kWorstFitness; one
 // that reaches the primitive limit is scored as it stands (its first maxPrimitives primitives).

@@ -37,7 +37,7 @@ public:
     const Scorer& scorer() const { return scorer_; }
     /// Models that took a remembered fitness instead of being scored (since construction).
     std::uint64_t reused() const { return reused_; }
-    /// Models scored from their parent's evaluation (genome Lineage; score/image_model.hpp), since construction.
+    /// Models scored from their parent's evaluation (genome Lineage; score/image/image_model.hpp), since construction.
     std::uint64_t scoredFromParent() const {
         std::uint64_t n = 0;
         for (const auto& ws : workspaces_)

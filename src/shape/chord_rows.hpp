@@ -140,7 +140,7 @@ inline bool chordInterval(const Chord& ch, double cx, const GridSpec& grid, long
 }
 
 /// Voxelize a round solid (CylinderSolid, ConeSolid, SphereSolid): every voxel row of its bounding
-/// box gets its chord's exact index interval. `rows` is the voxelizer (score/voxelizer.hpp; the
+/// box gets its chord's exact index interval. `rows` is the voxelizer (score/volume/voxelizer.hpp; the
 /// kinds' row interface: grid(), indexBounds(), addRow(), addRows()); `counts` its VoxelCounts.
 template <class Solid, class Rows, class Counts>
 void voxelizeChords(const Solid& s, Rows& rows, Counts& counts) {

@@ -1,4 +1,4 @@
-// Outline: what a primitive's silhouette is made of (score/silhouette_outline.hpp has the full
+// Outline: what a primitive's silhouette is made of (score/image/silhouette_outline.hpp has the full
 // definition of "covered" and the builder that makes outlines for a camera): pieces of points in
 // 1/256-pixel fixed point, each piece covering the closed convex hull of its points. The kinds'
 // outline code (shape/kinds/*.hpp, `outline`) appends pieces; these types and constants are what

@@ -8,7 +8,7 @@
 
 #include "../mesh/cube_mesh.hpp"
 #include "../test_support.hpp"
-#include "score/image_target.hpp"
+#include "score/image/image_target.hpp"
 
 namespace shapevo {
 namespace {

@@ -12,9 +12,9 @@
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/vdb_target_file.hpp"
-#include "score/image_scorer.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/vdb_target_file.hpp"
+#include "score/image/image_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
 
 // AddressSanitizer (gcc says __SANITIZE_ADDRESS__, clang __has_feature) owns operator new.
 #if defined(__SANITIZE_ADDRESS__)
@@ -47,7 +47,7 @@ namespace {
 TEST(NoAllocation, DeriveScoreAndOperatorsAllocateNothingOnceWarm) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/spaceship.grammar"));
     const VolumeTarget target = loadVolumeTarget({{test::sourcePath("targets/spaceship-reachable.vdb"), false}});
-    const VolumeScorer scorer(g, target, VolumeFitnessSettings{});
+    const VolumeScorer scorer(g, target, FitnessSettings{});
     auto ws = scorer.makeWorkspace();
     const GenomeLimits limits{100};
     Rng rng(17);
@@ -122,7 +122,7 @@ TEST(NoAllocation, ImageScoringOfTreesAllocatesNothingOnceWarm) {
         const Camera camera = Camera::compile(spec, "test");
         const ImageTarget target =
             loadImageTarget(test::sourcePath("targets/shapegenetics/tree_target_sketch1.png"), PixelRule{}, 800, 600);
-        const ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
+        const ImageScorer scorer(g, camera, target, FitnessSettings{});
         auto ws = scorer.makeWorkspace();
         Rng rng(23);
         const GenomeLimits limits{300};

@@ -12,7 +12,7 @@
 #include "genome/operators.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
 
 namespace shapevo {
 namespace {
@@ -64,7 +64,7 @@ TEST(NonFinite, TheScorerGivesTheWorstFitnessAndCountsIt) {
     target.grid.voxelSize = 0.5;
     target.fill.assign(target.grid.words(), 0);
     target.avoid = target.fill;
-    const VolumeScorer scorer(g, target, VolumeFitnessSettings{});
+    const VolumeScorer scorer(g, target, FitnessSettings{});
     auto w = scorer.makeWorkspace();
     EXPECT_EQ(scorer.fitness(rootOnly(g), *w), Scorer::kWorstFitness);
     EXPECT_EQ(scorer.anomalies().nonFinite, 1u);

@@ -2,7 +2,7 @@
 // shipped grammar and every operator that names what it changed (genome Lineage), the child's
 // primitives are the parent's, less the old subtree's at each of its starts, plus the new
 // subtree's there — as multisets, bit for bit — and so are the task counts the limits check.
-// This is what scoring a child from its parent (score/image_from_parent.cpp) rests on.
+// This is what scoring a child from its parent (score/image/image_from_parent.cpp) rests on.
 #include <gtest/gtest.h>
 
 #include <algorithm>

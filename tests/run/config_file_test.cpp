@@ -25,8 +25,8 @@ TEST(ConfigFile, EachStageGetsItsOwnPart) {
     EXPECT_EQ(s.migration.interval, 7u);
     EXPECT_EQ(s.checkpoint.keep, 9);
     EXPECT_EQ(s.ga.population, 60u);
-    EXPECT_FALSE(s.targets.empty());
-    EXPECT_FALSE(s.image.has_value());
+    EXPECT_EQ(s.target->kind().name, "volume");
+    EXPECT_FALSE(s.target->inputFiles().empty());
 }
 
 TEST(ConfigFile, EveryMethodOfTheTableIsAcceptedByName) {

@@ -10,6 +10,7 @@
 
 #include "base/input_error.hpp"
 #include "run/config_file.hpp"
+#include "score/image/image_kind.hpp"
 
 namespace shapevo {
 namespace {
@@ -30,6 +31,12 @@ InputError imageKeyError(const std::string& extra, const std::vector<std::string
     return InputError("", "", "");
 }
 
+/// The image kind's settings of a config that names an image target.
+const ImageTargetSettings& imageOf(const RunSettings& s) {
+    EXPECT_EQ(&s.target->kind(), &imageTargetKind);
+    return static_cast<const ImageTargetSettings&>(*s.target);
+}
+
 void expectRule(const PixelRule& r, const PixelRule& want) {
     EXPECT_EQ(r.hitMin, want.hitMin);
     EXPECT_EQ(r.hitMax, want.hitMax);
@@ -41,16 +48,16 @@ void expectRule(const PixelRule& r, const PixelRule& want) {
 
 TEST(ImageTargetKeys, FitDefaultsToContainAndCoverToDark) {
     const RunSettings s = parse("");
-    ASSERT_TRUE(s.image);
-    EXPECT_EQ(s.image->fit, TargetFit::Contain);
-    expectRule(s.image->rule, PixelRule{});
-    expectRule(s.image->rule, PixelRule::forCover(TargetCover::Dark));
-    EXPECT_EQ(s.image->png, "/configs/logo.png");  // in the file: relative to the config
+    ASSERT_EQ(&s.target->kind(), &imageTargetKind);
+    EXPECT_EQ(imageOf(s).fit, TargetFit::Contain);
+    expectRule(imageOf(s).rule, PixelRule{});
+    expectRule(imageOf(s).rule, PixelRule::forCover(TargetCover::Dark));
+    EXPECT_EQ(imageOf(s).png, "/configs/logo.png");  // in the file: relative to the config
 }
 
 TEST(ImageTargetKeys, EveryFitIsAcceptedByNameAndAnotherNamesTheKey) {
     for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
-        EXPECT_EQ(parse(std::string("fit = \"") + targetFitName(f) + "\"\n").image->fit, f);
+        EXPECT_EQ(imageOf(parse(std::string("fit = \"") + targetFitName(f) + "\"\n")).fit, f);
     const InputError e = imageKeyError("fit = \"fill\"\n");
     EXPECT_EQ(e.file(), "/configs/x.toml");
     EXPECT_EQ(e.where(), "5:7");
@@ -59,13 +66,13 @@ TEST(ImageTargetKeys, EveryFitIsAcceptedByNameAndAnotherNamesTheKey) {
     const InputError set = imageKeyError("", {"target.fit=squash"});
     EXPECT_EQ(set.file(), "--set");
     EXPECT_NE(set.message().find("target.fit"), std::string::npos) << set.message();
-    EXPECT_EQ(parse("", {"target.fit=stretch"}).image->fit, TargetFit::Stretch);
+    EXPECT_EQ(imageOf(parse("", {"target.fit=stretch"})).fit, TargetFit::Stretch);
 }
 
 TEST(ImageTargetKeys, ScaleIsAShareOfTheFrameForContainAndStretchOnly) {
-    EXPECT_EQ(parse("").image->scale, 1.0);
-    EXPECT_EQ(parse("scale = 0.6\n").image->scale, 0.6);
-    EXPECT_EQ(parse("scale = 0.5\nfit = \"stretch\"\n").image->scale, 0.5);
+    EXPECT_EQ(imageOf(parse("")).scale, 1.0);
+    EXPECT_EQ(imageOf(parse("scale = 0.6\n")).scale, 0.6);
+    EXPECT_EQ(imageOf(parse("scale = 0.5\nfit = \"stretch\"\n")).scale, 0.5);
     EXPECT_NE(imageKeyError("scale = 0\n").message().find("target.scale"), std::string::npos);
     EXPECT_NE(imageKeyError("scale = 1.5\n").message().find("target.scale"), std::string::npos);
     const InputError cover = imageKeyError("scale = 0.5\nfit = \"cover\"\n");
@@ -73,11 +80,11 @@ TEST(ImageTargetKeys, ScaleIsAShareOfTheFrameForContainAndStretchOnly) {
 }
 
 TEST(ImageTargetKeys, CoverPresetsSetTheRangesAndKeepTheAlphaThreshold) {
-    expectRule(parse("cover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light));
-    expectRule(parse("cover = \"opaque\"\n").image->rule, PixelRule::forCover(TargetCover::Opaque));
-    expectRule(parse("cover = \"opaque\"\nalpha_threshold = 10\n").image->rule, PixelRule::forCover(TargetCover::Opaque, 10));
-    expectRule(parse("alpha_threshold = 10\ncover = \"light\"\n").image->rule, PixelRule::forCover(TargetCover::Light, 10));
-    expectRule(parse("cover = \"dark\"\n", {"target.cover=opaque"}).image->rule, PixelRule::forCover(TargetCover::Opaque));
+    expectRule(imageOf(parse("cover = \"light\"\n")).rule, PixelRule::forCover(TargetCover::Light));
+    expectRule(imageOf(parse("cover = \"opaque\"\n")).rule, PixelRule::forCover(TargetCover::Opaque));
+    expectRule(imageOf(parse("cover = \"opaque\"\nalpha_threshold = 10\n")).rule, PixelRule::forCover(TargetCover::Opaque, 10));
+    expectRule(imageOf(parse("alpha_threshold = 10\ncover = \"light\"\n")).rule, PixelRule::forCover(TargetCover::Light, 10));
+    expectRule(imageOf(parse("cover = \"dark\"\n", {"target.cover=opaque"})).rule, PixelRule::forCover(TargetCover::Opaque));
     const InputError e = imageKeyError("cover = \"alpha\"\n");
     EXPECT_EQ(e.where(), "5:9");
     EXPECT_NE(e.message().find("target.cover must be \"dark\", \"light\" or \"opaque\", got \"alpha\""), std::string::npos)
@@ -92,7 +99,7 @@ TEST(ImageTargetKeys, CoverAndAnExplicitLuminanceRangeTogetherAreAnErrorNamingBo
     EXPECT_EQ(set.file(), "--set");
     EXPECT_NE(set.message().find("target.avoid_min"), std::string::npos) << set.message();
     // without cover the ranges work as before
-    const PixelRule r = parse("hit_max = 80\navoid_min = 200\n").image->rule;
+    const PixelRule r = imageOf(parse("hit_max = 80\navoid_min = 200\n")).rule;
     EXPECT_EQ(r.hitMax, 80);
     EXPECT_EQ(r.avoidMin, 200);
 }
@@ -100,11 +107,11 @@ TEST(ImageTargetKeys, CoverAndAnExplicitLuminanceRangeTogetherAreAnErrorNamingBo
 TEST(ImageTargetKeys, ARelativeImageGivenWithSetIsTakenFromTheCurrentDirectory) {
     const RunSettings s = parse("", {"target.image=my logo.png"});
     const std::string want = (std::filesystem::current_path() / "my logo.png").lexically_normal().string();
-    EXPECT_EQ(s.image->png, want);
+    EXPECT_EQ(imageOf(s).png, want);
     // recorded absolute in the stored config, so a resume (which re-reads that text) finds it
     EXPECT_NE(s.configText.find(want), std::string::npos) << s.configText;
-    EXPECT_EQ(parseConfig(s.configText, "/configs/x.toml").image->png, want);
-    EXPECT_EQ(parse("", {"target.image=/abs/logo.png"}).image->png, "/abs/logo.png");
+    EXPECT_EQ(imageOf(parseConfig(s.configText, "/configs/x.toml")).png, want);
+    EXPECT_EQ(imageOf(parse("", {"target.image=/abs/logo.png"})).png, "/abs/logo.png");
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// CoverageCounts (score/coverage_counts.hpp): per-pixel counts as bit planes agree with a
+// CoverageCounts (score/image/coverage_counts.hpp): per-pixel counts as bit planes agree with a
 // brute-force count per pixel after random adds and removes, the deltas with brute-force
 // popcounts against the target, and a copy is not changed by writes to the picture it was
 // copied from (nor the other way round); blocks from a pool go back to it and come out again
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "genome/random.hpp"
-#include "score/coverage_counts.hpp"
+#include "score/image/coverage_counts.hpp"
 
 namespace shapevo {
 namespace {

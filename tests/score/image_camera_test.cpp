@@ -10,7 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "base/input_error.hpp"
-#include "score/camera.hpp"
+#include "score/image/camera.hpp"
 
 namespace shapevo {
 namespace {

@@ -2,13 +2,13 @@
 // silhouette counts, and the silhouette IoU, on hand-computed values.
 #include <gtest/gtest.h>
 
-#include "score/image_fitness.hpp"
+#include "score/image/image_fitness.hpp"
 
 namespace shapevo {
 namespace {
 
 TEST(ImageFitness, SmootherstepRewardsHitsAndPunishesAvoidedPixelsAndLength) {
-    VolumeFitnessSettings s;  // the tree/mickey run: good 2, bad 2, length 0.02 over 100..300 genes
+    FitnessSettings s;  // the tree/mickey run: good 2, bad 2, length 0.02 over 100..300 genes
     s.alpha = 2.0, s.beta = 2.0, s.gamma = 0.02, s.lengthOptimal = 100, s.lengthMax = 300;
     SilhouetteCounts c;
     c.hit = 500, c.avoided = 250, c.covered = 800;  // T = 1000: step(0.5) = 0.5, step(0.25) = 0.103515625
@@ -23,8 +23,8 @@ TEST(ImageFitness, SmootherstepRewardsHitsAndPunishesAvoidedPixelsAndLength) {
 }
 
 TEST(ImageFitness, WeightedSumCountsHitAndAvoidPixelsOnly) {
-    VolumeFitnessSettings s;
-    s.form = VolumeFitnessSettings::Form::WeightedSum;
+    FitnessSettings s;
+    s.form = FitnessSettings::Form::WeightedSum;
     s.fillWeight = 1.5, s.avoidWeight = -10.0, s.emptyWeight = -100.0, s.overlapWeight = -100.0;
     SilhouetteCounts c;
     c.hit = 100, c.avoided = 3, c.covered = 400;

@@ -7,7 +7,7 @@
 
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/image_scorer.hpp"
+#include "score/image/image_scorer.hpp"
 #include "../small_tree_grammar.hpp"
 #include "silhouette_test_util.hpp"
 
@@ -38,11 +38,11 @@ TEST(ImageScorer, ModelMatchingItsOwnSilhouetteScoresPerfectly) {
     std::vector<std::uint8_t> mask;
     {
         const ImageTarget dummy = targetFromMask(std::vector<std::uint8_t>(160 * 120, 1), 160, 120);
-        ImageScorer(g, camera, dummy, VolumeFitnessSettings{}).modelMask(model, ws, mask);
+        ImageScorer(g, camera, dummy, FitnessSettings{}).modelMask(model, ws, mask);
     }
     const ImageTarget target = targetFromMask(mask, 160, 120);
     ASSERT_GT(target.hitCount, 500u);
-    VolumeFitnessSettings settings;
+    FitnessSettings settings;
     const ImageScorer scorer(g, camera, target, settings);
     SilhouetteCounts counts;
     const double f = scorer.fitness(model, ws, &counts);
@@ -61,7 +61,7 @@ TEST(ImageScorer, WorkspaceReuseLeavesNothingBehindAndCountsEqualDirectDrawing) 
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 + i % 160) % 3 ? 255 : 0;  // diagonal stripes
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
-    const ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
+    const ImageScorer scorer(g, camera, target, FitnessSettings{});
     std::vector<Chromosome> pop;
     for (std::uint64_t seed = 1; seed <= 12; ++seed) pop.push_back(grown(g, 5 + std::uint32_t(seed) * 4, seed));
     std::vector<double> fresh;
@@ -96,7 +96,7 @@ TEST(ImageScorer, WorkspaceReuseLeavesNothingBehindAndCountsEqualDirectDrawing) 
 TEST(ImageScorer, TargetOfAnotherSizeIsRefused) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const ImageTarget small = makeImageTarget(4, 4, std::vector<std::uint8_t>(16, 0), std::vector<std::uint8_t>(16, 255), PixelRule{});
-    EXPECT_THROW(ImageScorer(g, test::smallTreeCamera(), small, VolumeFitnessSettings{}), std::invalid_argument);
+    EXPECT_THROW(ImageScorer(g, test::smallTreeCamera(), small, FitnessSettings{}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Fitting a picture into the camera's frame (score/image_target.hpp): the placements of contain,
+// Fitting a picture into the camera's frame (score/image/image_target.hpp): the placements of contain,
 // cover, stretch and exact worked out by hand; the area-vote resampling against a brute-force
 // reference on random pictures; exact pixel counts on tiny pictures; the cover presets; the hash
 // telling fitted targets apart; and loadImageTarget's size checks.
@@ -12,7 +12,7 @@
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
 #include "image/png_writer.hpp"
-#include "score/image_target.hpp"
+#include "score/image/image_target.hpp"
 
 namespace shapevo {
 namespace {

@@ -10,7 +10,7 @@
 #include "base/input_error.hpp"
 #include "image/png_image.hpp"
 #include "image/png_writer.hpp"
-#include "score/image_target.hpp"
+#include "score/image/image_target.hpp"
 
 namespace shapevo {
 namespace {

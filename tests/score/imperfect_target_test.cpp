@@ -17,7 +17,7 @@
 #include "grid_bits.hpp"
 #include "base/input_error.hpp"
 #include "mesh/mesh_repair.hpp"
-#include "score/vdb_target_file.hpp"
+#include "score/volume/vdb_target_file.hpp"
 
 namespace shapevo {
 namespace {

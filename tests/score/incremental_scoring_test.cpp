@@ -11,12 +11,12 @@
 
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/image_scorer.hpp"
+#include "score/image/image_scorer.hpp"
 #include "../model_stream.hpp"
 #include "../small_tree_grammar.hpp"
 #include "../test_support.hpp"
 #include "score/primitive_cache.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/volume_scorer.hpp"
 #include "random_primitives.hpp"
 #include "silhouette_test_util.hpp"
 
@@ -235,7 +235,7 @@ TEST(IncrementalScoring, ImageScorerGivesTheSameFitnessAndCountsWithACacheColdOr
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const Camera camera = test::smallTreeCamera();
     const ImageTarget target = stripedTarget();
-    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    ImageScorer full(g, camera, target, FitnessSettings{}), cached(g, camera, target, FitnessSettings{});
     cached.setIncremental(1 << 20, true);  // small: it wraps; checking: any difference throws
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
     auto& c = static_cast<ImageScorer::Workspace&>(*wc);
@@ -258,7 +258,7 @@ TEST(IncrementalScoring, WholeSubtreesReplayTheirMergedWordsToTheSameCounts) {
     std::vector<std::uint8_t> lum(160 * 120), alpha(160 * 120, 255);
     for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = (i / 160 * 7 + i % 160) % 5 ? 255 : 0;
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
-    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    ImageScorer full(g, camera, target, FitnessSettings{}), cached(g, camera, target, FitnessSettings{});
     cached.setIncremental(4 << 20, true);  // checking: any difference throws
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
     auto& c = static_cast<ImageScorer::Workspace&>(*wc);
@@ -284,7 +284,7 @@ TEST(IncrementalScoring, AModelLargerThanTheCacheHoldsIsDrawnTheFullWayAndSaidSo
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     const Camera camera = test::smallTreeCamera();
     const ImageTarget target = stripedTarget();
-    ImageScorer full(g, camera, target, VolumeFitnessSettings{}), cached(g, camera, target, VolumeFitnessSettings{});
+    ImageScorer full(g, camera, target, FitnessSettings{}), cached(g, camera, target, FitnessSettings{});
     cached.setIncremental(64 << 10, true);  // the smallest cache: it holds models of a few dozen primitives
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
     auto& f = static_cast<ImageScorer::Workspace&>(*wf);
@@ -333,7 +333,7 @@ TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
     const Camera camera = test::smallTreeCamera();
     std::vector<std::uint8_t> lum(160 * 120, 0), alpha(160 * 120, 255);
     const ImageTarget target = makeImageTarget(160, 120, lum, alpha, PixelRule{});
-    ImageScorer scorer(g, camera, target, VolumeFitnessSettings{});
+    ImageScorer scorer(g, camera, target, FitnessSettings{});
     const Chromosome model = treesAndChildren(g, 8).back();
     Geometry geometry;
     DeriveScratch scratch;
@@ -350,7 +350,7 @@ TEST(IncrementalScoring, CheckingModeStopsOnACacheThatLies) {
         } else {  // without the check the lie goes through: what the check is there to catch
             SilhouetteCounts lied, truth;
             scorer.fitness(model, w, &lied);
-            ImageScorer honest(g, camera, target, VolumeFitnessSettings{});
+            ImageScorer honest(g, camera, target, FitnessSettings{});
             auto hw = honest.makeWorkspace();
             honest.fitness(model, static_cast<ImageScorer::Workspace&>(*hw), &truth);
             EXPECT_LT(lied.covered, truth.covered);
@@ -372,7 +372,7 @@ TEST(IncrementalScoring, VolumeScorerGivesTheSameCountsWithACacheAndItsCheckCatc
     const GridSpec grid = cubeOfVoxels(-3.0, -0.5, -3.0, 60);
     Rng rng(8);
     const VolumeTarget target = test::randomTarget(grid, rng);
-    VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
+    VolumeScorer full(g, target, FitnessSettings{}), cached(g, target, FitnessSettings{});
     cached.setIncremental(4 << 20, true);
     auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
     const std::vector<Chromosome> models = treesAndChildren(g, 600);
@@ -414,7 +414,7 @@ TEST(IncrementalScoring, AxisAlignedBoxesAreDrawnDirectlyAndNeverTouchTheCache) 
         const GridSpec grid = cubeOfVoxels(-4.0, -4.0, -2.0, 80);
         Rng rng(3);
         const VolumeTarget target = test::randomTarget(grid, rng);
-        VolumeScorer full(g, target, VolumeFitnessSettings{}), cached(g, target, VolumeFitnessSettings{});
+        VolumeScorer full(g, target, FitnessSettings{}), cached(g, target, FitnessSettings{});
         cached.setIncremental(4 << 20, true);  // checking: a difference throws
         auto wf = full.makeWorkspace(), wc = cached.makeWorkspace();
         for (const Chromosome& model : treesAndChildren(g, 400)) {

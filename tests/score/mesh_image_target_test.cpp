@@ -9,7 +9,7 @@
 #include "../mesh/cube_mesh.hpp"
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
-#include "score/mesh_image_target.hpp"
+#include "score/image/mesh_image_target.hpp"
 
 namespace shapevo {
 namespace {

@@ -1,4 +1,4 @@
-// ModelStore (score/model_store.hpp): a model given back is handed out again with its buffers'
+// ModelStore (score/image/model_store.hpp): a model given back is handed out again with its buffers'
 // capacity (no allocation once warm) and counted only while held; near the bound the larger
 // models are refused first and the store says it is full; models may outlive the scorer's
 // handle on the store.
@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "score/model_store.hpp"
+#include "score/image/model_store.hpp"
 
 namespace shapevo {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "random_primitives.hpp"
 #include "shape/kinds/mesh.hpp"
-#include "score/voxelizer.hpp"
+#include "score/volume/voxelizer.hpp"
 
 namespace shapevo {
 namespace {

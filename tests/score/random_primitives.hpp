@@ -14,8 +14,8 @@
 #include "genome/random.hpp"
 #include "shape/primitive.hpp"
 #include "shape/kinds.hpp"
-#include "score/volume_target.hpp"
-#include "score/voxelizer.hpp"
+#include "score/volume/volume_target.hpp"
+#include "score/volume/voxelizer.hpp"
 
 namespace shapevo::test {
 

@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 
 #include "genome/random.hpp"
-#include "score/camera.hpp"
-#include "score/silhouette_raster.hpp"
+#include "score/image/camera.hpp"
+#include "score/image/silhouette_raster.hpp"
 
 #include "random_primitives.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "../mesh/cube_mesh.hpp"
 #include "base/input_error.hpp"
-#include "score/vdb_target_file.hpp"
+#include "score/volume/vdb_target_file.hpp"
 #include "../test_support.hpp"
 #include "grid_bits.hpp"
 

@@ -9,7 +9,7 @@
 #include "../mesh/cube_mesh.hpp"
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
-#include "score/vdb_target_file.hpp"
+#include "score/volume/vdb_target_file.hpp"
 
 namespace shapevo {
 namespace {

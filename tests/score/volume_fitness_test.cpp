@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "score/volume_fitness.hpp"
+#include "score/volume/volume_fitness.hpp"
 
 namespace shapevo {
 namespace {
@@ -20,7 +20,7 @@ TEST(Smootherstep, IsZeroBelowOneAboveAndPerlinsPolynomialBetween) {
 }
 
 TEST(VolumeFitness, SmootherstepFormCombinesGoodBadAndLength) {
-    VolumeFitnessSettings s;  // alpha 1, beta 0.8, gamma 0.2, l_opt 40, l_max 100
+    FitnessSettings s;  // alpha 1, beta 0.8, gamma 0.2, l_opt 40, l_max 100
     VoxelCounts c;
     c.occupied = 600;
     c.inside = 500;   // out = 100
@@ -35,8 +35,8 @@ TEST(VolumeFitness, SmootherstepFormCombinesGoodBadAndLength) {
 }
 
 TEST(VolumeFitness, WeightedSumAddsEveryTermWithItsWeight) {
-    VolumeFitnessSettings s;
-    s.form = VolumeFitnessSettings::Form::WeightedSum;
+    FitnessSettings s;
+    s.form = FitnessSettings::Form::WeightedSum;
     s.fillWeight = 2;
     s.emptyWeight = -1;
     s.avoidWeight = -10;

@@ -9,7 +9,7 @@
 
 #include "genome/random.hpp"
 #include "shape/box_frame.hpp"
-#include "score/voxelizer.hpp"
+#include "score/volume/voxelizer.hpp"
 
 #include "random_primitives.hpp"
 

@@ -12,8 +12,8 @@
 #include "spaceship_fixture.hpp"
 #include "genome/validate.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/vdb_target_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/vdb_target_file.hpp"
+#include "score/volume/volume_scorer.hpp"
 #include "search/hybrid_search.hpp"
 
 namespace shapevo {

@@ -1,4 +1,4 @@
-// Scoring from the parent (score/image_from_parent.cpp): children that grow, cut, alter and
+// Scoring from the parent (score/image/image_from_parent.cpp): children that grow, cut, alter and
 // crossover made of evaluated models carry their lineage to the Evaluator, which scores them
 // from the parent's coverage counts — with the fitness the full evaluation gives, bit for bit, on
 // every shipped image scene (trees, cities of boxes, streets of split buildings); most children
@@ -15,7 +15,7 @@
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
-#include "score/image_scorer.hpp"
+#include "score/image/image_scorer.hpp"
 #include "search/evaluation_batch.hpp"
 #include "search/evaluator.hpp"
 

@@ -3,15 +3,15 @@
 #pragma once
 #include "../test_support.hpp"
 #include "grammar/front_ends.hpp"
-#include "score/vdb_target_file.hpp"
-#include "score/volume_scorer.hpp"
+#include "score/volume/vdb_target_file.hpp"
+#include "score/volume/volume_scorer.hpp"
 
 namespace shapevo::test {
 
 struct SpaceshipFixture {
     Grammar grammar = loadGrammar(sourcePath("grammars/spaceship.grammar"));
     VolumeTarget target = loadVolumeTarget({{sourcePath("targets/spaceship-reachable.vdb"), false}});
-    VolumeFitnessSettings fitness;
+    FitnessSettings fitness;
     VolumeScorer scorer{grammar, target, fitness};
 };
 

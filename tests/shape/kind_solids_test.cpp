@@ -12,7 +12,7 @@
 
 #include "../score/random_primitives.hpp"
 #include "shape/kinds/mesh.hpp"
-#include "score/voxelizer.hpp"
+#include "score/volume/voxelizer.hpp"
 
 namespace shapevo {
 namespace {

@@ -2,6 +2,8 @@
 // model file, or as what only the run's scene can make (run/model_export.hpp).
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -32,12 +34,15 @@ void ExportCommand::addOptions(CLI::App& command) {
     command.add_option("--format", o.format,
                        "obj, ply, glb (the model), vdb (its voxels on a volume target's grid) or png (its silhouette "
                        "over an image target); must match the output file's extension")
-        ->check(CLI::IsMember({"obj", "ply", "glb", "vdb", "png"}));
+        ->check(CLI::IsMember([] {
+            const std::vector<std::string_view> formats = exportFormats();  // meshes and every target kind's
+            return std::vector<std::string>(formats.begin(), formats.end());
+        }()));
 }
 
 void ExportCommand::run(const CommandContext&) {
     const ExportOptions& o = exportOptions;
-    requireOutputFormat(o.out, kExportFormats, "-o", o.format);
+    requireOutputFormat(o.out, exportFormats(), "-o", o.format);
     refuseExisting(o.out);
     std::cout << exportCheckpointBest(bestOfCheckpoint(resolveCheckpointPath(o.path)), o.format, o.out) << "\n";
 }

@@ -141,7 +141,7 @@ struct BoxKind {
         }
     }
 
-    /// Silhouette pieces (score/silhouette_outline.hpp): the square two-ring fast path, else all
+    /// Silhouette pieces (score/image/silhouette_outline.hpp): the square two-ring fast path, else all
     /// 8 corners as one convex piece.
     template <class Builder>
     static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive&, Outline& out) {

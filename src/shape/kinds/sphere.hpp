@@ -2,7 +2,7 @@
 // frame's box: SphereSolid, its voxel-centre inside test and the chord of a voxel row
 // (shape/chord_rows.hpp explains why the test is written per row and why that makes the row
 // interval exact). Silhouette: kSphereSides points on the contact curve (fewer when it projects
-// small), or the UV polyhedron when cut or flat (score/silhouette_outline.hpp). Surface: a UV
+// small), or the UV polyhedron when cut or flat (score/image/silhouette_outline.hpp). Surface: a UV
 // sphere of kRoundSides slices and kSphereStacks stacks (poles on the y axis).
 #pragma once
 #include <cmath>

@@ -1,0 +1,45 @@
+// The image target kind: a PNG whose pixels say hit / avoid / don't care (score/image/
+// image_target.hpp), seen through a camera: a perspective or orthographic silhouette, or a shadow
+// on a ground plane (score/image/camera.hpp). Its [target] keys:
+//   image = "FILE.png"                                  names this kind
+//   cover = "dark" | "light" | "opaque"  or  hit_min, hit_max, avoid_min, avoid_max; alpha_threshold
+//   fit = "contain" | "cover" | "stretch" | "exact";  scale (contain and stretch only)
+// and its own section [camera] (projection and its settings). Its IoU is the silhouette IoU
+// ("silhouette_iou"), its best-model output best-overlay.png (the silhouette against the
+// picture), its export format png, a run hashes the picture, and `shapevo target MESH --image
+// CONFIG` draws a mesh into a picture target through a config's camera and pixel rule.
+#pragma once
+#include <string>
+
+#include "score/image/camera.hpp"
+#include "score/image/image_target.hpp"
+#include "score/target_kind.hpp"
+
+namespace shapevo {
+
+/// The table entry (score/target_kinds.cpp).
+extern const TargetKind imageTargetKind;
+
+class ImageTargetSettings final : public TargetSettings {
+public:
+    std::string png;  ///< resolved path
+    PixelRule rule;
+    TargetFit fit = TargetFit::Contain;
+    double scale = 1.0;  ///< target.scale: the share of the frame's width and height a fitted picture may take
+    CameraSpec camera;
+
+    const TargetKind& kind() const override { return imageTargetKind; }
+    bool named() const override { return !image_.empty(); }
+    std::vector<std::string> namingKeys() const override { return {"target.image"}; }
+    void finish(ConfigReader& config, const std::string& missing) override;
+    std::unique_ptr<LoadedTarget> load(const TargetLoadContext& context) const override;
+    std::vector<std::string> inputFiles() const override { return {png}; }
+
+    /// The kind's reader (TargetKind::readTarget).
+    static std::unique_ptr<TargetSettings> read(SectionReader& target);
+
+private:
+    std::string image_;  ///< target.image as written
+};
+
+}  // namespace shapevo

@@ -1,0 +1,220 @@
+// Volume target files: mesh -> level-set VDB (written atomically, never clobbering by accident),
+// and VDB files -> the dense VolumeTarget the scorer reads.
+#include "score/volume/vdb_target_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <sstream>
+
+#include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/MeshToVolume.h>
+
+#include "base/atomic_write.hpp"
+#include "base/input_error.hpp"
+#include "score/volume/vdb_bake.hpp"
+
+namespace shapevo {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void initOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+/// Meshes more than this many voxels across are almost surely a mistyped voxel size.
+constexpr double kMaxVoxelsAcross = 20000.0;
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath,
+                              const std::string& outPath, bool overwrite) {
+    initOpenVdb();
+    if (!(voxelSize > 0.0) || !std::isfinite(voxelSize))
+        throw InputError(sourcePath, "", "voxel size must be a positive number, got " + number(voxelSize));
+    if (mesh.triangles.empty()) throw InputError(sourcePath, "", "mesh has no triangles");
+    std::error_code ec;
+    if (!overwrite && fs::exists(outPath, ec))
+        throw InputError(outPath, "", "already exists; refusing to overwrite it");
+
+    openvdb::Vec3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    std::vector<openvdb::Vec3s> points;
+    points.reserve(mesh.vertices.size());
+    for (const glm::vec3& v : mesh.vertices) {
+        points.emplace_back(v.x, v.y, v.z);
+        lo = openvdb::math::minComponent(lo, openvdb::Vec3d(v.x, v.y, v.z));
+        hi = openvdb::math::maxComponent(hi, openvdb::Vec3d(v.x, v.y, v.z));
+    }
+    std::vector<openvdb::Vec3I> triangles;
+    triangles.reserve(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        for (std::uint32_t i : tri)
+            if (i >= mesh.vertices.size())
+                throw InputError(sourcePath, "triangle " + std::to_string(t),
+                                 "vertex index " + std::to_string(i) + " out of range");
+        triangles.emplace_back(tri[0], tri[1], tri[2]);
+    }
+    const double across = (hi - lo).length() / voxelSize;
+    if (across > kMaxVoxelsAcross)
+        throw InputError(sourcePath, "", "voxel size " + number(voxelSize) + " is too small: the mesh would be " +
+                                             number(std::ceil(across)) + " voxels across (limit " +
+                                             number(kMaxVoxelsAcross) + ")");
+
+    const openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(voxelSize);
+    openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(
+        *xform, points, triangles, float(openvdb::LEVEL_SET_HALF_WIDTH));
+    if (!grid || grid->activeVoxelCount() == 0)
+        throw InputError(sourcePath, "", "the level set is empty at voxel size " + number(voxelSize));
+    // Every stored value (leaf voxels, and tiles: the interior's inactive negative tiles count as
+    // many voxels as they cover); the unstored background is outside.
+    TargetVdbStats stats;
+    for (auto it = grid->cbeginValueAll(); it; ++it)
+        if (*it <= 0.0f) stats.insideVoxels += it.getVoxelCount();
+    stats.insideVolume = double(stats.insideVoxels) * voxelSize * voxelSize * voxelSize;
+    if (stats.insideVoxels == 0)
+        throw InputError(sourcePath, "", "the inside of the mesh comes out empty at voxel size " + number(voxelSize) +
+                                             ": no voxel centre is enclosed (an open surface, or a mesh thinner than a "
+                                             "voxel; try a smaller --voxel-size)");
+    grid->setName("target");
+    grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    grid->insertMeta("voxel_size", openvdb::DoubleMetadata(voxelSize));
+    grid->insertMeta("bounds_min", openvdb::Vec3DMetadata(lo));
+    grid->insertMeta("bounds_max", openvdb::Vec3DMetadata(hi));
+    grid->insertMeta("source", openvdb::StringMetadata(sourcePath));
+    grid->insertMeta("shapevo_role", openvdb::StringMetadata("fill"));
+
+    writeAtomically(
+        outPath,
+        [&](const std::string& tmp) {
+            try {
+                openvdb::io::File file(tmp);
+                file.write(openvdb::GridCPtrVec{grid});
+                file.close();
+            } catch (const std::exception& e) {
+                throw InputError(outPath, "", std::string("cannot write: ") + e.what());
+            }
+        },
+        overwrite ? Replace::Always : Replace::Never);
+    return stats;
+}
+
+namespace {
+
+/// Reads the float grid named "target" if there is one, else the first float level set, else
+/// the first float grid; refuses it unless it is a non-empty level set (GRID_LEVEL_SET).
+openvdb::FloatGrid::Ptr readLevelSet(const std::string& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw InputError(path, "", "cannot open VDB file: is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open VDB file");
+    openvdb::GridPtrVecPtr grids;
+    try {
+        // A read past the end throws at once. (openvdb::io::File reads on with garbage instead: a
+        // file cut short "holds no grid", or a length read from nowhere allocates gigabytes.)
+        in.exceptions(std::ios::failbit | std::ios::badbit | std::ios::eofbit);
+        openvdb::io::Stream stream(in, /*delayLoad=*/false);
+        grids = stream.getGrids();
+    } catch (const std::ios_base::failure&) {
+        throw InputError(path, "", "is truncated or unreadable: the file ends inside its VDB data");
+    } catch (const std::exception& e) {
+        // OpenVDB's messages about damaged files can quote megabytes of the damage: cut them.
+        throw InputError(path, "", "is truncated or unreadable: not a readable VDB file (OpenVDB: " + shortened(e.what()) + ")");
+    }
+    if (!grids || grids->empty()) throw InputError(path, "", "holds no grids (expected a level set)");
+    openvdb::FloatGrid::Ptr chosen;
+    auto rank = [](const openvdb::FloatGrid& f) {
+        return f.getName() == "target" ? 2 : f.getGridClass() == openvdb::GRID_LEVEL_SET ? 1 : 0;
+    };
+    for (const openvdb::GridBase::Ptr& g : *grids) {
+        auto f = openvdb::gridPtrCast<openvdb::FloatGrid>(g);
+        if (f && (!chosen || rank(*f) > rank(*chosen))) chosen = f;
+    }
+    if (!chosen) throw InputError(path, "", "holds no float grid (expected a level set)");
+    const std::string grid = "grid '" + shortened(chosen->getName()) + "'";
+    if (chosen->getGridClass() == openvdb::GRID_FOG_VOLUME)
+        throw InputError(path, "", grid + " is a fog volume; expected a level set");
+    if (chosen->activeVoxelCount() == 0) throw InputError(path, "", grid + " is empty");
+    if (chosen->getGridClass() != openvdb::GRID_LEVEL_SET)
+        throw InputError(path, "", grid + " is not a level set (its grid class is '" +
+                                       openvdb::GridBase::gridClassToString(chosen->getGridClass()) +
+                                       "'); a target must be a signed-distance level set (class level set), as "
+                                       "`shapevo target` writes");
+    return chosen;
+}
+
+GridSpec overrideGrid(const GridOverride& o) {
+    const std::string what = "grid override";
+    if (!(o.voxelSize > 0.0) || !std::isfinite(o.voxelSize))
+        throw InputError(what, "voxel_size", "must be a positive number, got " + number(o.voxelSize));
+    GridSpec spec;
+    spec.origin = o.min;
+    spec.voxelSize = o.voxelSize;
+    int* n[3] = {&spec.nx, &spec.ny, &spec.nz};
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(o.min[a]) || !std::isfinite(o.max[a]) || !(o.max[a] > o.min[a]))
+            throw InputError(what, "bounds", "max must exceed min on every axis (axis " + std::string(1, "xyz"[a]) +
+                                                 ": " + number(o.min[a]) + " .. " + number(o.max[a]) + ")");
+        const double cells = std::ceil((o.max[a] - o.min[a]) / o.voxelSize);
+        if (cells > double(vdbbake::kMaxDenseVoxels))
+            throw InputError(what, "voxel_size", "grid too large along " + std::string(1, "xyz"[a]));
+        *n[a] = int(cells);
+    }
+    return spec;
+}
+
+}  // namespace
+
+VolumeTarget loadVolumeTarget(const std::vector<TargetVolumeSpec>& specs, const GridOverride* grid) {
+    initOpenVdb();
+    if (specs.empty()) throw InputError("targets", "", "no volume target given");
+    std::vector<openvdb::FloatGrid::Ptr> grids;
+    for (const TargetVolumeSpec& s : specs) grids.push_back(readLevelSet(s.path));
+
+    VolumeTarget target;
+    if (grid) {
+        target.grid = overrideGrid(*grid);
+    } else {
+        openvdb::BBoxd bounds = vdbbake::activeWorldBounds(*grids[0]);
+        for (std::size_t i = 1; i < grids.size(); ++i) bounds.expand(vdbbake::activeWorldBounds(*grids[i]));
+        const openvdb::math::Transform& first = grids[0]->transform();
+        const openvdb::Vec3d vs = first.voxelSize();
+        const double voxelSize = std::min({vs[0], vs[1], vs[2]});  // uniform for our files
+        // Corners of the first target's voxels, so dense centres coincide with its voxel centres.
+        const openvdb::Vec3d anchor = first.indexToWorld(openvdb::Vec3d(-0.5));
+        target.grid = vdbbake::paddedGrid(bounds, voxelSize, anchor);
+    }
+    const GridSpec& g = target.grid;
+    const double voxels = double(g.nx) * double(g.ny) * double(g.nz);  // no overflow
+    if (voxels > double(vdbbake::kMaxDenseVoxels))
+        throw InputError(grid ? "grid override" : specs[0].path, "",
+                         "dense target grid of " + std::to_string(g.nx) + " x " + std::to_string(g.ny) + " x " +
+                             std::to_string(g.nz) + " voxels is too large; use a coarser voxel size");
+
+    target.fill.assign(g.words(), 0);
+    target.avoid.assign(g.words(), 0);
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        vdbbake::bakeInside(*grids[i], g, specs[i].avoid ? target.avoid : target.fill);
+    target.fillCount = vdbbake::popcount(target.fill);
+    target.avoidCount = vdbbake::popcount(target.avoid);
+    target.hash = vdbbake::targetHash(target);
+    return target;
+}
+
+}  // namespace shapevo
