@@ -1,8 +1,8 @@
 // makeTargetFromMesh: what `shapevo target` does. A triangle mesh (any format mesh/mesh_reader.hpp
 // reads) becomes a volume target (repaired for a determinable inside, mesh/mesh_repair.hpp, then
-// an OpenVDB level set, score/vdb_target_file.hpp) or, given an image config, a picture target
+// an OpenVDB level set, score/volume/vdb_target_file.hpp) or, given a config whose target kind draws meshes, a picture target
 // (the mesh drawn through the config's camera into a PNG its pixel rule reads as hit where the
-// mesh is, score/mesh_image_target.hpp). Promises: the output name (its extension, that it does
+// mesh is: TargetKind::drawMeshTarget, score/image/image_kind.hpp). Promises: the output name (its extension, that it does
 // not exist) and the image config are checked before the mesh is read; nothing is overwritten.
 #pragma once
 #include <iosfwd>
