@@ -25,9 +25,7 @@
 
 namespace shapevo {
 
-/// A list of kinds; each must meet the contract (a kind that does not is a compile error here,
-/// naming the part of PrimitiveKindContract it misses and the member).
-template <PrimitiveKindContract... K>
+template <class... K>
 struct KindList {
     static constexpr std::size_t size = sizeof...(K);
 };
@@ -70,6 +68,21 @@ template <class... K>
 struct AllVoxelScratch<KindList<K...>> : VoxelScratchOf<K>::type... {};
 }  // namespace detail
 
+namespace detail {
+/// The check, kind by kind: a kind that misses part of the contract fails here, and the compiler
+/// names the kind, the part of PrimitiveKindContract and the member.
+template <class K>
+constexpr bool meetsContract() {
+    static_assert(PrimitiveKindContract<K>, "every primitive kind meets PrimitiveKindContract (shape/primitive_kind.hpp)");
+    return PrimitiveKindContract<K>;
+}
+template <class... K>
+constexpr bool allMeetContract(KindList<K...>) {
+    return (meetsContract<K>() && ...);
+}
+}  // namespace detail
+
+static_assert(detail::allMeetContract(Kinds{}), "every listed kind meets PrimitiveKindContract");
 static_assert(Kinds::size == std::size_t(kPrimitiveKinds), "one kind per PrimitiveKind");
 static_assert(detail::kindsInEnumOrder(Kinds{}), "the kinds list follows the PrimitiveKind order");
 

@@ -38,7 +38,9 @@ TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
     EXPECT_EQ(test::taperOf(out.primitives[3]), 0.25f);
     EXPECT_EQ(test::taperOf(out.primitives[4]), 1.0f);   // clamped to [0, 1]
     for (const Primitive& p : out.primitives)  // only cones have parameters here; the others' block stays zero
-        if (p.kind != PrimitiveKind::Cone) EXPECT_EQ(p.params, KindParams{});
+        if (p.kind != PrimitiveKind::Cone) {
+            EXPECT_EQ(p.params, KindParams{});
+        }
     EXPECT_EQ(out.meshes, &g.meshes);
 }
 
@@ -166,7 +168,7 @@ TEST(PrimitiveStatements, MeshFilesAreReadOnceRelativeToTheGrammarAndNormalized)
     ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 2u);
     EXPECT_EQ(out.primitives[1].kind, PrimitiveKind::Mesh);
-    EXPECT_EQ(out.primitives[1].mesh, 0);
+    EXPECT_EQ(test::meshIndexOf(out.primitives[1]), 0);
     EXPECT_EQ(out.primitives[1].half, glm::vec3(1, 1, 1));
 }
 
