@@ -29,6 +29,7 @@
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
 #include "score/image/image_scorer.hpp"
+#include "shape/kinds.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -292,8 +293,9 @@ void BM_RasterizeKind(benchmark::State& state) {
         for (int k = 0; k < 20; ++k) {
             Primitive p;
             p.kind = PrimitiveKind(state.range(0));
-            p.taper = float(between(rng, 0.0, 1.0));
-            p.taperZ = float(between(rng, 0.0, 1.0));
+            const float taper = float(between(rng, 0.0, 1.0)), taperZ = float(between(rng, 0.0, 1.0));
+            if (p.kind == PrimitiveKind::Cone) setParams<ConeKind>(p, {taper});
+            if (p.kind == PrimitiveKind::Roof) setParams<RoofKind>(p, {taper, taperZ});
             p.centre = {float(between(rng, -1.0, 1.0)), float(between(rng, 0.6, 2.2)), float(between(rng, -0.5, 0.5))};
             p.half = {float(between(rng, 0.1, 0.5)), float(between(rng, 0.1, 0.5)), float(between(rng, 0.1, 0.5))};
             const glm::quat q = glm::normalize(glm::quat(float(between(rng, -1.0, 1.0)), float(between(rng, -1.0, 1.0)),

@@ -25,6 +25,7 @@
 
 #include "genome/random.hpp"
 #include "score/volume/voxelizer.hpp"
+#include "shape/kinds.hpp"
 
 namespace {
 
@@ -141,14 +142,15 @@ void BM_VoxelizeKind(benchmark::State& state) {
     for (int i = 0; i < 20; ++i) {
         Primitive p;
         p.kind = kind;
-        p.mesh = mesh;
-        p.taper = float(rng.uniform());
+        const float taper = float(rng.uniform());
         p.axes = rotated ? randomRotation(rng) : glm::mat3(1.0f);
         for (int k = 0; k < 3; ++k) {
             p.half[k] = float(0.2 + 0.8 * rng.uniform());
             p.centre[k] = float(grid.origin[k] + rng.uniform() * grid.nx * grid.voxelSize);
         }
-        if (kind == PrimitiveKind::Roof) p.taperZ = float(rng.uniform());  // drawn last: the other kinds keep their primitives
+        if (kind == PrimitiveKind::Cone) setParams<ConeKind>(p, {taper});
+        if (kind == PrimitiveKind::Mesh) setParams<MeshKind>(p, {mesh});
+        if (kind == PrimitiveKind::Roof) setParams<RoofKind>(p, {taper, float(rng.uniform())});  // drawn last: the other kinds keep their primitives
         geometry.primitives.push_back(p);
     }
     Voxelizer voxelizer(grid);

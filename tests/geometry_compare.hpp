@@ -9,15 +9,15 @@
 
 namespace shapevo::test {
 
-/// Bit-identical primitives and looks, field by field (the struct has a padding byte).
+/// Bit-identical primitives and looks, field by field (the struct has padding bytes; the kind's
+/// parameter block is compared as bytes).
 inline ::testing::AssertionResult identical(const Geometry& a, const Geometry& b) {
     if (a.primitives.size() != b.primitives.size())
         return ::testing::AssertionFailure() << a.primitives.size() << " primitives against " << b.primitives.size();
     for (std::size_t i = 0; i < a.primitives.size(); ++i) {
         const Primitive &p = a.primitives[i], &q = b.primitives[i];
-        if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, 4) != 0 ||
-            std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 || std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 ||
-            std::memcmp(&p.half, &q.half, sizeof p.half) != 0 || std::memcmp(&p.taperZ, &q.taperZ, 4) != 0)
+        if (p.kind != q.kind || !(p.params == q.params) || std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 ||
+            std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 || std::memcmp(&p.half, &q.half, sizeof p.half) != 0)
             return ::testing::AssertionFailure() << "primitive " << i << " differs";
     }
     if (!(a.appearance == b.appearance)) return ::testing::AssertionFailure() << "looks differ";

@@ -331,13 +331,12 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
                 if (out.primitives.size() >= maxPrimitives) return DeriveStatus::Truncated;
                 Primitive& p = out.primitives.emplace_back();
                 p.kind = st.primitive;
-                p.mesh = 0;
-                p.taper = 1.0f;
-                p.taperZ = 1.0f;
+                p.params = {};
                 p.centre = s.origin;
                 p.axes = s.axes;
                 p.half = halfAbs(s.size);
-                // The kind's own part (a cone's taper, a roof's fractions, a mesh's index): K::emit reads its arguments.
+                // The kind's own parameters (a cone's taper, a roof's fractions, a mesh's index): K::emit
+                // reads its arguments and sets them (setParams).
                 struct Arguments {
                     const Grammar& g;
                     const Statement& st;

@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shape/kinds.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -25,16 +27,17 @@ glm::vec3 inverseTile(const glm::vec3& tile) {
 
 float sign(float x) { return x < 0.0f ? -1.0f : 1.0f; }
 
-bool isRound(PrimitiveKind k) {
-    return k == PrimitiveKind::Cylinder || k == PrimitiveKind::Cone || k == PrimitiveKind::Paraboloid;
-}
-
-/// The mean radius of a round primitive in world units.
-float meanRadius(const Primitive& p) {
-    const float r = 0.5f * (std::fabs(p.half.x) + std::fabs(p.half.z));
-    if (p.kind == PrimitiveKind::Cone) return r * 0.5f * (1.0f + p.taper);
-    if (p.kind == PrimitiveKind::Paraboloid) return r * (2.0f / 3.0f);
-    return r;
+/// Whether p's kind is round (it has K::textureRadius), and then its mean radius in world units.
+bool roundRadius(const Primitive& p, float& radius) {
+    return visitKind(p.kind, [&](auto tag) {
+        using K = typename decltype(tag)::type;
+        if constexpr (requires { K::textureRadius(p); }) {
+            radius = K::textureRadius(p);
+            return true;
+        } else {
+            return false;
+        }
+    });
 }
 
 std::uint32_t bits(float f) {
@@ -65,11 +68,11 @@ void applyTextureUv(const Primitive& p, const TextureFrame& frame, std::uint32_t
     const std::vector<glm::vec3> own(mesh.vertices.begin() + firstVertex, mesh.vertices.end());
     mesh.vertices.resize(firstVertex);
     // The primitive's axis for the cylindrical mapping, turned towards the frame's y axis.
-    const bool round = isRound(p.kind);
+    float radius = 0.0f;
+    const bool round = roundRadius(p, radius);
     glm::vec3 w = p.axes[1];
     if (glm::dot(w, frame.axes[1]) < 0.0f) w = -w;
     const glm::vec3 e1 = p.axes[0], e2 = glm::cross(w, e1);
-    const float radius = round ? meanRadius(p) : 0.0f;
     const float onAxis = 1e-5f * radius;
     std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint32_t> index;
     for (std::size_t t = firstTriangle; t < mesh.triangles.size(); ++t) {

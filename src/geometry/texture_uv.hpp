@@ -12,13 +12,13 @@
 //   ax: u = -sign(n . ax) (d . az) / tile_z,   v = (d . ay) / tile_y
 //   ay: u = (d . ax) / tile_x,                 v = -sign(n . ay) (d . az) / tile_z
 // (sign(0) = +1), so a face reads left to right seen from outside, on the back and the left too.
-// Round kinds (cylinder, cone, paraboloid; their axis is the primitive's y axis w, turned so
+// Round kinds (those with a K::textureRadius: cylinder, cone, paraboloid; their axis is the primitive's y axis w, turned so
 // that w . ay >= 0): a triangle whose |n . w| is below sqrt(1/2) (their sides) is mapped
 // cylindrically instead:
 //   u = phi R / tile_x,   v = (d . w) / tile_y
 // where phi is the vertex's angle about w (right-handed, from the primitive's x axis, so u grows
-// to the right seen from outside) and R the primitive's mean radius in world units: (half.x +
-// half.z) / 2 for a cylinder, times (1 + taper) / 2 for a cone, times 2/3 for a paraboloid (its
+// to the right seen from outside) and R the primitive's mean radius in world units (its kind's
+// textureRadius): (half.x + half.z) / 2 for a cylinder, times (1 + taper) / 2 for a cone, times 2/3 for a paraboloid (its
 // radius averaged over its height). Each triangle's angles are unwrapped around the angle of its
 // centroid, so no triangle straddles the seam (at the primitive's -x side, where u jumps by
 // 2 pi R / tile_x); a vertex on the axis (a cone's apex) takes the mean angle of the others.

@@ -2,11 +2,9 @@
 // a polite probe), async with posted sends and Iprobe.
 #include "island/ring_migration.hpp"
 
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <numeric>
 
 #include <mpi.h>
 
@@ -70,28 +68,6 @@ std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, cons
         fitness.push_back(f);
     }
     return pos == in.size() ? "" : "trailing words";
-}
-
-std::vector<std::size_t> bestIndices(const Population& pop, std::size_t count) {
-    std::vector<std::size_t> order(pop.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pop.fitness[a] > pop.fitness[b]; });
-    order.resize(std::min(count, order.size()));
-    return order;
-}
-
-void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness,
-                  std::size_t slots) {
-    std::vector<std::size_t> order(std::min(slots, pop.size()));
-    std::iota(order.begin(), order.end(), 0);
-    // worst first; among equals the later index goes first, so the elite (early indices) stays
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return pop.fitness[a] < pop.fitness[b] || (pop.fitness[a] == pop.fitness[b] && a > b);
-    });
-    for (std::size_t k = 0; k < arrivals.size() && k < order.size(); ++k) {
-        pop.individuals[order[k]] = arrivals[k];
-        pop.fitness[order[k]] = fitness[k];
-    }
 }
 
 RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g,

@@ -1,5 +1,7 @@
 // RingMigration: every `interval` generations each island sends its best `count` individuals
-// (packed chromosome words plus fitness) to rank + 1, where they replace the worst.
+// (packed chromosome words plus fitness) to rank + 1, where they replace the worst (who leaves and
+// who is replaced, ties included: the migration policy, search/migration_policy.hpp, which the
+// hybrid search's in-process ring follows too).
 // Sync mode (repeatable) completes each exchange one migration late: the migrants sent at
 // generation g join the neighbour at its generation g + interval, so an island waits only when
 // its left neighbour is a whole interval behind, never for the scheduler's small delays (4 ranks
@@ -17,6 +19,7 @@
 #include "island/mpi_session.hpp"
 #include "island/migration_settings.hpp"
 #include "island/posted_sends.hpp"
+#include "search/migration_policy.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {
@@ -26,11 +29,6 @@ void packIndividuals(const Population& pop, const std::vector<std::size_t>& whic
 /// Append the individuals in `in` to `chromosomes`/`fitness`; "" on success, else what is wrong.
 std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
                               std::vector<Chromosome>& chromosomes, std::vector<double>& fitness);
-/// Indices of the `count` best individuals, best first (ties: lower index first).
-std::vector<std::size_t> bestIndices(const Population& pop, std::size_t count);
-/// Replace the worst individuals among the first `slots` (ties: higher index first) by the arrivals.
-void replaceWorst(Population& pop, const std::vector<Chromosome>& arrivals, const std::vector<double>& fitness,
-                  std::size_t slots);
 
 class RingMigration {
 public:

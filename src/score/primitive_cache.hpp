@@ -3,9 +3,9 @@
 // replays their rows instead of computing them again.
 //
 // Promises:
-//  - Exact: an entry is found only for a primitive whose kind, mesh index and every float (compared
-//    bit for bit) equal those it was stored with; the hash only picks the bucket. What a primitive
-//    writes depends on nothing else (the camera or grid is fixed per cache), so a replay writes the
+//  - Exact: an entry is found only for a primitive whose kind, parameter block (KindParams, byte
+//    for byte) and every float of its frame (compared bit for bit) equal those it was stored
+//    with; the hash only picks the bucket. What a primitive writes depends on nothing else (the camera or grid is fixed per cache), so a replay writes the
 //    very rows a computation would.
 //  - Bounded: at most `bytes` of records and entries, taken as needed: the entry table starts at
 //    128 KB and grows (x4) while over half full, up to a quarter of `bytes` and to 4x the entries
@@ -37,22 +37,24 @@
 namespace shapevo {
 
 /// A primitive's numbers packed without padding (the key of PrimitiveCache; compared bytewise):
-/// its kind and mesh index in one word, then its 17 floats.
+/// its kind in one word, its kind's parameter block as it is (KindParams: bytes, every unused one
+/// zero, so no kind's parameter can be left out), then the frame's 15 floats.
 struct PrimitiveKey {
-    static constexpr std::size_t kWords = 1 + (1 + 3 + 9 + 3 + 1);
+    static constexpr std::size_t kParamWords = KindParams::kBytes / 4;
+    static constexpr std::size_t kWords = 1 + kParamWords + (3 + 9 + 3);
     std::uint32_t words[kWords];
     PrimitiveKey() = default;
     explicit PrimitiveKey(const Primitive& p) {
-        words[0] = std::uint32_t(p.kind) | std::uint32_t(p.mesh) << 8;
-        std::memcpy(&words[1], &p.taper, 4);
-        std::memcpy(&words[2], &p.centre[0], 12);
-        std::memcpy(&words[5], &p.axes[0][0], 36);
-        std::memcpy(&words[14], &p.half[0], 12);
-        std::memcpy(&words[17], &p.taperZ, 4);
+        words[0] = std::uint32_t(p.kind);
+        std::memcpy(&words[1], p.params.bytes, KindParams::kBytes);
+        std::memcpy(&words[1 + kParamWords], &p.centre[0], 12);
+        std::memcpy(&words[4 + kParamWords], &p.axes[0][0], 36);
+        std::memcpy(&words[13 + kParamWords], &p.half[0], 12);
     }
     std::uint64_t hash() const { return quickHash(words, kWords); }
     bool operator==(const PrimitiveKey& o) const { return std::memcmp(words, o.words, sizeof words) == 0; }
 };
+static_assert(KindParams::kBytes % 4 == 0, "the parameter block is whole words of the key");
 
 /// A subtree's primitives, as found by the derivation's memo (geometry/subtree_memo.hpp): its
 /// start, which names its output exactly (the key of a PrimitiveCache of whole subtrees).

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "genome/nudge.hpp"
+#include "search/migration_policy.hpp"
 #include "search/pair_breeding.hpp"
 
 namespace shapevo {
@@ -167,12 +168,7 @@ void HybridSearch::step(Evaluator& evaluator) {
     if (hasScout() && generation_ % settings_.scoutInterval == 0) scoutTurn(evaluator);
 }
 
-std::size_t HybridSearch::bestSlot(std::size_t k) const {
-    std::size_t hi = islandBegin(k);
-    for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i)
-        if (pop_.fitness[i] > pop_.fitness[hi]) hi = i;
-    return hi;
-}
+std::size_t HybridSearch::bestSlot(std::size_t k) const { return bestEmigrant(pop_.fitness, islandBegin(k), islandBegin(k + 1)); }
 
 std::size_t HybridSearch::worstMainIsland() const {
     std::size_t worst = 0;
@@ -216,16 +212,13 @@ void HybridSearch::scoutTurn(Evaluator& evaluator) {
 
 void HybridSearch::migrate() {
     // Every island's best and worst first, then the copies: island k's best replaces island
-    // k + 1's worst around the ring of the main islands (a scout takes no part; best: the lowest
-    // slot among equals; worst: the highest).
+    // k + 1's worst around the ring of the main islands (a scout takes no part). Who emigrates and
+    // who is replaced is the migration policy's (search/migration_policy.hpp), as between ranks.
     const std::size_t n = mainIslands();
     std::vector<std::size_t>& best = migrationSlots_;  // [0, n) best, [islands, islands + n) worst
     for (std::size_t k = 0; k < n; ++k) {
-        std::size_t lo = islandBegin(k);
-        for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i)
-            if (pop_.fitness[i] <= pop_.fitness[lo]) lo = i;
         best[k] = bestSlot(k);
-        best[islands_ + k] = lo;
+        best[islands_ + k] = worstReplaced(pop_.fitness, islandBegin(k), islandBegin(k + 1));
     }
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t from = best[k], to = best[islands_ + (k + 1) % n];

@@ -83,7 +83,7 @@ private:
     bool hasScout() const { return settings_.scoutInterval > 0 && islands_ >= 3; }
     /// The islands that migrate and may be restarted as the worst: all but a scout.
     std::size_t mainIslands() const { return hasScout() ? islands_ - 1 : islands_; }
-    /// The slot of island k's best (the lowest slot among equals).
+    /// The slot of island k's best (the migration policy's emigrant: the lowest slot among equals).
     std::size_t bestSlot(std::size_t k) const;
     /// The main island whose best is lowest (the last among equals).
     std::size_t worstMainIsland() const;

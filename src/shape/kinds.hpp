@@ -1,17 +1,7 @@
 // The primitive kinds, listed once, and their static dispatch. Every kind is one file in
-// shape/kinds/ holding one struct K with:
-//   K::kind                                  its PrimitiveKind (the list's order is the enum's)
-//   K::keyword                               its grammar keyword
-//   K::parseArguments(args)                  reads what follows the keyword (grammar/parser.cpp:
-//                                            args.optionalExpression(word, otherwise), args.meshFile(),
-//                                            args.word(w), args.atStatementEnd(), args.tag(v), ...)
-//   K::emit(primitive, args)                 sets what the statement adds to the derived frame
-//                                            (geometry/derive.cpp: args.expression(i), args.slot())
-//   K::voxelize(p, meshes, rows, counts)     its exact voxel rows (score/voxelizer.hpp is `rows`)
-//   K::outline(builder, map, p, out)         its silhouette pieces (score/silhouette_outline.hpp)
-//   K::surface(surfaceBuilder, p, meshes)    its tessellation (shape/surface.hpp)
-// and optionally K::VoxelScratch (the voxelizer keeps one, rows.scratch<K>()) and K::shapeOf(p,
-// meshes) (null: the primitive refers to data it does not have, and draws nothing).
+// shape/kinds/ holding one struct K that meets PrimitiveKindContract (shape/primitive_kind.hpp:
+// its kind and keyword, grammar arguments, parameters, voxel rows, silhouette outline,
+// tessellation, and the optional members); the list below is checked against it, kind by kind.
 // visitKind(kind, f) calls f(KindTag<K>{}) for the kind's struct: one compare chain per primitive
 // (or statement), inlined, so the per-row and per-span loops inside a kind are monomorphic; no
 // virtual call anywhere.
@@ -31,6 +21,7 @@
 #include "shape/kinds/roof.hpp"
 #include "shape/kinds/sphere.hpp"
 #include "shape/primitive.hpp"
+#include "shape/primitive_kind.hpp"
 
 namespace shapevo {
 
@@ -77,6 +68,21 @@ template <class... K>
 struct AllVoxelScratch<KindList<K...>> : VoxelScratchOf<K>::type... {};
 }  // namespace detail
 
+namespace detail {
+/// The check, kind by kind: a kind that misses part of the contract fails here, and the compiler
+/// names the kind, the part of PrimitiveKindContract and the member.
+template <class K>
+constexpr bool meetsContract() {
+    static_assert(PrimitiveKindContract<K>, "every primitive kind meets PrimitiveKindContract (shape/primitive_kind.hpp)");
+    return PrimitiveKindContract<K>;
+}
+template <class... K>
+constexpr bool allMeetContract(KindList<K...>) {
+    return (meetsContract<K>() && ...);
+}
+}  // namespace detail
+
+static_assert(detail::allMeetContract(Kinds{}), "every listed kind meets PrimitiveKindContract");
 static_assert(Kinds::size == std::size_t(kPrimitiveKinds), "one kind per PrimitiveKind");
 static_assert(detail::kindsInEnumOrder(Kinds{}), "the kinds list follows the PrimitiveKind order");
 

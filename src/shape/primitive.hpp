@@ -1,8 +1,10 @@
 // Primitive: what a derivation emits, and Geometry, one model's primitives. Every kind lives in an
 // oriented frame: a centre, three unit axes (a right- or left-handed frame; mirroring flips one)
-// and half extents along them. Each kind is defined in its own file shape/kinds/<kind>.hpp
-// (keyword, exact solid, voxel rows, silhouette outline, tessellation; shape/kinds.hpp lists
-// them). In the frame's local coordinates u = (x/half.x, y/half.y, z/half.z) the solids are:
+// and half extents along them; what a kind needs beyond its frame (a cone's taper, a roof's two
+// fractions, a mesh's index) is its own parameter block, KindParams, that only the kind reads
+// (through its K::Params). Each kind is defined in its own file shape/kinds/<kind>.hpp (keyword,
+// parameters, exact solid, voxel rows, silhouette outline, tessellation; the contract is the
+// concept in shape/primitive_kind.hpp, and shape/kinds.hpp lists them). In the frame's local coordinates u = (x/half.x, y/half.y, z/half.z) the solids are:
 //   Box       |u.x| <= 1, |u.y| <= 1, |u.z| <= 1
 //   Cylinder  u.x^2 + u.z^2 <= 1, |u.y| <= 1                (axis = the frame's y axis)
 //   Cone      u.x^2 + u.z^2 <= r(u.y)^2, |u.y| <= 1, with r(y) = (1 + taper)/2 + (taper - 1)/2 * y:
@@ -18,8 +20,13 @@
 //   Mesh      the closed triangle mesh Geometry::meshes[mesh], whose vertices are already in u
 //             coordinates (the file's bounding box mapped onto [-1, 1]^3)
 #pragma once
+#include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -38,15 +45,67 @@ inline constexpr int kPrimitiveKinds = 7;
 /// frusta with vertices at angles 2*pi*k/kRoundSides from the local +x axis towards +z.
 inline constexpr int kRoundSides = 16;
 
+namespace detail {
+/// True for a P without padding bytes; a compile error (reading an uninitialized byte in a
+/// constant expression) for one with padding, whose bytes could not be compared as a key.
+template <class P>
+constexpr bool noPaddingBytes() {
+    const auto bytes = std::bit_cast<std::array<unsigned char, sizeof(P)>>(P{});
+    unsigned sum = 0;
+    for (unsigned char b : bytes) sum += b;  // reads every byte: padding does not compile
+    return sum <= 255u * sizeof(P);
+}
+}  // namespace detail
+
+/// A kind's own parameters as bytes, which only the kind interprets: as its K::Params (a
+/// trivially copyable struct of at most kBytes bytes without padding), read with paramsOf<K>(p)
+/// and written with setParams<K>(p, params). Copied, hashed and compared as bytes
+/// (score/primitive_cache.hpp): writing zeroes every byte the kind's Params does not cover, so
+/// equal parameters are equal bytes. All zero for a kind without parameters.
+struct KindParams {
+    static constexpr std::size_t kBytes = 8;
+    alignas(4) unsigned char bytes[kBytes] = {};
+
+    /// Whether P can be kept in the block (size, alignment, trivially copyable).
+    template <class P>
+    static constexpr bool fits = std::is_trivially_copyable_v<P> && sizeof(P) <= kBytes && alignof(P) <= 4;
+
+    template <class P>
+    P as() const {
+        static_assert(fits<P>, "a kind's Params must be trivially copyable and fit KindParams::kBytes");
+        P v;
+        std::memcpy(&v, bytes, sizeof v);
+        return v;
+    }
+    template <class P>
+    void set(const P& v) {
+        static_assert(fits<P>, "a kind's Params must be trivially copyable and fit KindParams::kBytes");
+        static_assert(detail::noPaddingBytes<P>(), "a kind's Params must have no padding bytes (they are compared as bytes)");
+        std::memset(bytes, 0, kBytes);
+        std::memcpy(bytes, &v, sizeof v);
+    }
+    bool operator==(const KindParams&) const = default;
+};
+
 struct Primitive {
     PrimitiveKind kind = PrimitiveKind::Box;
-    std::uint16_t mesh = 0;  ///< Mesh: index into Geometry::meshes
-    float taper = 1.0f;      ///< Cone: top radius / bottom radius; Roof: top face / bottom face along x; in [0, 1]
+    KindParams params;       ///< the kind's own parameters (its K::Params; zero for a kind without them)
     glm::vec3 centre{0.0f};
     glm::mat3 axes{1.0f};    ///< columns: the frame's local x, y, z directions (unit length)
     glm::vec3 half{0.5f};    ///< half extents along the axes
-    float taperZ = 1.0f;     ///< Roof: top face / bottom face along z, in [0, 1] (last: the fields above keep their places)
 };
+static_assert(sizeof(Primitive) == 4 + KindParams::kBytes + 60, "kind, parameters, then the frame's 15 floats without padding");
+
+/// Kind K's parameters of p (p.kind is K::kind).
+template <class K>
+typename K::Params paramsOf(const Primitive& p) {
+    return p.params.as<typename K::Params>();
+}
+/// Sets kind K's parameters of p (p.kind is K::kind); every other byte of the block becomes zero.
+template <class K>
+void setParams(Primitive& p, const typename K::Params& params) {
+    p.params.set(params);
+}
 
 /// How a primitive looks in exported meshes: a colour (linear RGB in [0, 1]) and a named
 /// material (an index into Geometry::materialNames; 0 is the unnamed default), and for a

@@ -17,6 +17,10 @@
 
 namespace shapevo {
 
+/// A round kind's radius before its profile: the mean of its half extents across its axis,
+/// (|half.x| + |half.z|) / 2, in world units (the round kinds' textureRadius starts from it).
+inline float meanCrossRadius(const Primitive& p) { return 0.5f * (std::fabs(p.half.x) + std::fabs(p.half.z)); }
+
 /// Builds one primitive's surface: vertices in unit coordinates are placed in the frame as they
 /// are added; triangles are given counter-clockwise seen from outside in the unit frame (a
 /// right-handed frame) and reversed when the frame is mirrored.

@@ -16,6 +16,7 @@
 #include "geometry/tessellation.hpp"
 #include "grammar/crl/crl_syntax.hpp"
 #include "grammar/front_ends.hpp"
+#include "../kind_params.hpp"
 
 namespace shapevo {
 namespace {
@@ -60,10 +61,10 @@ TEST(CrlModels, ToyCastleHasTheStructureOfChapterFour) {
                 EXPECT_NEAR(p.centre.y, h / 2, 1e-3f) << "a stone stands on the ground";
                 heights.insert(h);
                 if (p.kind == PrimitiveKind::Box) ++roofs["cuboid"];
-                else if (p.taper == 1 && p.taperZ == 0) ++roofs["gable along X"];
-                else if (p.taper == 0 && p.taperZ == 1) ++roofs["gable along Y"];
-                else if (std::fabs(p.taper - 0.6f) < 1e-6f && std::fabs(p.taperZ - 0.6f) < 1e-6f) ++roofs["mansard"];
-                else ADD_FAILURE() << "unexpected stone volume " << p.taper << " " << p.taperZ;
+                else if (test::taperOf(p) == 1 && test::taperZOf(p) == 0) ++roofs["gable along X"];
+                else if (test::taperOf(p) == 0 && test::taperZOf(p) == 1) ++roofs["gable along Y"];
+                else if (std::fabs(test::taperOf(p) - 0.6f) < 1e-6f && std::fabs(test::taperZOf(p) - 0.6f) < 1e-6f) ++roofs["mansard"];
+                else ADD_FAILURE() << "unexpected stone volume " << test::taperOf(p) << " " << test::taperZOf(p);
             }
             // the centre building's door faces: CRL x = +-10, |y| < 10, below 70 % of its 50 units
             if (p.kind == PrimitiveKind::Mesh && std::fabs(std::fabs(p.centre.x) - 10) < 1 && std::fabs(p.centre.z) < 10 && p.centre.y < 35)

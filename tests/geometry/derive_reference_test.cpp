@@ -15,6 +15,7 @@
 #include "geometry/derive.hpp"
 #include "grammar/expression.hpp"
 #include "grammar/front_ends.hpp"
+#include "shape/kinds.hpp"
 
 namespace shapevo {
 namespace {
@@ -98,12 +99,12 @@ DeriveStatus referenceDerive(const Grammar& g, const Chromosome& c, std::vector<
             }
             default: {
                 if (out.size() >= maxPrimitives) return DeriveStatus::Truncated;
-                Primitive p{st.primitive, 0, 1.0f, s.origin, s.axes, glm::abs(s.size) * 0.5f};
+                Primitive p{st.primitive, {}, s.origin, s.axes, glm::abs(s.size) * 0.5f};
                 if (st.primitive == PrimitiveKind::Cone) {
                     const float top = eval(st.expr[0]);
-                    p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;
+                    setParams<ConeKind>(p, {top >= 0.0f ? std::min(top, 1.0f) : 0.0f});
                 } else if (st.primitive == PrimitiveKind::Mesh) {
-                    p.mesh = st.slot;
+                    setParams<MeshKind>(p, {st.slot});
                 } else if (st.primitive == PrimitiveKind::Roof) {
                     // slot: 0 gable, 1 hip, 2 pyramid, 3 top (x, z); the ridge runs along the
                     // longer horizontal half extent, along x on a tie
@@ -118,8 +119,8 @@ DeriveStatus referenceDerive(const Grammar& g, const Chromosome& c, std::vector<
                         if (hx >= hz) tx = 1.0f - hz / hx;
                         else tz = 1.0f - hx / hz;
                     }
-                    p.taper = std::isnan(tx) ? 0.0f : std::clamp(tx, 0.0f, 1.0f);
-                    p.taperZ = std::isnan(tz) ? 0.0f : std::clamp(tz, 0.0f, 1.0f);
+                    setParams<RoofKind>(p, {std::isnan(tx) ? 0.0f : std::clamp(tx, 0.0f, 1.0f),
+                                            std::isnan(tz) ? 0.0f : std::clamp(tz, 0.0f, 1.0f)});
                 }
                 if (!referenceBounded(p)) return DeriveStatus::NonFinite;
                 out.push_back(p);
@@ -135,9 +136,7 @@ long firstDifference(const std::vector<Primitive>& a, const std::vector<Primitiv
     for (std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
         if (i >= a.size() || i >= b.size()) return long(i);
         const Primitive &p = a[i], &q = b[i];
-        if (p.kind != q.kind || p.mesh != q.mesh || std::memcmp(&p.taper, &q.taper, sizeof p.taper) != 0 ||
-            std::memcmp(&p.taperZ, &q.taperZ, sizeof p.taperZ) != 0 ||
-            std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 ||
+        if (p.kind != q.kind || !(p.params == q.params) || std::memcmp(&p.centre, &q.centre, sizeof p.centre) != 0 ||
             std::memcmp(&p.axes, &q.axes, sizeof p.axes) != 0 || std::memcmp(&p.half, &q.half, sizeof p.half) != 0)
             return long(i);
     }

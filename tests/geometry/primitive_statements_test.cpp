@@ -11,6 +11,7 @@
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
+#include "../kind_params.hpp"
 
 namespace shapevo {
 namespace {
@@ -33,10 +34,13 @@ TEST(PrimitiveStatements, EachStatementEmitsItsKindFillingTheScope) {
         EXPECT_EQ(out.primitives[i].kind, kinds[i]) << i;
         EXPECT_EQ(out.primitives[i].half, glm::vec3(1, 2, 3)) << i;
     }
-    EXPECT_EQ(out.primitives[2].taper, 0.0f);   // `cone` alone is pointed
-    EXPECT_EQ(out.primitives[3].taper, 0.25f);
-    EXPECT_EQ(out.primitives[4].taper, 1.0f);   // clamped to [0, 1]
-    for (const Primitive& p : out.primitives) EXPECT_EQ(p.taperZ, 1.0f);  // only roofs set it
+    EXPECT_EQ(test::taperOf(out.primitives[2]), 0.0f);   // `cone` alone is pointed
+    EXPECT_EQ(test::taperOf(out.primitives[3]), 0.25f);
+    EXPECT_EQ(test::taperOf(out.primitives[4]), 1.0f);   // clamped to [0, 1]
+    for (const Primitive& p : out.primitives)  // only cones have parameters here; the others' block stays zero
+        if (p.kind != PrimitiveKind::Cone) {
+            EXPECT_EQ(p.params, KindParams{});
+        }
     EXPECT_EQ(out.meshes, &g.meshes);
 }
 
@@ -78,8 +82,8 @@ TEST(PrimitiveStatements, EachRoofFormGivesItsTopFractionsFromTheScope) {
     ASSERT_EQ(out.primitives.size(), std::size(want));
     for (std::size_t i = 0; i < std::size(want); ++i) {
         EXPECT_EQ(out.primitives[i].kind, want[i].kind) << i;
-        EXPECT_EQ(out.primitives[i].taper, want[i].tx) << i;
-        EXPECT_EQ(out.primitives[i].taperZ, want[i].tz) << i;
+        EXPECT_EQ(test::taperOf(out.primitives[i]), want[i].tx) << i;
+        EXPECT_EQ(test::taperZOf(out.primitives[i]), want[i].tz) << i;
     }
     EXPECT_EQ(out.primitives[0].half, glm::vec3(2, 1, 1));
     EXPECT_EQ(out.primitives[12].half, glm::vec3(1.5f, 0.5f, 1.5f));
@@ -94,8 +98,8 @@ TEST(PrimitiveStatements, RoofTopFractionsAreExpressionsOfTheGenesParameters) {
     ASSERT_EQ(derive(g, c, out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 1u);
     const float t = c.param(0, g.rules[0], 0);
-    EXPECT_EQ(out.primitives[0].taper, t);
-    EXPECT_EQ(out.primitives[0].taperZ, 1 - t);
+    EXPECT_EQ(test::taperOf(out.primitives[0]), t);
+    EXPECT_EQ(test::taperZOf(out.primitives[0]), 1 - t);
     EXPECT_GT(t, 0.2f);
 }
 
@@ -116,10 +120,10 @@ TEST(PrimitiveStatements, AMansardRoofIsAFrustumWithAHipRoofOnItsTopFace) {
     ASSERT_EQ(out.primitives.size(), 2u);
     const Primitive &lower = out.primitives[0], &upper = out.primitives[1];
     EXPECT_NEAR(lower.centre.y + lower.half.y, upper.centre.y - upper.half.y, 1e-6f);  // stacked
-    EXPECT_NEAR(lower.half.x * lower.taper, upper.half.x, 1e-6f);                       // on the top face
-    EXPECT_NEAR(lower.half.z * lower.taperZ, upper.half.z, 1e-6f);
-    EXPECT_NEAR(upper.taper, 1.0f - 1.05f / 1.6f, 1e-6f);  // hip: along x, shortened by half.z at both ends
-    EXPECT_EQ(upper.taperZ, 0.0f);
+    EXPECT_NEAR(lower.half.x * test::taperOf(lower), upper.half.x, 1e-6f);                       // on the top face
+    EXPECT_NEAR(lower.half.z * test::taperZOf(lower), upper.half.z, 1e-6f);
+    EXPECT_NEAR(test::taperOf(upper), 1.0f - 1.05f / 1.6f, 1e-6f);  // hip: along x, shortened by half.z at both ends
+    EXPECT_EQ(test::taperZOf(upper), 0.0f);
 }
 
 TEST(PrimitiveStatements, TerminalBlockRunsOnlyWithoutExpressedChildrenAndRestoresTheScope) {
@@ -164,7 +168,7 @@ TEST(PrimitiveStatements, MeshFilesAreReadOnceRelativeToTheGrammarAndNormalized)
     ASSERT_EQ(derive(g, rootOnly(g), out, scratch), DeriveStatus::Complete);
     ASSERT_EQ(out.primitives.size(), 2u);
     EXPECT_EQ(out.primitives[1].kind, PrimitiveKind::Mesh);
-    EXPECT_EQ(out.primitives[1].mesh, 0);
+    EXPECT_EQ(test::meshIndexOf(out.primitives[1]), 0);
     EXPECT_EQ(out.primitives[1].half, glm::vec3(1, 1, 1));
 }
 

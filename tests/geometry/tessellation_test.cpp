@@ -15,6 +15,8 @@
 #include "report/model_writer.hpp"
 #include "shape/kinds/paraboloid.hpp"
 
+#include "../kind_params.hpp"
+
 namespace shapevo {
 namespace {
 
@@ -50,7 +52,7 @@ double polygonArea() { return 0.5 * kRoundSides * std::sin(2.0 * kPi / kRoundSid
 Primitive primitive(PrimitiveKind kind, const glm::mat3& axes, float taper = 1.0f) {
     Primitive p;
     p.kind = kind;
-    p.taper = taper;
+    test::setKindParams(p, taper);
     p.centre = {3.0f, -1.0f, 2.5f};
     p.axes = axes;
     p.half = {1.5f, 0.75f, 2.0f};
@@ -185,7 +187,7 @@ int slivers(const Mesh& m) {
 
 Primitive roofPrimitive(const glm::mat3& axes, float tx, float tz) {
     Primitive p = primitive(PrimitiveKind::Roof, axes, tx);
-    p.taperZ = tz;
+    test::setKindParams(p, tx, tz);
     return p;
 }
 
@@ -265,7 +267,7 @@ TEST(Tessellation, MeshPrimitivePlacesTheGrammarMeshInItsFrame) {
     for (const Frame& f : frames()) {
         SCOPED_TRACE(f.name);
         Primitive p = primitive(PrimitiveKind::Mesh, f.axes);
-        p.mesh = 1;
+        setParams<MeshKind>(p, {1});
         const Mesh m = surface(p, &meshes);
         EXPECT_EQ(m.vertices.size(), 6u);
         EXPECT_EQ(m.triangles.size(), 8u);
@@ -280,7 +282,7 @@ TEST(Tessellation, MeshPrimitivePlacesTheGrammarMeshInItsFrame) {
 
 TEST(Tessellation, MeshPrimitiveWithoutItsMeshThrows) {
     Primitive p = primitive(PrimitiveKind::Mesh, glm::mat3(1.0f));
-    p.mesh = 2;
+    setParams<MeshKind>(p, {2});
     const std::vector<MeshShape> meshes(2);
     EXPECT_THROW(surface(p, nullptr), std::out_of_range);
     EXPECT_THROW(surface(p, &meshes), std::out_of_range);

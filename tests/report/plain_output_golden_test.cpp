@@ -11,6 +11,7 @@
 #include "base/hash.hpp"
 #include "mesh/glb_writer.hpp"
 #include "report/model_writer.hpp"
+#include "shape/kinds/mesh.hpp"
 #include "../test_support.hpp"
 
 namespace shapevo {
@@ -47,7 +48,7 @@ Geometry exactModel(const std::vector<MeshShape>& meshes) {
     g.primitives.push_back(turned);
     Primitive mesh;
     mesh.kind = PrimitiveKind::Mesh;
-    mesh.mesh = 0;
+    setParams<MeshKind>(mesh, {0});
     mesh.centre = {0.0f, 2.0f, 0.0f};
     mesh.half = {1.0f, 0.5f, 2.0f};
     g.primitives.push_back(mesh);

@@ -78,7 +78,7 @@ TEST(IncrementalScoring, RecordedVoxelRunsReplayToTheSameCountsForEveryKind) {
         g.meshes = &meshes;
         for (int i = 0; i < 6; ++i) {
             Primitive p = test::randomPrimitive(PrimitiveKind(rng.below(kPrimitiveKinds)), grid, rng, 2);
-            if (p.kind == PrimitiveKind::Mesh) p.mesh = std::uint16_t(rng.below(2));
+            if (p.kind == PrimitiveKind::Mesh) setParams<MeshKind>(p, {std::uint16_t(rng.below(2))});
             g.primitives.push_back(p);
         }
         const VoxelCounts want = full.score(g, target);
@@ -124,9 +124,18 @@ TEST(IncrementalScoring, CacheFindsOnlyBitIdenticalPrimitives) {
     EXPECT_TRUE(missesFor(q));
     q = p, q.kind = PrimitiveKind::Cone;
     EXPECT_TRUE(missesFor(q));
-    q = p, q.taperZ = 0.5f;
+    q = p, q.params.bytes[KindParams::kBytes - 1] = 1;  // any byte of the kind's parameters, the last one too
     EXPECT_TRUE(missesFor(q));
-    q = p, q.mesh = 1;
+    q = p, q.params.bytes[0] = 1;
+    EXPECT_TRUE(missesFor(q));
+    Primitive roof = p;  // two roofs that differ in their z fraction only
+    roof.kind = PrimitiveKind::Roof;
+    setParams<RoofKind>(roof, {1.0f, 0.25f});
+    cache.store(PrimitiveKey(roof), PrimitiveKey(roof).hash(), rows, 7);
+    q = roof, setParams<RoofKind>(q, {1.0f, 0.5f});
+    EXPECT_TRUE(missesFor(q));
+    EXPECT_FALSE(cache.find(PrimitiveKey(q), PrimitiveKey(roof).hash(), found));
+    q = p, q.kind = PrimitiveKind::Mesh, setParams<MeshKind>(q, {1});
     EXPECT_TRUE(missesFor(q));
     q = p, q.axes[2][1] = -0.0f;  // equal as a number, not as bits: a miss is always safe
     EXPECT_TRUE(missesFor(q));

@@ -46,7 +46,7 @@ void bruteForceAdd(const Primitive& p, const std::vector<MeshShape>& meshes, con
     std::function<bool(double, double, double)> inside;
     double lo[3], hi[3];
     if (p.kind == PrimitiveKind::Mesh) {
-        if (!mesh.place(p, meshes[p.mesh])) return;
+        if (!mesh.place(p, meshes[test::meshIndexOf(p)])) return;
         for (int j = 0; j < 3; ++j) lo[j] = mesh.lo(j), hi[j] = mesh.hi(j);
         inside = [&](double x, double y, double z) { return mesh.contains(x, y, z); };
     } else {
@@ -249,8 +249,8 @@ TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendic
         for (std::uint16_t mesh = 0; mesh < (kind == PrimitiveKind::Mesh ? 2 : 1); ++mesh) {
             Primitive p;
             p.kind = kind;
-            p.mesh = mesh;
-            p.taper = 0.0f;
+            float taper = 0.0f, taperZ = 1.0f;
+            test::setKindParams(p, taper, taperZ, mesh);
             p.axes = rotated;
             p.centre = {0, 0, 1e20f};  // far away: must not overflow or loop
             cases.push_back(p);
@@ -269,8 +269,9 @@ TEST(PrimitiveVoxelizerExactness, FarHugeTinyNegativeNonFiniteAndNearlyPerpendic
             cases.push_back(p);
             for (int i = 0; i < 20; ++i) {  // a tiny tilt: rows almost along an axis or a face
                 p.axes = tilted;
-                p.taper = float(rng.uniform());
-                if (kind == PrimitiveKind::Roof) p.taperZ = float(rng.uniform());
+                taper = float(rng.uniform());
+                if (kind == PrimitiveKind::Roof) taperZ = float(rng.uniform());
+                test::setKindParams(p, taper, taperZ, mesh);
                 p.centre = {float(rng.uniform() - 0.5), float(rng.uniform() - 0.5), float(rng.uniform() - 0.5)};
                 p.half = {float(0.1 + rng.uniform()), float(0.1 + rng.uniform()), float(0.1 + rng.uniform())};
                 cases.push_back(p);
@@ -307,9 +308,9 @@ TEST(PrimitiveVoxelizerExactness, MeshPrimitiveWithoutItsMeshCoversNothing) {
     EXPECT_EQ(vox.score(geometry, target), VoxelCounts{});  // no meshes at all
     const std::vector<MeshShape> meshes = {test::octahedron()};
     geometry.meshes = &meshes;
-    geometry.primitives[0].mesh = 1;  // out of range
+    setParams<MeshKind>(geometry.primitives[0], {1});  // out of range
     EXPECT_EQ(vox.score(geometry, target), VoxelCounts{});
-    geometry.primitives[0].mesh = 0;
+    setParams<MeshKind>(geometry.primitives[0], {0});
     EXPECT_GT(vox.score(geometry, target).occupied, 0u);
 }
 

@@ -17,6 +17,8 @@
 #include "score/volume/volume_target.hpp"
 #include "score/volume/voxelizer.hpp"
 
+#include "../kind_params.hpp"
+
 namespace shapevo::test {
 
 /// Axes from a uniformly random rotation (a random unit quaternion).
@@ -87,12 +89,15 @@ inline Primitive randomPrimitive(PrimitiveKind kind, const GridSpec& grid, Rng& 
     else p.axes = randomAxisAligned(rng);
     if (rng.below(4) == 0) p.axes[int(rng.below(3))] *= -1.0f;  // a mirrored frame
     const std::uint32_t t = rng.below(4);
-    p.taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
-    if (kind == PrimitiveKind::Mesh) p.mesh = std::uint16_t(rng.below(meshes));
+    const float taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
+    std::uint16_t mesh = 0;
+    float taperZ = 1.0f;
+    if (kind == PrimitiveKind::Mesh) mesh = std::uint16_t(rng.below(meshes));
     if (kind == PrimitiveKind::Roof) {  // drawn last: the other kinds' draws stay as they were
         const std::uint32_t tz = rng.below(4);
-        p.taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : float(rng.uniform());
+        taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : float(rng.uniform());
     }
+    setKindParams(p, taper, taperZ, mesh);
     return p;
 }
 
@@ -193,11 +198,11 @@ inline long double textbookDistance(const Primitive& p, const Local& u) {
     case PrimitiveKind::Sphere: return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) - 1;
     case PrimitiveKind::Cylinder: return std::max(radial - 1, slab);
     case PrimitiveKind::Cone: {
-        const long double t = p.taper;
+        const long double t = taperOf(p);
         return std::max(radial - ((1 + t) / 2 + (t - 1) / 2 * u[1]), slab);
     }
     case PrimitiveKind::Roof: {
-        const long double tx = clamped(p.taper), tz = clamped(p.taperZ);
+        const long double tx = clamped(taperOf(p)), tz = clamped(taperZOf(p));
         return std::max({std::fabs(u[0]) - ((1 + tx) / 2 + (tx - 1) / 2 * u[1]),
                          std::fabs(u[2]) - ((1 + tz) / 2 + (tz - 1) / 2 * u[1]), slab});
     }

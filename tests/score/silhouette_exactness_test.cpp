@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "silhouette_test_util.hpp"
+#include "../kind_params.hpp"
 
 namespace shapevo {
 namespace {
@@ -94,8 +95,8 @@ TEST(SilhouetteExactness, EveryKindAndCameraMatchesBruteForceBitForBit) {
                 const long before = covered;
                 if (!agrees(raster, builder, {p}, meshes, target, stats, covered)) {
                     ADD_FAILURE() << "primitive " << i << " centre (" << p.centre.x << ", " << p.centre.y << ", " << p.centre.z
-                                  << ") half (" << p.half.x << ", " << p.half.y << ", " << p.half.z << ") taper " << p.taper
-                                  << " taperZ " << p.taperZ;
+                                  << ") half (" << p.half.x << ", " << p.half.y << ", " << p.half.z << ") taper " << test::taperOf(p)
+                                  << " taperZ " << test::taperZOf(p);
                     return;
                 }
                 empty += covered == before;

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "silhouette_test_util.hpp"
+#include "../kind_params.hpp"
 
 namespace shapevo {
 namespace {
@@ -29,7 +30,7 @@ std::vector<glm::dvec3> allVertices(const Primitive& p) {
         return v;
     }
     if (p.kind == PrimitiveKind::Roof) {  // the bottom square and the top rectangle
-        const double tx = std::clamp(double(p.taper), 0.0, 1.0), tz = std::clamp(double(p.taperZ), 0.0, 1.0);
+        const double tx = std::clamp(double(test::taperOf(p)), 0.0, 1.0), tz = std::clamp(double(test::taperZOf(p)), 0.0, 1.0);
         for (int i = 0; i < 8; ++i) {
             const double s = i & 2 ? 1.0 : -1.0;
             v.push_back({(i & 1 ? 1.0 : -1.0) * (s > 0 ? tx : 1.0), s, (i & 4 ? 1.0 : -1.0) * (s > 0 ? tz : 1.0)});
@@ -47,7 +48,7 @@ std::vector<glm::dvec3> allVertices(const Primitive& p) {
         v.push_back({0.0, 1.0, 0.0});
         return v;
     }
-    const double top = p.kind == PrimitiveKind::Cone ? std::max(0.0, double(p.taper)) : 1.0;
+    const double top = p.kind == PrimitiveKind::Cone ? std::max(0.0, double(test::taperOf(p))) : 1.0;
     for (int k = 0; k < kRoundSides; ++k) {
         const double a = 2.0 * M_PI * k / kRoundSides;
         v.push_back({std::cos(a), -1.0, std::sin(a)});

@@ -165,12 +165,13 @@ inline Primitive randomPrimitive(PrimitiveKind kind, const Scene& scene, Rng& rn
     p.axes = style == 4 ? glm::mat3(1.0f) : randomRotation(rng);
     if (rng.below(4) == 0) p.axes[int(rng.below(3))] *= -1.0f;  // mirrored
     const std::uint32_t t = rng.below(10);
-    p.taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
-    p.mesh = 0;
+    const float taper = t == 0 ? 0.0f : t == 1 ? 1.0f : float(rng.uniform());
+    float taperZ = 1.0f;
     if (kind == PrimitiveKind::Roof) {  // drawn last: the other kinds' draws stay as they were
         const std::uint32_t tz = rng.below(10);
-        p.taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : tz == 2 ? p.taper : float(rng.uniform());  // 2: a square frustum
+        taperZ = tz == 0 ? 0.0f : tz == 1 ? 1.0f : tz == 2 ? taper : float(rng.uniform());  // 2: a square frustum
     }
+    setKindParams(p, taper, taperZ, 0);
     return p;
 }
 

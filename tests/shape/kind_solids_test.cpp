@@ -24,7 +24,7 @@ using test::Local;
 long double textbook(const Primitive& p, const Local& u) {
     if (p.kind != PrimitiveKind::Mesh) return test::textbookDistance(p, u);
     // meshes: 0 = octahedron |u|_1 <= 1, 1 = L-prism
-    if (p.mesh == 0) return std::fabs(u[0]) + std::fabs(u[1]) + std::fabs(u[2]) - 1;
+    if (test::meshIndexOf(p) == 0) return std::fabs(u[0]) + std::fabs(u[1]) + std::fabs(u[2]) - 1;
     const long double lower = std::max(std::fabs(u[0]) - 1, std::fabs(u[1] + 0.5L) - 0.5L);  // [-1,1] x [-1,0]
     const long double left = std::max(std::fabs(u[0] + 0.5L) - 0.5L, std::fabs(u[1]) - 1);   // [-1,0] x [-1,1]
     return std::max(std::min(lower, left), std::fabs(u[2]) - 1);
@@ -88,8 +88,8 @@ void checkAgainstTextbook(const Primitive& p, const std::function<bool(double, d
         ++checked;
         (g < 0 ? in : out) += 1;
         const Local ul = toLocal(p, w);
-        ASSERT_EQ(inside(w[0], w[1], w[2]), g < 0) << "kind " << int(p.kind) << " taper " << p.taper << " taperZ " << p.taperZ
-                                                   << " mesh " << p.mesh
+        ASSERT_EQ(inside(w[0], w[1], w[2]), g < 0) << "kind " << int(p.kind) << " taper " << test::taperOf(p) << " taperZ " << test::taperZOf(p)
+                                                   << " mesh " << test::meshIndexOf(p)
                                                    << " g " << double(g) << " at local " << double(ul[0]) << " "
                                                    << double(ul[1]) << " " << double(ul[2]);
     }
@@ -132,7 +132,7 @@ TEST(PrimitiveShapes, MeshRayTestAgreesWithTheOctahedronAndLPrismFormulasAwayFro
     long checked = 0, in = 0, out = 0;
     for (int n = 0; n < 1000; ++n) {
         const Primitive p = test::randomPrimitive(PrimitiveKind::Mesh, grid, rng, 2);
-        if (!mesh.place(p, meshes[p.mesh])) continue;
+        if (!mesh.place(p, meshes[test::meshIndexOf(p)])) continue;
         checkAgainstTextbook(p, [&](double x, double y, double z) { return mesh.contains(x, y, z); }, rng, checked, in, out);
         if (testing::Test::HasFatalFailure()) return;
     }
@@ -151,7 +151,7 @@ TEST(PrimitiveShapes, ClosedMeshesCrossEveryRowAnEvenNumberOfTimesEvenThroughVer
     for (int n = 0; n < 2000; ++n) {
         // grid-aligned placements put vertices and edges exactly on the rows
         const Primitive p = test::randomPrimitive(PrimitiveKind::Mesh, grid, rng, 2, n % 2 == 0);
-        if (!mesh.place(p, meshes[p.mesh])) continue;
+        if (!mesh.place(p, meshes[test::meshIndexOf(p)])) continue;
         crossings.clear();
         const long y0 = -grid.ny, y1 = 2 * grid.ny - 1, z0 = -grid.nz, z1 = 2 * grid.nz - 1;
         mesh.collectCrossings(grid, y0, y1, z0, z1, crossings);
@@ -208,9 +208,7 @@ TEST(PrimitiveShapes, VoxelCountsOfRotatedPrimitivesApproachTheAnalyticVolumes) 
     for (const Case& c : cases) {
         Primitive p;
         p.kind = c.kind;
-        p.taper = c.taper;
-        p.taperZ = c.taperZ;
-        p.mesh = c.mesh;
+        test::setKindParams(p, c.taper, c.taperZ, c.mesh);
         p.axes = test::randomRotation(rng);
         p.axes[1] *= -1.0f;  // mirrored
         p.centre = {0.013f, -0.021f, 0.007f};

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include "base/input_error.hpp"
+#include "shape/kinds/mesh.hpp"
 #include "shape/primitive.hpp"
 #include "image/png_writer.hpp"
 #include "mesh/mesh_shape.hpp"
@@ -34,7 +35,7 @@ std::vector<std::uint8_t> meshSilhouette(const Mesh& mesh, const Camera& camera)
             shape.triangles.push_back(t);
     Primitive p;
     p.kind = PrimitiveKind::Mesh;
-    p.mesh = 0;
+    setParams<MeshKind>(p, {0});
     p.centre = mid;
     p.axes = glm::mat3(1.0f);
     for (int j = 0; j < 3; ++j) p.half[j] = half[j] > 0.0f ? half[j] : 1.0f;  // a flat axis: u = 0 anyway

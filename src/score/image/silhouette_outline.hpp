@@ -34,7 +34,8 @@
 //  - Paraboloid: one piece, the kParaboloidRings * kRoundSides + 1 vertices of its inscribed
 //    polyhedron (rings at u.y = -1, -1/8, 1/2, 7/8 and the apex: shape/kinds/paraboloid.hpp),
 //    always all of them and at full detail.
-//  - Mesh: one piece per triangle of Geometry::meshes[p.mesh] (all triangles, front or back).
+//  - Mesh: one piece per triangle of its mesh (Geometry::meshes, the index in MeshKind::Params; all
+//    triangles, front or back).
 // Each kind's part (which pieces, which fast path) is its K::outline in shape/kinds/<kind>.hpp.
 // Cut by the near plane (the ground for shadows): a convex piece becomes the part in front,
 // whose vertices are its vertices in front plus the points where its edges cross the plane.

@@ -61,6 +61,12 @@ inline Chord nappeChord(double k, double b, double c, double rho, double sigma) 
     return q & positive;
 }
 
+/// The cone's own parameters (ConeKind::Params, kept in Primitive::params): the top radius / the
+/// bottom radius, in [0, 1] when derived.
+struct ConeParams {
+    float taper = 1.0f;
+};
+
 struct ConeSolid {
     RoundFrame f;
     double radialSlope[2];  ///< du_x / dx and du_z / dx along every row
@@ -71,7 +77,8 @@ struct ConeSolid {
 
     static ConeSolid from(const Primitive& p) {
         ConeSolid s{RoundFrame::from(p), {}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        const double taper = p.taper >= 0.0f ? std::min(double(p.taper), 1.0) : 0.0;  // NaN -> 0, as derive
+        const float t = p.params.as<ConeParams>().taper;
+        const double taper = t >= 0.0f ? std::min(double(t), 1.0) : 0.0;  // NaN -> 0, as derive
         s.r0 = (1.0 + taper) * 0.5;
         s.r1 = (taper - 1.0) * 0.5;
         s.radialSlope[0] = s.f.slope(0);
@@ -107,6 +114,7 @@ struct ConeSolid {
 struct ConeKind {
     static constexpr PrimitiveKind kind = PrimitiveKind::Cone;
     static constexpr std::string_view keyword = "cone";
+    using Params = ConeParams;
     /// Grammar: optional `top EXPR`, the top radius ratio (expression 0; a constant 0 without it).
     template <class Args>
     static void parseArguments(Args& a) {
@@ -115,7 +123,7 @@ struct ConeKind {
     template <class Args>
     static void emit(Primitive& p, const Args& a) {
         const float top = a.expression(0);
-        p.taper = top >= 0.0f ? std::min(top, 1.0f) : 0.0f;  // NaN -> 0 as well
+        setParams<ConeKind>(p, {top >= 0.0f ? std::min(top, 1.0f) : 0.0f});  // NaN -> 0 as well
     }
     template <class Rows, class Counts>
     static void voxelize(const Primitive& p, const std::vector<MeshShape>*, Rows& rows, Counts& counts) {
@@ -125,8 +133,9 @@ struct ConeKind {
     /// not > 0) or the prism with its top ring scaled, as one convex piece.
     template <class Builder>
     static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive& p, Outline& out) {
-        if (b.addRingsFast(map, nullptr, std::clamp(double(p.taper), 0.0, 1.0), out)) return;  // (NaN: 0)
-        if (!(p.taper > 0.0f)) {
+        const float taper = paramsOf<ConeKind>(p).taper;
+        if (b.addRingsFast(map, nullptr, std::clamp(double(taper), 0.0, 1.0), out)) return;  // (NaN: 0)
+        if (!(taper > 0.0f)) {
             b.addConvex(map, b.pyramidShape(), out);
         } else {
             const auto& prism = b.prismShape();
@@ -134,13 +143,17 @@ struct ConeKind {
             const std::size_t n = prism.ringSize;
             for (std::size_t k = 0; k < n; ++k) {
                 const glm::dvec3& v = prism.vertices[n + k];
-                const double t = std::min(double(p.taper), 1.0);
+                const double t = std::min(double(taper), 1.0);
                 cone.vertices[n + k] = {v.x * t, v.y, v.z * t};
             }
             b.addConvex(map, cone, out);
         }
     }
-    static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>*) { frustumSurface(s, p.taper); }
+    static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>*) {
+        frustumSurface(s, paramsOf<ConeKind>(p).taper);
+    }
+    /// Textures: its sides are mapped cylindrically at this mean radius (geometry/texture_uv.hpp).
+    static float textureRadius(const Primitive& p) { return meanCrossRadius(p) * 0.5f * (1.0f + paramsOf<ConeKind>(p).taper); }
 };
 
 }  // namespace shapevo

@@ -57,6 +57,8 @@ struct CylinderKind {
         if (!b.addRingsFast(map, nullptr, 1.0, out)) b.addConvex(map, b.prismShape(), out);
     }
     static void surface(SurfaceBuilder& s, const Primitive&, const std::vector<MeshShape>*) { frustumSurface(s, 1.0f); }
+    /// Textures: its sides are mapped cylindrically at this mean radius (geometry/texture_uv.hpp).
+    static float textureRadius(const Primitive& p) { return meanCrossRadius(p); }
 };
 
 }  // namespace shapevo

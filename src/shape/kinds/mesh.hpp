@@ -205,6 +205,10 @@ template <class Run>
 struct MeshKind {
     static constexpr PrimitiveKind kind = PrimitiveKind::Mesh;
     static constexpr std::string_view keyword = "mesh";
+    /// Its own parameters (Primitive::params): the index of its mesh in Geometry::meshes.
+    struct Params {
+        std::uint16_t mesh = 0;
+    };
     /// Grammar: a file name in quotes; the statement's slot is its index in Grammar::meshes.
     template <class Args>
     static void parseArguments(Args& a) {
@@ -212,11 +216,12 @@ struct MeshKind {
     }
     template <class Args>
     static void emit(Primitive& p, const Args& a) {
-        p.mesh = a.slot();
+        setParams<MeshKind>(p, {a.slot()});
     }
     /// The primitive's mesh, or null if `meshes` does not hold it.
     static const MeshShape* shapeOf(const Primitive& p, const std::vector<MeshShape>* meshes) {
-        return meshes && p.mesh < meshes->size() ? &(*meshes)[p.mesh] : nullptr;
+        const std::uint16_t mesh = paramsOf<MeshKind>(p).mesh;
+        return meshes && mesh < meshes->size() ? &(*meshes)[mesh] : nullptr;
     }
 
     /// The voxelizer's reusable work space for meshes (no allocation once warm).
@@ -310,10 +315,11 @@ struct MeshKind {
 
     /// @throw std::out_of_range if `meshes` does not hold the primitive's mesh.
     static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>* meshes) {
-        if (!meshes || p.mesh >= meshes->size())
-            throw std::out_of_range("mesh primitive refers to mesh " + std::to_string(p.mesh) + " but the model has " +
+        const std::uint16_t mesh = paramsOf<MeshKind>(p).mesh;
+        if (!meshes || mesh >= meshes->size())
+            throw std::out_of_range("mesh primitive refers to mesh " + std::to_string(mesh) + " but the model has " +
                                     std::to_string(meshes ? meshes->size() : 0));
-        const MeshShape& m = (*meshes)[p.mesh];
+        const MeshShape& m = (*meshes)[mesh];
         for (const glm::vec3& v : m.vertices) s.vertex(v);
         for (const auto& t : m.triangles) s.triangle(t[0], t[1], t[2]);
     }

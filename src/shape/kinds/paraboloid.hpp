@@ -110,6 +110,9 @@ struct ParaboloidKind {
     static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive&, Outline& out) {
         b.addConvex(map, b.paraboloidShape(), out);
     }
+    /// Textures: its sides are mapped cylindrically at this mean radius, its radius averaged over
+    /// its height (geometry/texture_uv.hpp).
+    static float textureRadius(const Primitive& p) { return meanCrossRadius(p) * (2.0f / 3.0f); }
     /// Surface: ring i's vertices at i * kRoundSides + k, the apex last; the bottom cap a fan in
     /// ring order, the bands quads (ring i k, ring i+1 k, ring i+1 k+1, ring i k+1), the top a fan
     /// of triangles to the apex: kParaboloidRings * kRoundSides + 1 vertices and

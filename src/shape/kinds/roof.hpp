@@ -39,6 +39,13 @@ inline Chord halfLineChord(double a, double b) {
     return a == 0.0 && b >= 0.0 ? Chord::all() : Chord::none();
 }
 
+/// The roof's own parameters (RoofKind::Params, kept in Primitive::params): the top face / the
+/// bottom face along x (taper) and along z (taperZ), in [0, 1] when derived.
+struct RoofParams {
+    float taper = 1.0f;
+    float taperZ = 1.0f;
+};
+
 struct RoofSolid {
     RoundFrame f;
     double slope[3];     ///< du_k / dx along every row
@@ -47,7 +54,8 @@ struct RoofSolid {
     static RoofSolid from(const Primitive& p) {
         RoofSolid s{RoundFrame::from(p), {}, {}, {}};
         for (int k = 0; k < 3; ++k) s.slope[k] = s.f.slope(k);
-        const double t[2] = {roofFraction(p.taper), roofFraction(p.taperZ)};
+        const auto params = p.params.as<RoofParams>();
+        const double t[2] = {roofFraction(params.taper), roofFraction(params.taperZ)};
         for (int i = 0; i < 2; ++i) {
             s.r0[i] = (1.0 + t[i]) * 0.5;
             s.r1[i] = (t[i] - 1.0) * 0.5;
@@ -82,6 +90,7 @@ struct RoofKind {
     static constexpr std::string_view keyword = "roof";
     /// The grammar form, kept in the statement's slot.
     enum Form : std::uint16_t { Gable = 0, Hip = 1, Pyramid = 2, Top = 3 };
+    using Params = RoofParams;
 
     /// Grammar: `top (EX, EZ)` (expressions 0 and 1), `gable`, `hip`, `pyramid` or nothing (gable).
     /// A word that is neither a form nor the start of the next statement is a located error.
@@ -126,8 +135,7 @@ struct RoofKind {
             break;
         default: break;  // Pyramid
         }
-        p.taper = roofFraction(x);
-        p.taperZ = roofFraction(z);
+        setParams<RoofKind>(p, {roofFraction(x), roofFraction(z)});
     }
     template <class Rows, class Counts>
     static void voxelize(const Primitive& p, const std::vector<MeshShape>*, Rows& rows, Counts& counts) {
@@ -138,7 +146,8 @@ struct RoofKind {
     /// (or when cut) the 8 corners, top ring scaled, as one convex piece.
     template <class Builder>
     static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive& p, Outline& out) {
-        const double tx = roofFraction(p.taper), tz = roofFraction(p.taperZ);
+        const auto params = paramsOf<RoofKind>(p);
+        const double tx = roofFraction(params.taper), tz = roofFraction(params.taperZ);
         if (tx == tz && b.addRingsFast(map, &b.squareRing(), tx, out)) return;
         const auto& box = b.boxShape();
         auto& roof = b.roofScratch();
@@ -155,7 +164,8 @@ struct RoofKind {
     /// triangle when t_k = t_k+1; the top cap only when it has 4 corners.
     static void surface(SurfaceBuilder& s, const Primitive& p, const std::vector<MeshShape>*) {
         constexpr float kRing[4][2] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
-        const float tx = roofFraction(p.taper), tz = roofFraction(p.taperZ);
+        const auto params = paramsOf<RoofKind>(p);
+        const float tx = roofFraction(params.taper), tz = roofFraction(params.taperZ);
         for (const auto& c : kRing) s.vertex({c[0], -1.0f, c[1]});  // bottom: 0 .. 3
         std::uint32_t top[4];
         glm::vec3 at[4];
