@@ -63,9 +63,9 @@ struct DocsLink {
 
 /// The relative targets of the links and pictures of one markdown text.
 std::vector<DocsLink> docsRelativeLinks(const std::string& markdown) {
-    static const std::regex inlineLink(R"(\]\(\s*<?([^)\s>]+)>?(\s+"[^"]*")?\s*\))");
-    static const std::regex htmlImage(R"(<img[^>]*\ssrc\s*=\s*"([^"]+)")", std::regex::icase);
-    static const std::regex scheme(R"(^[A-Za-z][A-Za-z0-9+.-]*:)");
+    static const std::regex inlineLink(R"re(\]\(\s*<?([^)\s>]+)>?(\s+"[^"]*")?\s*\))re");
+    static const std::regex htmlImage(R"re(<img[^>]*\ssrc\s*=\s*"([^"]+)")re", std::regex::icase);
+    static const std::regex scheme(R"re(^[A-Za-z][A-Za-z0-9+.-]*:)re");
     std::vector<DocsLink> links;
     int lineNumber = 0;
     for (const std::string& line : test::splitLines(docsWithoutCode(markdown))) {
