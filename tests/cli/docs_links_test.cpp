@@ -121,7 +121,7 @@ TEST(DocsLinks, ABrokenLinkOrPictureIsFoundAndCodeIsNot) {
     { std::FILE* f = std::fopen(dir.file("docs/page.md").c_str(), "w"); std::fputs(page.c_str(), f); std::fclose(f); }
     const std::vector<std::string> broken = docsBrokenLinks(dir.path() / "docs/page.md", dir.path());
     EXPECT_EQ(broken, (std::vector<std::string>{"docs/page.md:3: nowhere.md", "docs/page.md:3: figures/gone.png",
-                                                "docs/page.md:7: gone-too.png"}));
+                                                "docs/page.md:8: gone-too.png"}));
 }
 
 }  // namespace
