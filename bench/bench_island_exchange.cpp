@@ -1,4 +1,4 @@
-// bench_island_exchange: what the islands' exchanges cost on this machine, for README "Scaling"
+// bench_island_exchange: what the islands' exchanges cost on this machine, for docs/performance.md, "Islands" (the log: docs/history/2026-12-performance-log.md, "Islands: scaling")
 // and its model of 1,024 ranks. Run under mpirun (every rank runs every benchmark the same fixed
 // number of times, so the collectives pair up; only rank 0 reports):
 //

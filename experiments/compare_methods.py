@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The default search (hybrid) vs the paper's GA, SMC, SOSMC and RJMCMC at equal wall time, and 2 GA
 islands vs one population of twice the size at equal evaluations (issues 5 and 17; results and
-discussion: README.md, section "Search methods compared", and docs/method-comparison-results.md).
+discussion: docs/results.md, section "Search methods compared", and docs/method-comparison-results.md).
 
 The bar for the default (issue 17): from 1 s on, its mean best is >= every baseline's mean at every
 sampled time, and its worst seed at the end is within one standard deviation of the best
@@ -391,9 +391,9 @@ def main():
                     help="a subset to run (the default, hybrid, always runs; smc and sosmc bring their -fill variants)")
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "shapevo"))
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "compare-methods"), help="runs, CSVs, results.md")
-    ap.add_argument("--docs", default=os.path.join(ROOT, "docs"), help="where the PNG plots go")
+    ap.add_argument("--docs", default=os.path.join(ROOT, "docs", "figures"), help="where the PNG plots go")
     ap.add_argument("--readme", help="also write the tables and verdicts into this file, between the lines "
-                    "'<!-- compare_methods: begin -->' and '<!-- compare_methods: end -->' (README.md)")
+                    "'<!-- compare_methods: begin -->' and '<!-- compare_methods: end -->' (docs/results.md)")
     args = ap.parse_args()
     args.methods = set(args.methods.split(",")) | {DEFAULT}
     try:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Damage a mesh the way real files are damaged, for the README's "Your own target mesh" example:
+"""Damage a mesh the way real files are damaged, for docs/own-mesh.md's example:
 read an OBJ (v and f lines only), give every face its own copies of its corners (a seam along
 every edge, as a triangle soup from a scanner or an exporter has), drop every K-th face (holes)
 and write the result as an OFF file, a format shapevo reads through Assimp.

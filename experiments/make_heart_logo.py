@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the README's example logo: a white heart on a transparent background, 284 x 303 pixels
+"""Write docs/own-logo.md's example logo: a white heart on a transparent background, 284 x 303 pixels
 (an odd size and aspect on purpose), as an RGBA PNG. Plain Python (zlib only).
 
     experiments/make_heart_logo.py heart.png

@@ -19,7 +19,7 @@ Terms, per generation of an island whose generations take t seconds of computing
               then rank 0 reads every island file to hash it for the MANIFEST: P * S / B seconds.
 
 usage: experiments/scaling_model.py [--t 0.001] [--w2 0.04] ...  (defaults: measured here, see
-README "Scaling")
+docs/history/2026-12-performance-log.md, "Islands: scaling")
 """
 import argparse
 import math

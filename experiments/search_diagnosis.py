@@ -12,7 +12,7 @@ of each operator's children that were better / equal / worse than their parent.
 
 usage: experiments/search_diagnosis.py [--bin build/shapevo] [--seconds 40] [--seeds 5]
            [--scenes tree-sketch spaceship-paper] [--out experiments/results/search-diagnosis]
-           [--docs docs]     (plots docs/search-diagnosis-<scene>.png; needs matplotlib)
+           [--docs docs/figures]     (plots docs/figures/search-diagnosis-<scene>.png; needs matplotlib)
            [--summarise-only] (read the CSVs already in --out)
 """
 import argparse

@@ -18,7 +18,7 @@ using test::writeFile;
 
 namespace fs = std::filesystem;
 
-const char* kAB = "start S\nrule S { box child A prob 0.05 child B prob 0.95 }\nrule A { box }\nrule B { box }\n";
+const char* kSampleCountAB = "start S\nrule S { box child A prob 0.05 child B prob 0.95 }\nrule A { box }\nrule B { box }\n";
 
 std::size_t countOf(const std::string& text, const std::string& what) {
     std::size_t n = 0;
@@ -28,7 +28,7 @@ std::size_t countOf(const std::string& text, const std::string& what) {
 
 TEST(SampleCount, WritesNumberedFilesWithSeedsFollowingTheSeed) {
     TempDir dir;
-    writeFile(dir.file("ab.grammar"), kAB);
+    writeFile(dir.file("ab.grammar"), kSampleCountAB);
     const auto r = runShapevo("sample " + dir.file("ab.grammar") + " --seed 5 --count 3 -o " + dir.file("m.obj") +
                               " --genome " + dir.file("g.genome"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -55,7 +55,7 @@ TEST(SampleCount, WritesNumberedFilesWithSeedsFollowingTheSeed) {
 
 TEST(SampleCount, FollowsTheSlotProbabilities) {
     TempDir dir;
-    writeFile(dir.file("ab.grammar"), kAB);
+    writeFile(dir.file("ab.grammar"), kSampleCountAB);
     const auto r = runShapevo("sample " + dir.file("ab.grammar") + " --count 40 -o " + dir.file("m.ply"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(countOf(r.output, "sampled "), 40u) << r.output;
@@ -67,7 +67,7 @@ TEST(SampleCount, FollowsTheSlotProbabilities) {
 
 TEST(SampleCount, AnyExistingOutputIsRefusedBeforeAnythingIsWritten) {
     TempDir dir;
-    writeFile(dir.file("ab.grammar"), kAB);
+    writeFile(dir.file("ab.grammar"), kSampleCountAB);
     writeFile(dir.file("m-003.obj"), "keep");
     const auto r = runShapevo("sample " + dir.file("ab.grammar") + " --count 3 -o " + dir.file("m.obj"));
     EXPECT_EQ(r.exitCode, 2) << r.output;
@@ -86,7 +86,7 @@ TEST(SampleCount, AnyExistingOutputIsRefusedBeforeAnythingIsWritten) {
 
 TEST(SampleCount, BadCountsAreExitTwo) {
     TempDir dir;
-    writeFile(dir.file("ab.grammar"), kAB);
+    writeFile(dir.file("ab.grammar"), kSampleCountAB);
     for (const std::string count : {"0", "-1", "abc", "", "1000001", "99999999999"}) {
         const auto r = runShapevo("sample " + dir.file("ab.grammar") + " --count '" + count + "' -o " + dir.file("m.obj"));
         EXPECT_EQ(r.exitCode, 2) << count << ": " << r.output;

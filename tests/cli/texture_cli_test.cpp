@@ -94,7 +94,7 @@ TEST(TextureCli, ARunWritesTheTexturedBestModelAndResumes) {
     ASSERT_EQ(again.exitCode, 0) << again.output;
     EXPECT_FALSE(fs::exists(dir.file("r/bricks_2.png"))) << "the same image again: no second copy";
     // a changed texture is a changed input, as a changed mesh is
-    writeFile(dir.file("bricks.png"), readFile(sourcePath("docs/grammar-pictures/roofs.png")));
+    writeFile(dir.file("bricks.png"), readFile(sourcePath("docs/figures/grammar/roofs.png")));
     const auto changed = runShapevo("resume " + dir.file("r") + " --generations 4 -q");
     EXPECT_EQ(changed.exitCode, 2) << changed.output;
     std::string why = "texture ";  // built step by step: GCC 12 warns (-Wrestrict) on literal + string

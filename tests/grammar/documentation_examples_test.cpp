@@ -1,4 +1,4 @@
-// The grammars the documentation shows (docs/grammar-examples/, pictured in docs/grammar-pictures/
+// The grammars the documentation shows (docs/grammar-examples/, pictured in docs/figures/grammar/
 // and quoted in grammars/README.md) parse and derive: a change to the language that breaks an
 // example fails here, not in a reader's hands.
 #include <gtest/gtest.h>
