@@ -1,5 +1,5 @@
 // Island files (island-RRRR.h5): one island's state in HDF5. The names below are a stable public
-// format (README, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
+// format (docs/run-folder.md, `h5ls -r`, `h5dump -H`); change them only with a new schema_version.
 //
 //   /                         root group, attributes:
 //       schema_version        u32   format version of this layout (4; 3 lacks /migrants)

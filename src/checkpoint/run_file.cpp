@@ -1,5 +1,5 @@
 // Run metadata file (run.h5): what a checkpoint needs besides the islands, written by rank 0.
-// The names below are a stable public format (README, `h5ls -r`, `h5dump -H`).
+// The names below are a stable public format (docs/run-folder.md, `h5ls -r`, `h5dump -H`).
 //
 //   /                     root group, attributes:
 //       schema_version    u32     format version of the checkpoint layout (3)

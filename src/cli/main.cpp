@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     keepFreedMemory();
     MpiSession mpi(argc, argv);
     CLI::App app{"shapevo: evolve procedural models (grammars) until they match a target: a volume to fill or a picture to cover.\n"
-                 "Docs: README.md; grammar language: grammars/README.md"};
+                 "Guide: docs/README.md; grammar language: grammars/README.md; every option: shapevo COMMAND --help"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "shapevo 0.1.0");
     std::vector<CLI::App*> subcommands;  // one per entry of commands()

@@ -19,7 +19,8 @@ public:
         /// cacheBytes > 0: keep the primitives' voxel rows (incremental scoring, Scorer::setIncremental).
         explicit Workspace(const GridSpec& grid, std::size_t cacheBytes = 0) : voxelizer(grid) {
             // No subtree memo here: a voxel grid's scoring dwarfs derivation, and the memo's
-            // first memory cost a spaceship more than it saved (README "Incremental evaluation").
+            // first memory cost a spaceship more than it saved (docs/history/2026-12-performance-log.md,
+            // "Incremental evaluation").
             if (cacheBytes > 0) cache.emplace(cacheBytes);
         }
         Voxelizer voxelizer;
