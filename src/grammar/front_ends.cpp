@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/input_error.hpp"
+#include "base/word_list.hpp"
 #include "grammar/crl/crl_translator.hpp"
 #include "grammar/parser.hpp"
 
@@ -61,30 +62,16 @@ const GrammarFrontEnd& grammarFrontEndFor(const std::string& path) {
 }
 
 std::string grammarExtensions() {
-    std::string out;
-    for (std::size_t i = 0; i < kFrontEnds.size(); ++i) {
-        if (i) out += i + 1 == kFrontEnds.size() ? " or " : ", ";
-        out += '"';
-        out += kFrontEnds[i].extension;
-        out += '"';
-    }
-    return out;
+    return wordList(kFrontEnds.size(), [](std::size_t i) { return "\"" + std::string(kFrontEnds[i].extension) + "\""; });
 }
 
 std::string translatingFrontEnds() {
     std::vector<const GrammarFrontEnd*> those;
     for (const GrammarFrontEnd& e : kFrontEnds)
         if (e.translate) those.push_back(&e);
-    std::string out;
-    for (std::size_t i = 0; i < those.size(); ++i) {
-        if (i) out += i + 1 == those.size() ? " or " : ", ";
-        out += "a ";
-        out += those[i]->name;
-        out += " (";
-        out += those[i]->extension;
-        out += ')';
-    }
-    return out;
+    return wordList(those.size(), [&](std::size_t i) {
+        return "a " + std::string(those[i]->name) + " (" + std::string(those[i]->extension) + ")";
+    });
 }
 
 Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides) {

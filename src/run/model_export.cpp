@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "base/input_error.hpp"
+#include "base/word_list.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
@@ -33,23 +34,13 @@ std::vector<std::string_view> exportFormats() {
 }
 
 std::string formatList(std::span<const std::string_view> formats) {
-    std::string list;
-    for (std::size_t i = 0; i < formats.size(); ++i) {
-        if (i) list += i + 1 == formats.size() ? " or " : ", ";
-        list += formats[i];
-    }
-    return list;
+    return wordList(formats.size(), [&](std::size_t i) { return formats[i]; });
 }
 
 std::string requireOutputFormat(const std::string& path, std::span<const std::string_view> accepted,
                                 const std::string& option, const std::string& requested) {
-    std::string list;
-    for (std::size_t i = 0; i < accepted.size(); ++i) {
-        if (i) list += i + 1 == accepted.size() ? " or " : ", ";
-        list += '.';
-        list += accepted[i];
-    }
-    const std::string takes = option + " takes a " + list + " file";
+    const std::string takes =
+        option + " takes a " + wordList(accepted.size(), [&](std::size_t i) { return "." + std::string(accepted[i]); }) + " file";
     const std::string format = formatOfPath(path);
     if (format.empty()) throw InputError(path, "", "has no file extension; " + takes);
     if (std::find(accepted.begin(), accepted.end(), format) == accepted.end())

@@ -10,6 +10,7 @@
 // run/, report/ and cli/ ask the table and these interfaces and never branch on a kind.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <span>
 #include <string>
@@ -38,6 +39,13 @@ struct Evaluation {
     /// numbers as summary.json writes them.
     std::string text;
 };
+
+/// A kind's counts for Evaluation::text, each as "  name value": "  inside 12  occupied 30 ...".
+struct NamedCount {
+    const char* name;
+    std::uint64_t value;
+};
+std::string countsText(std::initializer_list<NamedCount> counts);
 
 /// Evaluation::text from its parts; `counts` is the kind's tail ("  inside 12  occupied 30 ...").
 std::string evaluationText(const TargetKind& kind, double fitness, double iou, std::uint32_t genes,

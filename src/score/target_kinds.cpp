@@ -4,6 +4,7 @@
 #include <array>
 
 #include "base/format_double.hpp"
+#include "base/word_list.hpp"
 
 #include "score/image/image_kind.hpp"
 #include "score/volume/volume_kind.hpp"
@@ -33,6 +34,12 @@ const TargetKind* findTargetKind(std::string_view name) {
 std::vector<std::string_view> targetExportFormats() {
     std::vector<std::string_view> out;
     for (const TargetKind* k : kTargetKinds) out.insert(out.end(), k->exportFormats.begin(), k->exportFormats.end());
+    return out;
+}
+
+std::string countsText(std::initializer_list<NamedCount> counts) {
+    std::string out;
+    for (const NamedCount& c : counts) out += std::string("  ") + c.name + " " + std::to_string(c.value);
     return out;
 }
 
@@ -68,9 +75,8 @@ std::shared_ptr<const TargetSettings> readTargetSettings(ConfigReader& config) {
             if (!uses(kind, section) && config.section(section).present())
                 config.section(section).failSection("a " + std::string(section) + " is only used with " +
                                                     std::string(other->noun) + " ([target] " + std::string(other->namedBy) + ")");
-    std::string missing = "missing [target] ";
-    for (std::size_t i = 0; i < kTargetKinds.size(); ++i)
-        missing += (i ? " or " : "") + std::string(kTargetKinds[i]->namedBy);
+    const std::string missing =
+        "missing [target] " + wordList(kTargetKinds.size(), [](std::size_t i) { return kTargetKinds[i]->namedBy; });
     read[chosen]->finish(config, missing);
     return std::shared_ptr<const TargetSettings>(std::move(read[chosen]));
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <stdexcept>
 
+#include "base/word_list.hpp"
 #include "search/genetic_algorithm.hpp"
 #include "search/hybrid_search.hpp"
 #include "search/rjmcmc.hpp"
@@ -87,14 +88,7 @@ const SearchMethodEntry* findSearchMethod(std::string_view name) {
 }
 
 std::string searchMethodNames() {
-    std::string out;
-    for (std::size_t i = 0; i < kMethods.size(); ++i) {
-        if (i) out += i + 1 == kMethods.size() ? " or " : ", ";
-        out += '"';
-        out += kMethods[i].name;
-        out += '"';
-    }
-    return out;
+    return wordList(kMethods.size(), [](std::size_t i) { return "\"" + std::string(kMethods[i].name) + "\""; });
 }
 
 std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,

@@ -109,10 +109,8 @@ public:
         SilhouetteCounts n;
         scorer_.fitness(c, ws, &n);
         e.iou = silhouetteIoU(n, target_.hitCount);
-        const auto count = [](const char* name, std::uint64_t v) { return std::string("  ") + name + " " + std::to_string(v); };
         e.text = evaluationText(imageTargetKind, e.fitness, e.iou, c.genes, ws.geometry.primitives.size(),
-                                count("covered", n.covered) + count("hit", n.hit) + count("avoided", n.avoided) +
-                                    count("target", target_.hitCount));
+                                countsText({{"covered", n.covered}, {"hit", n.hit}, {"avoided", n.avoided}, {"target", target_.hitCount}}));
         return e;
     }
     double iou(const Chromosome& c, ScoreWorkspace& workspace) const override {

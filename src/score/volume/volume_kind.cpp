@@ -33,11 +33,9 @@ public:
         VoxelCounts n;
         scorer_.fitness(c, ws, &n);
         e.iou = voxelIoU(n, target_.fillCount);
-        const auto count = [](const char* name, std::uint64_t v) { return std::string("  ") + name + " " + std::to_string(v); };
         e.text = evaluationText(volumeTargetKind, e.fitness, e.iou, c.genes, ws.geometry.primitives.size(),
-                                count("inside", n.inside) + count("occupied", n.occupied) + count("avoided", n.avoided) +
-                                    count("overlap", n.overlap) + count("outside", n.outside) +
-                                    count("target", target_.fillCount));
+                                countsText({{"inside", n.inside}, {"occupied", n.occupied}, {"avoided", n.avoided},
+                                            {"overlap", n.overlap}, {"outside", n.outside}, {"target", target_.fillCount}}));
         return e;
     }
     double iou(const Chromosome& c, ScoreWorkspace& workspace) const override {
