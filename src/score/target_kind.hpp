@@ -68,11 +68,11 @@ public:
     virtual ~LoadedTarget() = default;
     virtual const Scorer& scorer() const = 0;
     /// Hash of the target data: a run resumes only against the same target.
-    virtual std::uint64_t hash() const = 0;
+    std::uint64_t hash() const { return hash_; }
     /// One phrase for the start-up line, e.g. "targets/x.vdb (80x80x80 voxels, 1234 to fill)".
-    virtual const std::string& description() const = 0;
+    const std::string& description() const { return description_; }
     /// The file a changed-target error names.
-    virtual const std::string& primaryFile() const = 0;
+    const std::string& primaryFile() const { return primaryFile_; }
     /// Score `c` (valid for the run's grammar) with the run's scorer, and count what it covers.
     virtual Evaluation evaluate(const Chromosome& c) const = 0;
     /// The IoU of `c` (Evaluation::iou) from one scoring pass: the progress line and the curve's
@@ -84,6 +84,11 @@ public:
     virtual double writeBest(const Chromosome& best, const std::string& folder) const = 0;
     /// `shapevo export --format F`, F one of TargetKind::exportFormats (the caller checks).
     virtual void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const = 0;
+
+protected:
+    /// Set by the kind's constructor: hash(), description(), primaryFile().
+    std::uint64_t hash_ = 0;
+    std::string description_, primaryFile_;
 };
 
 /// A kind's settings, made by its reader (TargetKind::readTarget) and finished by the table

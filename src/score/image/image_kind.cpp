@@ -89,6 +89,7 @@ public:
           scorer_(c.grammar, camera_, target_, c.fitness) {
         scorer_.setMaxPrimitives(c.maxPrimitives);
         scorer_.setIncremental(c.incremental.cacheBytes(), c.incremental.check);
+        hash_ = target_.hash;
         primaryFile_ = s.png;
         const char* kind = s.camera.projection == Projection::Shadow         ? "shadow"
                            : s.camera.projection == Projection::Orthographic ? "orthographic silhouette"
@@ -98,9 +99,6 @@ public:
                        kind + groundNote(camera_) + ")";
     }
     const Scorer& scorer() const override { return scorer_; }
-    std::uint64_t hash() const override { return target_.hash; }
-    const std::string& description() const override { return description_; }
-    const std::string& primaryFile() const override { return primaryFile_; }
 
     Evaluation evaluate(const Chromosome& c) const override {
         Evaluation e;
@@ -145,7 +143,6 @@ private:
     Camera camera_;
     ImageTarget target_;
     ImageScorer scorer_;
-    std::string description_, primaryFile_;
 };
 
 std::string drawMesh(const TargetSettings& settings, const Mesh& mesh, const std::string& meshPath,

@@ -17,14 +17,12 @@ public:
         : target_(loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr)), scorer_(c.grammar, target_, c.fitness) {
         scorer_.setMaxPrimitives(c.maxPrimitives);
         scorer_.setIncremental(c.incremental.cacheBytes(), c.incremental.check);
+        hash_ = target_.hash;
         primaryFile_ = s.targets.front().path;
         description_ = s.targets.front().path + " (" + std::to_string(target_.grid.nx) + "x" + std::to_string(target_.grid.ny) +
                        "x" + std::to_string(target_.grid.nz) + " voxels, " + std::to_string(target_.fillCount) + " to fill)";
     }
     const Scorer& scorer() const override { return scorer_; }
-    std::uint64_t hash() const override { return target_.hash; }
-    const std::string& description() const override { return description_; }
-    const std::string& primaryFile() const override { return primaryFile_; }
 
     Evaluation evaluate(const Chromosome& c) const override {
         Evaluation e;
@@ -60,7 +58,6 @@ public:
 private:
     VolumeTarget target_;
     VolumeScorer scorer_;
-    std::string description_, primaryFile_;
 };
 
 constexpr std::array<std::string_view, 1> kVolumeExportFormats{"vdb"};
