@@ -29,9 +29,9 @@ void BM_GaRun(benchmark::State& state) {
     std::uint64_t evaluations = 0;
     double best = 0;
     for (auto _ : state) {
-        GeneticAlgorithm ga(grammar, s.ga, s.limits, s.seed);
+        GeneticAlgorithm ga(grammar, s.population, s.ga, s.limits, s.seed);
         ga.initialize(evaluator);
-        while (ga.generation() < s.ga.generations) ga.step(evaluator);
+        while (ga.generation() < s.population.generations) ga.step(evaluator);
         evaluations += ga.evaluations();
         best = ga.population().fitness[ga.population().best()];
         benchmark::DoNotOptimize(best);

@@ -88,7 +88,7 @@ Recording& recording(int scene) {
     RunSettings on = r.settings;
     on.incremental.enabled = true;
     r.incremental = Scene::load(on, *r.grammar);
-    auto method = makeSearchMethod(r.settings.search, r.settings.ga, *r.grammar, r.settings.limits, r.settings.seed);
+    auto method = makeSearchMethod(r.settings.search, r.settings.population, r.settings.ga, *r.grammar, r.settings.limits, r.settings.seed);
     Evaluator evaluator(r.incremental->scorer(), 1);
     method->initialize(evaluator);
     const std::uint32_t from = fromGeneration();

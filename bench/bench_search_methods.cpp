@@ -35,9 +35,9 @@ void BM_SearchRun(benchmark::State& state) {
     std::uint64_t evaluations = 0;
     double best = 0;
     for (auto _ : state) {
-        auto method = makeSearchMethod(s.search, s.ga, grammar, s.limits, s.seed);
+        auto method = makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, s.seed);
         method->initialize(evaluator);
-        while (method->generation() < s.ga.generations) method->step(evaluator);
+        while (method->generation() < s.population.generations) method->step(evaluator);
         evaluations += method->evaluations();
         const GenerationStats stats = method->stats();
         benchmark::DoNotOptimize(&stats);

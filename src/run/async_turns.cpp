@@ -57,7 +57,7 @@ AsyncTurns::AsyncTurns(TurnContext context) : c_(context), control_(c_.mpi, 0.2)
 
 TurnDecision AsyncTurns::after(const IslandRow& row, std::uint32_t generation, std::uint64_t evaluations, bool idle) {
     const int signal = stopSignalReceived();
-    const bool finished = generation >= c_.s.ga.generations;
+    const bool finished = generation >= c_.s.population.generations;
     IslandStatus own;
     own.generation = generation;
     own.seconds = row.stats.seconds;

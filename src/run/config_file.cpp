@@ -351,7 +351,7 @@ void readGrammarSection(Reader& rd, RunSettings& r, const std::filesystem::path&
 /// limit and each other.
 void checkInitialGenes(const Reader& rd, const RunSettings& r) {
     const auto n = [](std::uint32_t v) { return std::to_string(v); };
-    const GaSettings& g = r.ga;
+    const PopulationSettings& g = r.population;
     if (g.initialGenesMin > r.limits.maxGenes)
         rd.failKeys({"ga.initial_genes_min", "genome.max_genes"}, "[ga]",
                     "ga.initial_genes_min = " + n(g.initialGenesMin) + " exceeds genome.max_genes = " + n(r.limits.maxGenes) +
@@ -371,10 +371,10 @@ void checkInitialGenes(const Reader& rd, const RunSettings& r) {
 /// Migration sends the best `count` to replace the receiver's worst, never its elites.
 void checkMigrationCount(const Reader& rd, const RunSettings& r) {
     const auto n = [](std::uint32_t v) { return std::to_string(v); };
-    if (r.migration.count > r.ga.population - r.ga.elitism && r.migration.interval > 0)
+    if (r.migration.count > r.population.population - r.ga.elitism && r.migration.interval > 0)
         rd.failKeys({"migration.count", "migration.interval", "ga.population", "ga.elitism"}, "[migration]",
                     "count must not exceed population - elitism (migration.count = " + n(r.migration.count) +
-                        ", ga.population - ga.elitism = " + n(r.ga.population - r.ga.elitism) + ")");
+                        ", ga.population - ga.elitism = " + n(r.population.population - r.ga.elitism) + ")");
 }
 
 /// A relative file path a target kind reads from [target] (target.image) given with --set was
@@ -420,7 +420,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     r.target = readTargetSettings(config);
     readScoreSection(config.section("score"), r.fitness, r.incremental);
     readGenomeSection(config.section("genome"), r.limits);
-    readGaSection(config.section("ga"), r.ga);
+    readGaSection(config.section("ga"), r.population, r.ga);
     checkInitialGenes(rd, r);
     readSearchSection(config.section("search"), r.search);
     readMigrationSection(config.section("migration"), r.migration);

@@ -97,10 +97,10 @@ IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Gramma
     : mpi_(mpi), s_(s), grammar_(grammar), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
       options_(options), log_(log), clock_(mpi, meta_.wallSeconds), root_(mpi.rank() == 0),
       evaluator_(scene.scorer(), s.threads), anomaliesBefore_(scene.scorer().anomalies()),
-      method_(makeSearchMethod(s.search, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()))), ga_(*method_),
+      method_(makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()))), ga_(*method_),
       migration_(mpi, s.migration, grammar, s.limits),
       localCurve_(restored ? restored->curve : std::vector<GenerationStats>{}),
-      checkpoints_(mpi, s.checkpoint, folder, log), progress_(log, s.ga.generations, s.wallTime),
+      checkpoints_(mpi, s.checkpoint, folder, log), progress_(log, s.population.generations, s.wallTime),
       islands_(mpi.active() ? mpi.size() : 1),
       syncTurns_(TurnContext{mpi, s, clock_, checkpoints_, root_ && !options.quiet ? &progress_ : nullptr, islands_, meta_, stop_}),
       asyncTurns_(TurnContext{mpi, s, clock_, checkpoints_, root_ && !options.quiet ? &progress_ : nullptr, islands_, meta_, stop_}),
@@ -177,7 +177,7 @@ JobResult IslandLoop::run() {
     if (restored_) {
         ga_.restore(restored_->population, restored_->rng, restored_->generation, restored_->evaluations);
         // in async mode the islands may stand at different generations: complete only when all are
-        if (mpi_.allTrue(ga_.generation() >= s_.ga.generations)) {
+        if (mpi_.allTrue(ga_.generation() >= s_.population.generations)) {
             if (root_) log_ << "shapevo: " << folder_ << " is complete at generation " << ga_.generation()
                             << "; pass --generations N to continue it\n";
             result.evaluations = ga_.evaluations();
@@ -190,7 +190,7 @@ JobResult IslandLoop::run() {
         stop = afterGeneration();
     }
     while (!stop) {
-        if (ga_.generation() < s_.ga.generations) {
+        if (ga_.generation() < s_.population.generations) {
             ga_.step(evaluator_);
             sayBoundsReached();
             stop = afterGeneration();

@@ -63,11 +63,11 @@ std::uint64_t usableMemoryBytes() {
 
 void requireMemoryFits(const RunSettings& s, const Grammar& g, int islands, std::uint64_t available) {
     if (available == 0) return;
-    const MemoryEstimate e = searchMemoryEstimate(g, s.search, s.ga, s.limits);
+    const MemoryEstimate e = searchMemoryEstimate(g, s.search, s.population, s.limits);
     const double need = e.bytes * double(std::max(islands, 1));
     if (need <= double(available)) return;
     throw InputError(s.configPath, "ga.population",
-                     "ga.population = " + std::to_string(s.ga.population) + " with genome.max_genes = " +
+                     "ga.population = " + std::to_string(s.population.population) + " with genome.max_genes = " +
                          std::to_string(s.limits.maxGenes) + " may need " + gib(need) + " (" + e.formula +
                          (islands > 1 ? ", x " + std::to_string(islands) + " islands on this machine" : "") + "), more than the " +
                          gib(double(available)) + " this process may use (physical memory, or a lower cgroup or ulimit limit); lower ga.population or genome.max_genes");

@@ -161,7 +161,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
                                                  "; resume with --allow-changed-inputs to continue with the files as they are now");
             s = parseConfig(meta.configText, meta.configPath);
             s.seed = meta.seed;
-            if (options.generations) s.ga.generations = *options.generations;
+            if (options.generations) s.population.generations = *options.generations;
             grammar = parseGrammar(meta.grammarText, meta.grammarPath, s.grammarAttrs);
             requireRootFits(s, grammar);
             scene = Scene::load(s, grammar);

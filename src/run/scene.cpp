@@ -33,7 +33,7 @@ void requireFiniteModels(const CheckModels& models, const RunSettings& s, const 
 
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
     std::unique_ptr<Scene> scene(new Scene);
-    const CheckModels models{s.limits, s.ga.initialGenesMin, s.ga.initialGenesMax};
+    const CheckModels models{s.limits, s.population.initialGenesMin, s.population.initialGenesMax};
     requireFiniteModels(models, s, g);
     scene->kind_ = &s.target->kind();
     scene->target_ = s.target->load({g, s.fitness, s.incremental, s.limits.maxPrimitives, models, s.configPath});

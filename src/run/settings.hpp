@@ -16,6 +16,7 @@
 #include "score/fitness_settings.hpp"
 #include "score/incremental_settings.hpp"
 #include "score/target_kind.hpp"
+#include "search/population_settings.hpp"
 #include "search/search_settings.hpp"
 
 namespace shapevo {
@@ -39,8 +40,9 @@ struct RunSettings {
     FitnessSettings fitness;  ///< [score] form and weights
     IncrementalSettings incremental;  ///< [score] incremental, cache_mb, check_incremental
     GenomeLimits limits;
-    SearchSettings search;  ///< which method runs ([search]); [ga] sizes apply to all
-    GaSettings ga;
+    SearchSettings search;  ///< which method runs ([search])
+    PopulationSettings population;  ///< [ga] population, generations, initial lengths: every method's sizes
+    GaSettings ga;                  ///< [ga] elitism, tournament, mutation, operator weights: the GA's and the hybrid's
     MigrationSettings migration;
     CheckpointSettings checkpoint;
 };

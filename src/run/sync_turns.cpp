@@ -13,7 +13,7 @@ TurnDecision SyncTurns::after(const IslandRow& row, std::uint32_t g) {
     const RunSettings& s = c_.s;
     sinceMeeting_.push_back(row);
     const bool byCount = c_.checkpoints.dueByCount(g);
-    if (g % meetEvery_ != 0 && !byCount && g < s.ga.generations) return {};
+    if (g % meetEvery_ != 0 && !byCount && g < s.population.generations) return {};
     MeetingInput in;
     in.rows.swap(sinceMeeting_);
     in.signal = stopSignalReceived();
@@ -32,7 +32,7 @@ TurnDecision SyncTurns::after(const IslandRow& row, std::uint32_t g) {
     if (m.signal > 0) stopReason = signalName(m.signal), c_.stop.bySignal = true;
     else if (m.wallTimeSpent) stopReason = "the wall-time budget";
     else if (targetReached) stopReason = "reaching the target fitness";
-    else if (g >= s.ga.generations) stopReason = "done";
+    else if (g >= s.population.generations) stopReason = "done";
     if (c_.progress) printProgress(m);
     return {byCount || m.checkpointDue || !stopReason.empty(), !stopReason.empty()};
 }

@@ -8,20 +8,20 @@
 
 namespace shapevo {
 
-GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits,
-                                   std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), settings_(settings), limits_(limits) {
-    pop_.individuals.resize(settings.population);
-    next_.individuals.resize(settings.population);
-    next_.fitness.resize(settings.population);
-    order_.resize(settings.population);
-    childOp_.resize(settings.population + 1);
-    parentFitness_.resize(settings.population + 1);
-    picked_.resize(settings.population);
+GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const PopulationSettings& population, const GaSettings& settings,
+                                   const GenomeLimits& limits, std::uint64_t seed)
+    : SearchMethod(seed), grammar_(g), population_(population), settings_(settings), limits_(limits) {
+    pop_.individuals.resize(population.population);
+    next_.individuals.resize(population.population);
+    next_.fitness.resize(population.population);
+    order_.resize(population.population);
+    childOp_.resize(population.population + 1);
+    parentFitness_.resize(population.population + 1);
+    picked_.resize(population.population);
 }
 
 void GeneticAlgorithm::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, settings_.initialGenesMin, settings_.initialGenesMax, evaluator);
+    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 void GeneticAlgorithm::step(Evaluator& evaluator) {

@@ -9,6 +9,7 @@
 
 #include "genome/operators.hpp"
 #include "search/operator_outcomes.hpp"
+#include "search/population_settings.hpp"
 #include "search/search_method.hpp"
 #include "search/selection.hpp"
 
@@ -16,7 +17,8 @@ namespace shapevo {
 
 class GeneticAlgorithm final : public SearchMethod {
 public:
-    GeneticAlgorithm(const Grammar& g, const GaSettings& settings, const GenomeLimits& limits, std::uint64_t seed);
+    GeneticAlgorithm(const Grammar& g, const PopulationSettings& population, const GaSettings& settings,
+                     const GenomeLimits& limits, std::uint64_t seed);
 
     /// Generation 1: grow and evaluate the initial population.
     void initialize(Evaluator& evaluator) override;
@@ -27,6 +29,7 @@ public:
 private:
 
     const Grammar& grammar_;
+    PopulationSettings population_;
     GaSettings settings_;
     GenomeLimits limits_;
     Population next_;

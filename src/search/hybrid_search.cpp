@@ -16,10 +16,10 @@ namespace {
 constexpr double kDepthBias = 1.0;  ///< regrow picks every non-terminal gene alike
 }
 
-HybridSearch::HybridSearch(const Grammar& g, const HybridSettings& settings, const GaSettings& ga,
-                           const GenomeLimits& limits, std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), settings_(settings), ga_(ga), limits_(limits) {
-    resize(ga.population);
+HybridSearch::HybridSearch(const Grammar& g, const HybridSettings& settings, const PopulationSettings& population,
+                           const GaSettings& ga, const GenomeLimits& limits, std::uint64_t seed)
+    : SearchMethod(seed), grammar_(g), settings_(settings), population_(population), ga_(ga), limits_(limits) {
+    resize(population.population);
 }
 
 void HybridSearch::resize(std::size_t n) {
@@ -59,7 +59,7 @@ std::size_t HybridSearch::islandElites(std::size_t k) const {
 }
 
 void HybridSearch::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, ga_.initialGenesMin, ga_.initialGenesMax, evaluator);
+    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 bool HybridSearch::regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y) {
@@ -182,7 +182,7 @@ void HybridSearch::restartWorstIsland(Evaluator& evaluator) { restartIsland(wors
 void HybridSearch::restartIsland(std::size_t k, Evaluator& evaluator) {
     batch_.clear();
     for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i) {
-        growRandomLength(grammar_, pop_.individuals[i], rng_, limits_, ga_.initialGenesMin, ga_.initialGenesMax);
+        growRandomLength(grammar_, pop_.individuals[i], rng_, limits_, population_.initialGenesMin, population_.initialGenesMax);
         batch_.add(pop_.individuals[i]);
     }
     evaluations_ += batch_.evaluate(evaluator);

@@ -36,6 +36,7 @@
 #include "genome/operators.hpp"
 #include "genome/regrow.hpp"
 #include "search/evaluation_batch.hpp"
+#include "search/population_settings.hpp"
 #include "search/search_method.hpp"
 #include "search/selection.hpp"
 
@@ -43,8 +44,8 @@ namespace shapevo {
 
 class HybridSearch final : public SearchMethod {
 public:
-    HybridSearch(const Grammar& g, const HybridSettings& settings, const GaSettings& ga, const GenomeLimits& limits,
-                 std::uint64_t seed);
+    HybridSearch(const Grammar& g, const HybridSettings& settings, const PopulationSettings& population,
+                 const GaSettings& ga, const GenomeLimits& limits, std::uint64_t seed);
 
     /// Generation 1: grow and evaluate the initial population (as the GA).
     void initialize(Evaluator& evaluator) override;
@@ -90,6 +91,7 @@ private:
 
     const Grammar& grammar_;
     HybridSettings settings_;
+    PopulationSettings population_;
     GaSettings ga_;
     GenomeLimits limits_;
     std::size_t islands_ = 1;

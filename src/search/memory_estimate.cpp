@@ -8,7 +8,7 @@
 
 namespace shapevo {
 
-MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const GaSettings& ga,
+MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const PopulationSettings& population,
                                     const GenomeLimits& limits) {
     MemoryEstimate e;
     const SearchMethodEntry* method = findSearchMethod(search.method);
@@ -16,8 +16,8 @@ MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& sear
     for (const Rule& r : g.rules) e.largestGeneWords = std::max(e.largestGeneWords, r.geneWords());
     const double perIndividual = double(sizeof(Chromosome) + sizeof(double)) +
                                  double(limits.maxGenes) * 4.0 * double(e.largestGeneWords);
-    e.bytes = double(ga.population) * double(e.copies) * perIndividual;
-    e.formula = "population " + std::to_string(ga.population) + " x " + std::to_string(e.copies) + " copies x (" +
+    e.bytes = double(population.population) * double(e.copies) * perIndividual;
+    e.formula = "population " + std::to_string(population.population) + " x " + std::to_string(e.copies) + " copies x (" +
                 std::to_string(sizeof(Chromosome) + sizeof(double)) + " + max_genes " + std::to_string(limits.maxGenes) +
                 " x 4 x " + std::to_string(e.largestGeneWords) + " words of the largest gene) bytes";
     return e;

@@ -12,6 +12,7 @@
 
 #include "genome/chromosome.hpp"
 #include "grammar/grammar.hpp"
+#include "search/population_settings.hpp"
 #include "search/search_settings.hpp"
 
 namespace shapevo {
@@ -25,7 +26,7 @@ struct MemoryEstimate {
 };
 
 /// The estimate for one island running `search.method` (a name in search_methods.cpp's table).
-MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const GaSettings& ga,
+MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const PopulationSettings& population,
                                     const GenomeLimits& limits);
 
 }  // namespace shapevo

@@ -10,10 +10,10 @@
 
 namespace shapevo {
 
-Rjmcmc::Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const GaSettings& ga, const GenomeLimits& limits,
-               std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), settings_(settings), ga_(ga), limits_(limits) {
-    resize(ga.population);
+Rjmcmc::Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const PopulationSettings& population,
+               const GenomeLimits& limits, std::uint64_t seed)
+    : SearchMethod(seed), grammar_(g), settings_(settings), population_(population), limits_(limits) {
+    resize(population.population);
 }
 
 void Rjmcmc::resize(std::size_t n) {
@@ -33,7 +33,7 @@ double Rjmcmc::temperature(std::size_t i) const {
 }
 
 void Rjmcmc::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, ga_.initialGenesMin, ga_.initialGenesMax, evaluator);
+    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 void Rjmcmc::restored() { resize(pop_.size()); }

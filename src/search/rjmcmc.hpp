@@ -27,14 +27,17 @@
 
 #include "genome/regrow.hpp"
 #include "search/evaluation_batch.hpp"
+#include "search/population_settings.hpp"
 #include "search/search_method.hpp"
 
 namespace shapevo {
 
 class Rjmcmc final : public SearchMethod {
 public:
-    Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const GaSettings& ga, const GenomeLimits& limits,
-           std::uint64_t seed);
+    /// One chain per individual of `population` (its size and initial lengths; RJMCMC uses none of
+    /// the GA's operators).
+    Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const PopulationSettings& population,
+           const GenomeLimits& limits, std::uint64_t seed);
 
     /// Generation 1: chains start at grown random derivations (like the GA's first population).
     void initialize(Evaluator& evaluator) override;
@@ -67,7 +70,7 @@ private:
 
     const Grammar& grammar_;
     RjmcmcSettings settings_;
-    GaSettings ga_;
+    PopulationSettings population_;
     GenomeLimits limits_;
     std::vector<Chromosome> proposals_, second_, star_;
     std::vector<Proposal> info_;

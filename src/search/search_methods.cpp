@@ -45,25 +45,25 @@ void readHybrid(SectionReader& r, SearchSettings& s) {
     r.number("hybrid_refine_nudge", h.refineNudge, 0, 1);
 }
 
-std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
-                                         const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<HybridSearch>(g, s.hybrid, ga, limits, seed);
+std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const PopulationSettings& p, const GaSettings& ga,
+                                         const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<HybridSearch>(g, s.hybrid, p, ga, limits, seed);
 }
-std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const GaSettings& ga, const Grammar& g,
-                                     const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<GeneticAlgorithm>(g, ga, limits, seed);
+std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const PopulationSettings& p, const GaSettings& ga,
+                                     const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<GeneticAlgorithm>(g, p, ga, limits, seed);
 }
-std::unique_ptr<SearchMethod> makeSmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
-                                      const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Smc>(g, s.smc, ga.population, limits, GrowthOrder::Chromosome, seed);
+std::unique_ptr<SearchMethod> makeSmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
+                                      const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(g, s.smc, p.population, limits, GrowthOrder::Chromosome, seed);
 }
-std::unique_ptr<SearchMethod> makeSosmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
-                                        const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Smc>(g, s.smc, ga.population, limits, GrowthOrder::Random, seed);
+std::unique_ptr<SearchMethod> makeSosmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
+                                        const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(g, s.smc, p.population, limits, GrowthOrder::Random, seed);
 }
-std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const GaSettings& ga, const Grammar& g,
-                                         const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Rjmcmc>(g, s.rjmcmc, ga, limits, seed);
+std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
+                                         const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Rjmcmc>(g, s.rjmcmc, p, limits, seed);
 }
 
 // populationCopies: GA pop_ + next_; SMC pop_ + next_; RJMCMC pop_ + proposals_ + second_ + star_.
@@ -91,11 +91,12 @@ std::string searchMethodNames() {
     return wordList(kMethods.size(), [](std::size_t i) { return "\"" + std::string(kMethods[i].name) + "\""; });
 }
 
-std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const GaSettings& ga, const Grammar& g,
-                                               const GenomeLimits& limits, std::uint64_t seed) {
+std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const PopulationSettings& population,
+                                               const GaSettings& ga, const Grammar& g, const GenomeLimits& limits,
+                                               std::uint64_t seed) {
     const SearchMethodEntry* e = findSearchMethod(search.method);
     if (!e) throw std::invalid_argument("no search method named \"" + search.method + "\" (expected " + searchMethodNames() + ")");
-    return e->make(search, ga, g, limits, seed);
+    return e->make(search, population, ga, g, limits, seed);
 }
 
 }  // namespace shapevo

@@ -1,7 +1,8 @@
 // SearchSettings: which search method an island runs (config [search] method = a name from the
-// table in search/search_methods.cpp) and the settings of the baselines. Population size, generation count and
-// the initial lengths stay in [ga] and apply to every method. Defaults and their sources are in
-// docs/search-methods.md.
+// table in search/search_methods.cpp) and the settings of the methods; GaSettings: the genetic
+// algorithm's operators ([ga]), used by the GA and the hybrid. The sizes every method uses
+// (population, generations, initial lengths) are PopulationSettings (search/population_settings.hpp),
+// also read from [ga]. Defaults and their sources are in docs/search-methods.md.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -28,22 +29,19 @@ struct RjmcmcSettings {
     bool delayedRejection = false;          ///< second stage after a rejected jump (Green & Mira)
 };
 
-/// The genetic algorithm's sizes ([ga]); population, generations and initial lengths apply to
-/// every method.
+/// The genetic algorithm's operators ([ga]), used by the GA and the hybrid search; the sizes
+/// every method uses are PopulationSettings.
 struct GaSettings {
-    std::uint32_t population = 200;
-    std::uint32_t generations = 50;
     std::uint32_t elitism = 30;
     std::uint32_t tournament = 10;
     double mutation = 0.30;                             ///< probability that a pair is mutated, not crossed
     double growWeight = 1.0, cutWeight = 1.0, alterWeight = 1.0;  ///< split of the mutations
     int crossoverRetries = 3;
-    std::uint32_t initialGenesMin = 2, initialGenesMax = 40;  ///< initial length drawn uniformly in between
 };
 
-
 /// The hybrid search (search/hybrid_search.hpp): GA islands inside one process whose elites are
-/// refined by local moves. [ga] gives population, elitism, tournament and grow/cut/alter weights.
+/// refined by local moves. [ga] gives elitism, tournament, grow/cut/alter weights and crossover
+/// retries (GaSettings), and the sizes (PopulationSettings).
 struct HybridSettings {
     std::uint32_t islands = 4;            ///< sub-populations of one process (population split evenly)
     std::uint32_t migrationInterval = 10; ///< generations between migrations around the in-process ring

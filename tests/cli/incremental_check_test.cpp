@@ -43,7 +43,7 @@ TEST_P(IncrementalCheckSlow, HundredThousandChildrenScoreTheSameBothWays) {
     TempDir dir;
     const std::string config = sourcePath("configs/" + GetParam() + ".toml");
     const RunSettings s = loadConfig(config);
-    const std::uint64_t perGeneration = s.ga.population - s.ga.elitism;
+    const std::uint64_t perGeneration = s.population.population - s.ga.elitism;
     const std::uint64_t generations = (100000 + perGeneration - 1) / perGeneration;
     const auto r = runShapevo("run " + config + " --seed 2 --threads 2 -q --set score.check_incremental=true --set run.wall_time=0" +
                               " --set ga.generations=" + std::to_string(generations) + " --set checkpoint.interval=1000000" +

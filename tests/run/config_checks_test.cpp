@@ -57,7 +57,7 @@ TEST(ConfigChecks, InitialGenesMaxAboveMaxGenesNamesBothKeys) {
     EXPECT_EQ(errorOf(kVolume + "[ga]\ninitial_genes_max = 50\n", {"genome.max_genes=30"}).file(), "--set");
     // the default initial_genes_max (40) is not an error with a smaller max_genes
     EXPECT_EQ(parseConfig(kVolume + "[genome]\nmax_genes = 30\n", "x.toml").limits.maxGenes, 30u);
-    EXPECT_EQ(parseConfig(kVolume + "[genome]\nmax_genes = 50\n[ga]\ninitial_genes_max = 50\n", "x.toml").ga.initialGenesMax, 50u);
+    EXPECT_EQ(parseConfig(kVolume + "[genome]\nmax_genes = 50\n[ga]\ninitial_genes_max = 50\n", "x.toml").population.initialGenesMax, 50u);
 }
 
 TEST(ConfigChecks, ARuleBrokenByAnOverrideIsBlamedOnTheSet) {

@@ -24,7 +24,7 @@ TEST(ConfigFile, EachStageGetsItsOwnPart) {
     EXPECT_EQ(s.search.smc.temperature, 0.25) << "every method's keys are read, whichever runs";
     EXPECT_EQ(s.migration.interval, 7u);
     EXPECT_EQ(s.checkpoint.keep, 9);
-    EXPECT_EQ(s.ga.population, 60u);
+    EXPECT_EQ(s.population.population, 60u);
     EXPECT_EQ(s.target->kind().name, "volume");
     EXPECT_FALSE(s.target->inputFiles().empty());
 }

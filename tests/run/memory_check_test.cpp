@@ -27,7 +27,7 @@ TEST(MemoryCheck, TheEstimateIsTheDocumentedFormula) {
     for (const Rule& r : x.g.rules) largest = std::max(largest, r.geneWords());
     for (const SearchMethodEntry& m : searchMethods()) {
         x.s.search.method = std::string(m.name);
-        const MemoryEstimate e = searchMemoryEstimate(x.g, x.s.search, x.s.ga, x.s.limits);
+        const MemoryEstimate e = searchMemoryEstimate(x.g, x.s.search, x.s.population, x.s.limits);
         EXPECT_EQ(e.copies, m.populationCopies + 2) << m.name;
         EXPECT_EQ(e.largestGeneWords, largest);
         EXPECT_DOUBLE_EQ(e.bytes, 200.0 * e.copies * (sizeof(Chromosome) + 8.0 + 100.0 * 4.0 * largest)) << m.name;
@@ -37,7 +37,7 @@ TEST(MemoryCheck, TheEstimateIsTheDocumentedFormula) {
 TEST(MemoryCheck, ARunThatDoesNotFitIsRefusedWithTheEstimate) {
     Spaceship x;
     EXPECT_NO_THROW(requireMemoryFits(x.s, x.g, 1, kGiB)) << "the demo fits in 1 GiB";
-    x.s.ga.population = 1'000'000;  // 1e6 x 4 x (40 + 100 x 4 x W) bytes: several GiB
+    x.s.population.population = 1'000'000;  // 1e6 x 4 x (40 + 100 x 4 x W) bytes: several GiB
     try {
         requireMemoryFits(x.s, x.g, 1, kGiB);
         FAIL() << "accepted";
@@ -53,7 +53,7 @@ TEST(MemoryCheck, ARunThatDoesNotFitIsRefusedWithTheEstimate) {
 
 TEST(MemoryCheck, IslandsOnOneMachineAddUp) {
     Spaceship x;
-    const double one = searchMemoryEstimate(x.g, x.s.search, x.s.ga, x.s.limits).bytes;
+    const double one = searchMemoryEstimate(x.g, x.s.search, x.s.population, x.s.limits).bytes;
     const auto fitsOnce = std::uint64_t(one * 1.5);
     EXPECT_NO_THROW(requireMemoryFits(x.s, x.g, 1, fitsOnce));
     EXPECT_THROW(requireMemoryFits(x.s, x.g, 2, fitsOnce), InputError);

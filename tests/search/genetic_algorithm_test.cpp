@@ -17,13 +17,14 @@ using Fixture = test::SpaceshipFixture;
 
 TEST(GeneticAlgorithm, EliteKeepsTheBestAndEveryChildIsValid) {
     Fixture fx;
+    PopulationSettings sizes;
+    sizes.population = 40;
     GaSettings s;
-    s.population = 40;
     s.elitism = 4;
     s.tournament = 5;
     const GenomeLimits limits{60};
     Evaluator evaluator(fx.scorer, 1);
-    GeneticAlgorithm ga(fx.grammar, s, limits, 7);
+    GeneticAlgorithm ga(fx.grammar, sizes, s, limits, 7);
     ga.initialize(evaluator);
     double best = ga.stats().best;
     const double first = best;
@@ -40,14 +41,15 @@ TEST(GeneticAlgorithm, EliteKeepsTheBestAndEveryChildIsValid) {
 TEST(GeneticAlgorithm, MutationOnlyAndCrossoverOnlyBothWork) {
     Fixture fx;
     for (double mutation : {0.0, 1.0}) {
+        PopulationSettings sizes;
+        sizes.population = 20;
         GaSettings s;
-        s.population = 20;
         s.elitism = 2;
         s.mutation = mutation;
         s.tournament = 3;
         const GenomeLimits limits{50};
         Evaluator evaluator(fx.scorer, 2);
-        GeneticAlgorithm ga(fx.grammar, s, limits, 3);
+        GeneticAlgorithm ga(fx.grammar, sizes, s, limits, 3);
         ga.initialize(evaluator);
         for (int gen = 0; gen < 5; ++gen) ga.step(evaluator);
         for (const Chromosome& c : ga.population().individuals) EXPECT_EQ(validateChromosome(fx.grammar, c, limits), "");
@@ -56,13 +58,14 @@ TEST(GeneticAlgorithm, MutationOnlyAndCrossoverOnlyBothWork) {
 
 TEST(GeneticAlgorithm, InitialLengthsFollowTheConfiguredRange) {
     Fixture fx;
+    PopulationSettings sizes;
+    sizes.population = 100;
+    sizes.initialGenesMin = 10;
+    sizes.initialGenesMax = 20;
     GaSettings s;
-    s.population = 100;
     s.elitism = 0;
-    s.initialGenesMin = 10;
-    s.initialGenesMax = 20;
     Evaluator evaluator(fx.scorer, 1);
-    GeneticAlgorithm ga(fx.grammar, s, GenomeLimits{100}, 5);
+    GeneticAlgorithm ga(fx.grammar, sizes, s, GenomeLimits{100}, 5);
     ga.initialize(evaluator);
     for (const Chromosome& c : ga.population().individuals) {
         EXPECT_GE(c.genes, 10u);

@@ -37,10 +37,11 @@ TEST(PopulationDiversity, CountsEqualGenomesAndEqualStructuresExactly) {
 TEST(OperatorOutcomes, EveryChildOfEveryGenerationIsCountedOnceAgainstItsParent) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     test::FunctionScorer scorer(g, [](const Chromosome& c) { return double(c.genes % 7) + 0.01 * double(c.words.size() % 5); });
+    PopulationSettings sizes;
+    sizes.population = 41;  // an odd number of children: the last pair's second child is discarded
     GaSettings settings;
-    settings.population = 41;  // an odd number of children: the last pair's second child is discarded
     settings.elitism = 6;
-    GeneticAlgorithm ga(g, settings, GenomeLimits{40}, 3);
+    GeneticAlgorithm ga(g, sizes, settings, GenomeLimits{40}, 3);
     Evaluator evaluator(scorer, 1);
     ga.initialize(evaluator);
     for (int i = 0; i < 25; ++i) ga.step(evaluator);

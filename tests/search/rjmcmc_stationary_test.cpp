@@ -92,12 +92,12 @@ TEST_P(RjmcmcStationary, VisitFrequenciesMatchTheTemperedPosterior) {
     s.annealing = 1.0;
     s.depthBias = k.depthBias;
     s.delayedRejection = k.delayedRejection;
-    GaSettings ga;
-    ga.population = k.chains;
-    ga.initialGenesMin = 1;
-    ga.initialGenesMax = 3;
+    PopulationSettings chains;
+    chains.population = k.chains;
+    chains.initialGenesMin = 1;
+    chains.initialGenesMax = 3;
     const GenomeLimits limits{k.maxGenes};
-    Rjmcmc mcmc(g, s, ga, limits, 2024);
+    Rjmcmc mcmc(g, s, chains, limits, 2024);
     mcmc.initialize(evaluator);
     for (int i = 0; i < 1000; ++i) mcmc.step(evaluator);
     const int sweeps = 600000;

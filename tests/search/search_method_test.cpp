@@ -100,8 +100,9 @@ using Spaceship = test::SpaceshipFixture;
 TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun) {
     Spaceship fx;
     Evaluator evaluator(fx.scorer, 2);
+    PopulationSettings sizes;
+    sizes.population = 24;
     GaSettings ga;
-    ga.population = 24;
     ga.elitism = 4;
     ga.tournament = 4;
     const GenomeLimits limits{60};
@@ -113,15 +114,16 @@ TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun
         s.hybrid.migrationInterval = 3;  // the hybrid migrates and restarts on both sides of the split
         s.hybrid.restartInterval = 4;
         s.hybrid.scoutInterval = 3;  // and its scout is adopted or starts again on both sides
-        expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
+        expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, sizes, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
     }
 }
 
 TEST(SearchMethods, FactoryBuildsTheNamedMethodAndEveryOneImproves) {
     Spaceship fx;
     Evaluator evaluator(fx.scorer, 2);
+    PopulationSettings sizes;
+    sizes.population = 30;
     GaSettings ga;
-    ga.population = 30;
     ga.elitism = 4;
     const GenomeLimits limits{60};
     for (const SearchMethodEntry& method : searchMethods()) {
@@ -129,7 +131,7 @@ TEST(SearchMethods, FactoryBuildsTheNamedMethodAndEveryOneImproves) {
         SearchSettings s;
         s.method = method.name;
         SCOPED_TRACE(std::string(method.name));
-        auto m = makeSearchMethod(s, ga, fx.grammar, limits, 5);
+        auto m = makeSearchMethod(s, sizes, ga, fx.grammar, limits, 5);
         m->initialize(evaluator);
         const double first = m->stats().best;
         while (m->generation() < 25) m->step(evaluator);
