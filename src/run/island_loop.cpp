@@ -74,7 +74,7 @@ private:
     Evaluator evaluator_;
     const Scorer::Anomalies anomaliesBefore_;  // the start-up checks' models do not count
     const std::unique_ptr<SearchMethod> method_;
-    SearchMethod& ga_;
+    SearchMethod& search_;
     RingMigration migration_;
     std::vector<GenerationStats> localCurve_;  ///< this island's own rows
     BestModelIoU bestIoU_;
@@ -97,7 +97,7 @@ IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Gramma
     : mpi_(mpi), s_(s), grammar_(grammar), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
       options_(options), log_(log), clock_(mpi, meta_.wallSeconds), root_(mpi.rank() == 0),
       evaluator_(scene.scorer(), s.threads), anomaliesBefore_(scene.scorer().anomalies()),
-      method_(makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()))), ga_(*method_),
+      method_(makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()))), search_(*method_),
       migration_(mpi, s.migration, grammar, s.limits),
       localCurve_(restored ? restored->curve : std::vector<GenerationStats>{}),
       checkpoints_(mpi, s.checkpoint, folder, log), progress_(log, s.population.generations, s.wallTime),
@@ -119,20 +119,20 @@ void IslandLoop::printStartLine() {
 
 void IslandLoop::ownGeneration() {
     const auto migrationStart = LoopClock::Clock::now();
-    migration_.afterGeneration(ga_.population(), ga_.generation(), ga_.migrantSlots());
+    migration_.afterGeneration(search_.population(), search_.generation(), search_.migrantSlots());
     migrationSeconds_ += LoopClock::since(migrationStart);
-    GenerationStats local = ga_.stats();
+    GenerationStats local = search_.stats();
     local.seconds = clock_.runSeconds();
-    local.iou = bestIoU_.of(scene_, ga_.population().individuals[ga_.population().best()]);
+    local.iou = bestIoU_.of(scene_, search_.population().individuals[search_.population().best()]);
     localCurve_.push_back(local);
-    lastRow_ = islandRow(local, ga_.population().fitness);
-    if (diagnostics_) diagnostics_->write(ga_, local.seconds);
+    lastRow_ = islandRow(local, search_.population().fitness);
+    if (diagnostics_) diagnostics_->write(search_, local.seconds);
 }
 
 bool IslandLoop::afterGeneration() {
     ownGeneration();
-    return follow(async_ ? asyncTurns_.after(lastRow_, ga_.generation(), ga_.evaluations(), false)
-                         : syncTurns_.after(lastRow_, ga_.generation()));
+    return follow(async_ ? asyncTurns_.after(lastRow_, search_.generation(), search_.evaluations(), false)
+                         : syncTurns_.after(lastRow_, search_.generation()));
 }
 
 bool IslandLoop::follow(TurnDecision decision) {
@@ -146,10 +146,10 @@ IslandState IslandLoop::islandNow() {
     island.seed = meta_.seed;
     island.ranks = meta_.ranks;
     island.rank = mpi_.rank();
-    island.generation = ga_.generation();
-    island.evaluations = ga_.evaluations();
-    island.rng = ga_.rng().state();
-    island.population = ga_.population();
+    island.generation = search_.generation();
+    island.evaluations = search_.evaluations();
+    island.rng = search_.rng().state();
+    island.population = search_.population();
     island.arrivals = migration_.arrivals();  // sync: receives what is still in flight to this rank
     island.curve = localCurve_;
     return island;
@@ -160,7 +160,7 @@ void IslandLoop::sayBoundsReached() {
         if (said || !reached) return;
         said = true;
         log_ << "shapevo: rank " << mpi_.rank() << ": " << what << " score.cache_mb = " << s_.incremental.cacheMb
-             << " at generation " << ga_.generation() << "; " << fromNowOn
+             << " at generation " << search_.generation() << "; " << fromNowOn
              << " (results are the same; raise score.cache_mb for speed)\n";
     };
     say(saidCacheFull_, scene_.scorer().cacheFull(), "incremental scoring has filled",
@@ -175,23 +175,23 @@ JobResult IslandLoop::run() {
     result.folder = folder_;
     bool stop = false;
     if (restored_) {
-        ga_.restore(restored_->population, restored_->rng, restored_->generation, restored_->evaluations);
+        search_.restore(restored_->population, restored_->rng, restored_->generation, restored_->evaluations);
         // in async mode the islands may stand at different generations: complete only when all are
-        if (mpi_.allTrue(ga_.generation() >= s_.population.generations)) {
-            if (root_) log_ << "shapevo: " << folder_ << " is complete at generation " << ga_.generation()
+        if (mpi_.allTrue(search_.generation() >= s_.population.generations)) {
+            if (root_) log_ << "shapevo: " << folder_ << " is complete at generation " << search_.generation()
                             << "; pass --generations N to continue it\n";
-            result.evaluations = ga_.evaluations();
+            result.evaluations = search_.evaluations();
             return result;
         }
         // its figures until its next generation (async mode's statuses to rank 0)
-        lastRow_ = islandRow(localCurve_.empty() ? ga_.stats() : localCurve_.back(), ga_.population().fitness);
+        lastRow_ = islandRow(localCurve_.empty() ? search_.stats() : localCurve_.back(), search_.population().fitness);
     } else {
-        ga_.initialize(evaluator_);
+        search_.initialize(evaluator_);
         stop = afterGeneration();
     }
     while (!stop) {
-        if (ga_.generation() < s_.population.generations) {
-            ga_.step(evaluator_);
+        if (search_.generation() < s_.population.generations) {
+            search_.step(evaluator_);
             sayBoundsReached();
             stop = afterGeneration();
         } else {  // async only: done with its generations, waiting for the others (the run's end)
@@ -199,7 +199,7 @@ JobResult IslandLoop::run() {
                 WaitTimer wait(mpi_);
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));
             }
-            stop = follow(asyncTurns_.after(lastRow_, ga_.generation(), ga_.evaluations(), true));
+            stop = follow(asyncTurns_.after(lastRow_, search_.generation(), search_.evaluations(), true));
         }
     }
     asyncTurns_.finish();
@@ -209,10 +209,10 @@ JobResult IslandLoop::run() {
 
 JobResult IslandLoop::end(JobResult result) {
     // The best individual of all islands goes to rank 0, which writes the outputs.
-    Champion champion = gatherChampion(mpi_, ga_.population());
+    Champion champion = gatherChampion(mpi_, search_.population());
     const Scorer::Anomalies anomalies = scene_.scorer().anomalies(), ofIoU = bestIoU_.addedAnomalies();
     IslandTotals own;
-    own.evaluations = ga_.evaluations();
+    own.evaluations = search_.evaluations();
     own.anomalies.nonFinite = anomalies.nonFinite - anomaliesBefore_.nonFinite - ofIoU.nonFinite;
     own.anomalies.truncated = anomalies.truncated - anomaliesBefore_.truncated - ofIoU.truncated;
     own.migrationSeconds = migrationSeconds_;
@@ -229,7 +229,7 @@ JobResult IslandLoop::end(JobResult result) {
     result.stoppedBySignal = stop_.bySignal;
     if (root_) {
         RunEnd outputs{s_, grammar_, scene_, folder_, meta_, options_, std::move(champion.chromosome), totals,
-                       ga_.generation(), ga_.population().size(), evaluator_.threads(), islands_, mpi_.size(), stop_};
+                       search_.generation(), search_.population().size(), evaluator_.threads(), islands_, mpi_.size(), stop_};
         writeRunOutputs(outputs, result, log_);
     }
     return result;
