@@ -223,18 +223,258 @@ bool startsSubtree(const DeriveScratch::Task& task) {
 /// and makes no primitive.
 enum class Focus { None, Path };
 
+// Derive's loop in parts: run() pops the tasks, runTask() runs one task's statements, and the
+// longer statements have their own functions. The parts are [[gnu::always_inline]] so that the
+// compiled loop is one function, as fast as when it was written as one (callgrind, 2026-12:
+// 0.7-1.1 % fewer instructions); the cold paths (non-finite numbers, storing let values) stay
+// out of line. This translation unit (a unity build) is at GCC's inline-unit-growth limit, so
+// inlining more into the loop can push std::vector::push_back or extrudeScope out of it:
+// measure with callgrind (bench_derive, bench_incremental) after changing these parts.
+
+/// What a derivation's tasks all read: the model, the output and the limits, and with
+/// Focus::Path the focus gene and its ancestors. Passed to the loop's parts, which are all
+/// inlined into it (so this never lives in memory).
+struct Derivation {
+    const Grammar& g;
+    const Chromosome& c;
+    Geometry& out;
+    DeriveScratch& scratch;
+    std::size_t maxPrimitives;
+    std::uint32_t focus;
+    std::span<const std::uint32_t> ancestors;
+};
+
+/// Whether `gene` is one of the path's ancestors (Focus::Path).
+[[gnu::always_inline]] inline bool onPath(const Derivation& d, std::uint32_t gene) {
+    return std::find(d.ancestors.begin(), d.ancestors.end(), gene) != d.ancestors.end();
+}
+
+/// Stop with NonFinite: `rule` made a non-finite angle or primitive.
+[[gnu::cold, gnu::noinline]] DeriveStatus nonFinite(DeriveScratch& scratch, std::uint16_t rule) {
+    scratch.badRule = rule;
+    return DeriveStatus::NonFinite;
+}
+/// Stop with NonFinite on the primitive just appended to `out`, which goes.
+[[gnu::cold, gnu::noinline]] DeriveStatus rejectPrimitive(Geometry& out, DeriveScratch& scratch, std::uint16_t rule) {
+    out.primitives.pop_back();
+    return nonFinite(scratch, rule);
+}
+
+/// `params` for `task`: its gene's parameters, the let values it goes on with (a mirror's or a
+/// piece's continuation) and its piece key.
+[[gnu::always_inline]] inline void loadParams(const Derivation& d, const Rule& r, const DeriveScratch::Task& task,
+                                              float* params) {
+    if (r.paramFloats > 0)
+        std::memcpy(params, &d.c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
+    if (task.frame != DeriveScratch::kNoFrame) [[unlikely]]
+        std::memcpy(params + kFrameBase, d.scratch.frames.data() + task.frame, r.frameFloats * sizeof(float));
+    if (d.g.usesPieceKeys) [[unlikely]]
+        std::memcpy(params + kPieceKeySlot, &task.key, sizeof task.key);
+}
+
+/// Append the `count` let values of `params` to `frames`; returns where they start. Out of line:
+/// only rules with lets get here, and the insert inlined would crowd the loop's own inlining.
+[[gnu::noinline]] std::uint32_t storeFrame(std::vector<float>& frames, const float* params, std::uint32_t count) {
+    const auto at = std::uint32_t(frames.size());
+    frames.insert(frames.end(), params + kFrameBase, params + kFrameBase + count);
+    return at;
+}
+/// The let values a task has now, for tasks it pushes that go on in this gene.
+[[gnu::always_inline]] inline std::uint32_t snapshot(const Rule& r, std::vector<float>& frames, const float* params) {
+    if (r.frameFloats == 0) return DeriveScratch::kNoFrame;
+    return storeFrame(frames, params, r.frameFloats);
+}
+
+/// The three expressions of a Scale / Size / Translate statement.
+template <class Eval>
+[[gnu::always_inline]] inline glm::vec3 vector3(const Eval& eval, const Statement& st) {
+    return glm::vec3(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
+}
+
+/// A Mirror statement at statement `i`: the rest of the rule again, on `s` with one axis flipped.
+[[gnu::always_inline]] inline void pushMirror(const Derivation& d, const Rule& r, const Statement& st,
+                                              const DeriveScratch::Task& task, std::uint32_t i, const Scope& s,
+                                              const float* params) {
+    Scope mirrored = s;
+    mirrored.axes[st.axis] = -mirrored.axes[st.axis];
+    std::vector<Scope>& scopes = d.scratch.scopes;
+    scopes.push_back(mirrored);
+    // the parent scope stays where it is: at or below task.scope
+    const std::uint32_t frame = snapshot(r, d.scratch.frames, params);
+    d.scratch.stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.key});
+}
+
+/// What a primitive kind's emit reads (K::emit, setParams): its expressions and its slot.
+struct PrimitiveArguments {
+    const Grammar& g;
+    const Statement& st;
+    const float *params, *size, *parentSize;
+    float* evalStack;
+    float expression(int i) const { return evaluate(g, st.expr[i], params, size, parentSize, evalStack); }
+    std::uint16_t slot() const { return st.slot; }
+};
+
+/// A Primitive statement: the kind's primitive on `s`, in the look in force. Complete, or why
+/// derivation stops here.
+[[gnu::always_inline]] inline DeriveStatus emitPrimitive(const Derivation& d, const Statement& st,
+                                                         const DeriveScratch::Task& task, const Scope& s,
+                                                         const float* params, const glm::vec3& parentSize,
+                                                         float* evalStack) {
+    Geometry& out = d.out;
+    // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
+    if (out.primitives.size() >= d.maxPrimitives) return DeriveStatus::Truncated;
+    Primitive& p = out.primitives.emplace_back();
+    p.kind = st.primitive;
+    p.params = {};
+    p.centre = s.origin;
+    p.axes = s.axes;
+    p.half = halfAbs(s.size);
+    // The kind's own parameters (a cone's taper, a roof's fractions, a mesh's index).
+    const PrimitiveArguments args{d.g, st, params, &s.size.x, &parentSize.x, evalStack};
+    visitKind(st.primitive, [&](auto kind) { decltype(kind)::type::emit(p, args); });
+    if (!bounded(p)) [[unlikely]]
+        return rejectPrimitive(out, d.scratch, d.c.rule(task.gene));
+    if (d.g.hasAppearance) out.appearance.push_back(d.scratch.looks[s.look]);
+    return DeriveStatus::Complete;
+}
+
+/// A Child statement: a task for each expressed child of the slot, last first, on `s` (stored
+/// once for consecutive child statements: `stored`, UINT32_MAX when `s` is not stored yet).
+template <Focus F>
+[[gnu::always_inline]] inline void pushChildren(const Derivation& d, const Rule& r, const Statement& st,
+                                                const DeriveScratch::Task& task, const std::int32_t* childOffsets,
+                                                const Scope& s, std::uint32_t& stored) {
+    std::vector<Scope>& scopes = d.scratch.scopes;
+    const Slot& slot = r.slots[st.slot];
+    for (std::uint32_t k = slot.maxCount; k-- > 0;) {
+        const std::int32_t off = childOffsets[slot.firstChild + k];
+        if constexpr (F == Focus::Path) {  // only the path's genes are run: the others are not pushed
+            const std::uint32_t child = task.gene + std::uint32_t(off);
+            if (off > 0 && child != d.focus && !onPath(d, child)) continue;
+        }
+        if (off > 0) {
+            if (stored == UINT32_MAX) {
+                scopes.push_back(s);
+                stored = std::uint32_t(scopes.size() - 1);
+            }
+            d.scratch.stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored,
+                                       DeriveScratch::kNoFrame, task.key});
+        }
+    }
+}
+
+/// Run one task's statements (from task.statement to task.end, on its scope): Complete, or why
+/// derivation stops here.
+template <Focus F>
+[[gnu::always_inline]] inline DeriveStatus runTask(const Derivation& d, const DeriveScratch::Task& task, float* params,
+                                                   float* evalStack) {
+    const Grammar& g = d.g;
+    const Chromosome& c = d.c;
+    DeriveScratch& scratch = d.scratch;
+    const Rule& r = g.rules[c.rule(task.gene)];
+    loadParams(d, r, task, params);
+    Scope s = scratch.scopes[task.scope], beforeTerminal;
+    const glm::vec3 parentSize = scratch.scopes[task.parent].size;
+    // Index of the stored scope equal to `s`, if the last one stored still is (children of
+    // consecutive child statements share it); UINT32_MAX when `s` changed since.
+    std::uint32_t stored = UINT32_MAX;
+    auto eval = [&](const ExprRef& e) __attribute__((always_inline)) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
+    // Local copies of pointers the pushes below might otherwise make the compiler reload.
+    const Statement* const statementList = r.statements.data();
+    const std::uint32_t statements = std::min(task.end, std::uint32_t(r.statements.size()));
+    const std::int32_t* const childOffsets = reinterpret_cast<const std::int32_t*>(c.words.data() + task.gene + 2);
+    for (std::uint32_t i = task.statement; i < statements; ++i) {
+        const Statement& st = statementList[i];
+        switch (st.kind) {
+        case StatementKind::Scale:
+            s.size *= vector3(eval, st);
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Size:
+            s.size = vector3(eval, st);
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Translate:
+            s.origin += multiply(s.axes, vector3(eval, st));
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Rotate: {
+            const float degrees = eval(st.expr[0]);
+            if (!std::isfinite(degrees)) [[unlikely]]
+                return nonFinite(scratch, c.rule(task.gene));
+            s.axes = multiply(s.axes, axisRotation(st.axis, degrees));
+            stored = UINT32_MAX;
+            break;
+        }
+        case StatementKind::Mirror:
+            pushMirror(d, r, st, task, i, s, params);
+            stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
+            break;
+        case StatementKind::Primitive:
+            if constexpr (F == Focus::Path) break;  // the path's own primitives are not asked for
+            if (const DeriveStatus why = emitPrimitive(d, st, task, s, params, parentSize, evalStack);
+                why != DeriveStatus::Complete) [[unlikely]]
+                return why;
+            break;
+        case StatementKind::TerminalBegin:
+            if (c.hasChildren(task.gene, r)) {
+                i = st.end;  // the loop's ++i steps past the TerminalEnd
+            } else {
+                beforeTerminal = s;
+            }
+            break;
+        case StatementKind::TerminalEnd:
+            s = beforeTerminal;
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Child:
+            pushChildren<F>(d, r, st, task, childOffsets, s, stored);
+            break;
+        case StatementKind::If: {
+            const float condition = eval(st.expr[0]);
+            if (!(condition > 0.0f || condition < 0.0f)) i = st.end - 1;  // 0 and NaN are false
+            break;
+        }
+        case StatementKind::Jump:
+            i = st.end - 1;
+            break;
+        case StatementKind::Let:
+            for (int k = 0; k < st.axis; ++k) params[st.slot + k] = eval(st.expr[k]);
+            break;
+        case StatementKind::Extrude:
+            s = extrudeScope(s, eval(st.expr[0]));
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Color:
+        case StatementKind::Material:
+            s.look = newLook(g, st, scratch.looks, s.look, params, s.size, parentSize, evalStack);
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Texture:
+            s.look = textureLook(g, st, scratch.looks, s, params, parentSize, evalStack, d.out.textureFrames);
+            stored = UINT32_MAX;
+            break;
+        case StatementKind::Pieces:
+            pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(r, scratch.frames, params),
+                       task.key, scratch);
+            stored = UINT32_MAX;
+            i = st.end - 1;
+            break;
+        }
+    }
+    return DeriveStatus::Complete;
+}
+
 /// Run the tasks on the stack (begin()). `memo` may be null; Path takes none.
 template <Focus F>
 DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives,
                  SubtreeMemo* const memo, std::uint32_t focus, std::span<const std::uint32_t> ancestors,
                  std::vector<SubtreeStart>* starts) {
+    const Derivation d{g, c, out, scratch, maxPrimitives, focus, ancestors};
     auto& stack = scratch.stack;
     auto& scopes = scratch.scopes;
-    auto& frames = scratch.frames;
-    auto& looks = scratch.looks;
     float* params = scratch.params.data();
     float evalStack[kMaxExpressionStack];
-    constexpr std::uint32_t kNoFrame = DeriveScratch::kNoFrame;
     std::size_t& tasks = scratch.tasks;
     tasks = 0;
     const std::size_t maxTasks = maxDeriveTasks(maxPrimitives);
@@ -250,172 +490,18 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
         if constexpr (F == Focus::Path) {
             if (task.gene == focus && startsSubtree(task)) {
                 const Scope& s = scopes[task.scope];
-                starts->push_back({s, g.hasAppearance ? looks[s.look] : Appearance{}, task.key});
+                starts->push_back({s, g.hasAppearance ? scratch.looks[s.look] : Appearance{}, task.key});
                 continue;
             }
-            if (std::find(ancestors.begin(), ancestors.end(), task.gene) == ancestors.end()) continue;
+            if (!onPath(d, task.gene)) continue;
         }
         // A gene's subtree, from its first statement on its parent's scope: derived before? (Not
         // the root's: the whole model recurs only as a duplicate, which search methods never
         // score twice, and keeping it would copy every primitive of every model.)
         if (memo && task.gene != 0 && startsSubtree(task))
             if (reuseSubtree(g, task, out, scratch, *memo, tasks, maxTasks, maxPrimitives)) continue;
-        const Rule& r = g.rules[c.rule(task.gene)];
-        if (r.paramFloats > 0)
-            std::memcpy(params, &c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
-        if (task.frame != kNoFrame) [[unlikely]]
-            std::memcpy(params + kFrameBase, frames.data() + task.frame, r.frameFloats * sizeof(float));
-        if (g.usesPieceKeys) [[unlikely]]
-            std::memcpy(params + kPieceKeySlot, &task.key, sizeof task.key);
-        Scope s = scopes[task.scope], beforeTerminal;
-        const glm::vec3 parentSize = scopes[task.parent].size;
-        // Index of the stored scope equal to `s`, if the last one stored still is (children of
-        // consecutive child statements share it); UINT32_MAX when `s` changed since.
-        std::uint32_t stored = UINT32_MAX;
-        auto eval = [&](const ExprRef& e) __attribute__((always_inline)) { return evaluate(g, e, params, &s.size.x, &parentSize.x, evalStack); };
-        // The let values this task has now, for tasks it pushes that go on in this gene.
-        auto snapshot = [&]() {
-            if (r.frameFloats == 0) return kNoFrame;
-            const auto at = std::uint32_t(frames.size());
-            frames.insert(frames.end(), params + kFrameBase, params + kFrameBase + r.frameFloats);
-            return at;
-        };
-        // Local copies of pointers the pushes below might otherwise make the compiler reload.
-        const Statement* const statementList = r.statements.data();
-        const std::uint32_t statements = std::min(task.end, std::uint32_t(r.statements.size()));
-        const std::int32_t* const childOffsets = reinterpret_cast<const std::int32_t*>(c.words.data() + task.gene + 2);
-        for (std::uint32_t i = task.statement; i < statements; ++i) {
-            const Statement& st = statementList[i];
-            switch (st.kind) {
-            case StatementKind::Scale: {
-                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
-                s.size *= v;
-                stored = UINT32_MAX;
-                break;
-            }
-            case StatementKind::Size: {
-                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
-                s.size = v;
-                stored = UINT32_MAX;
-                break;
-            }
-            case StatementKind::Translate: {
-                const glm::vec3 v(eval(st.expr[0]), eval(st.expr[1]), eval(st.expr[2]));
-                s.origin += multiply(s.axes, v);
-                stored = UINT32_MAX;
-                break;
-            }
-            case StatementKind::Rotate: {
-                const float degrees = eval(st.expr[0]);
-                if (!std::isfinite(degrees)) [[unlikely]] {
-                    scratch.badRule = c.rule(task.gene);
-                    return DeriveStatus::NonFinite;
-                }
-                s.axes = multiply(s.axes, axisRotation(st.axis, degrees));
-                stored = UINT32_MAX;
-                break;
-            }
-            case StatementKind::Mirror: {
-                Scope mirrored = s;
-                mirrored.axes[st.axis] = -mirrored.axes[st.axis];
-                scopes.push_back(mirrored);
-                // the parent scope stays where it is: at or below task.scope
-                const std::uint32_t frame = snapshot();
-                stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.key});
-                stored = UINT32_MAX;  // children pushed later need a scope above the mirrored one
-                break;
-            }
-            case StatementKind::Primitive: {
-                if constexpr (F == Focus::Path) break;  // the path's own primitives are not asked for
-                // A cap, so that mirrors inside recursion (2^depth copies) cannot run away.
-                if (out.primitives.size() >= maxPrimitives) return DeriveStatus::Truncated;
-                Primitive& p = out.primitives.emplace_back();
-                p.kind = st.primitive;
-                p.params = {};
-                p.centre = s.origin;
-                p.axes = s.axes;
-                p.half = halfAbs(s.size);
-                // The kind's own parameters (a cone's taper, a roof's fractions, a mesh's index): K::emit
-                // reads its arguments and sets them (setParams).
-                struct Arguments {
-                    const Grammar& g;
-                    const Statement& st;
-                    const float *params, *size, *parentSize;
-                    float* evalStack;
-                    float expression(int i) const { return evaluate(g, st.expr[i], params, size, parentSize, evalStack); }
-                    std::uint16_t slot() const { return st.slot; }
-                };
-                const Arguments args{g, st, params, &s.size.x, &parentSize.x, evalStack};
-                visitKind(st.primitive, [&](auto kind) { decltype(kind)::type::emit(p, args); });
-                if (!bounded(p)) {
-                    out.primitives.pop_back();
-                    scratch.badRule = c.rule(task.gene);
-                    return DeriveStatus::NonFinite;
-                }
-                if (g.hasAppearance) out.appearance.push_back(looks[s.look]);
-                break;
-            }
-            case StatementKind::TerminalBegin:
-                if (c.hasChildren(task.gene, r)) {
-                    i = st.end;  // the loop's ++i steps past the TerminalEnd
-                } else {
-                    beforeTerminal = s;
-                }
-                break;
-            case StatementKind::TerminalEnd:
-                s = beforeTerminal;
-                stored = UINT32_MAX;
-                break;
-            case StatementKind::Child: {
-                const Slot& slot = r.slots[st.slot];
-                for (std::uint32_t k = slot.maxCount; k-- > 0;) {
-                    const std::int32_t off = childOffsets[slot.firstChild + k];
-                    if constexpr (F == Focus::Path) {  // only the path's genes are run: the others are not pushed
-                        const std::uint32_t child = task.gene + std::uint32_t(off);
-                        if (off > 0 && child != focus && std::find(ancestors.begin(), ancestors.end(), child) == ancestors.end())
-                            continue;
-                    }
-                    if (off > 0) {
-                        if (stored == UINT32_MAX) {
-                            scopes.push_back(s);
-                            stored = std::uint32_t(scopes.size() - 1);
-                        }
-                        stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored, kNoFrame, task.key});
-                    }
-                }
-                break;
-            }
-            case StatementKind::If: {
-                const float condition = eval(st.expr[0]);
-                if (!(condition > 0.0f || condition < 0.0f)) i = st.end - 1;  // 0 and NaN are false
-                break;
-            }
-            case StatementKind::Jump:
-                i = st.end - 1;
-                break;
-            case StatementKind::Let:
-                for (int k = 0; k < st.axis; ++k) params[st.slot + k] = eval(st.expr[k]);
-                break;
-            case StatementKind::Extrude:
-                s = extrudeScope(s, eval(st.expr[0]));
-                stored = UINT32_MAX;
-                break;
-            case StatementKind::Color:
-            case StatementKind::Material:
-                s.look = newLook(g, st, looks, s.look, params, s.size, parentSize, evalStack);
-                stored = UINT32_MAX;
-                break;
-            case StatementKind::Texture:
-                s.look = textureLook(g, st, looks, s, params, parentSize, evalStack, out.textureFrames);
-                stored = UINT32_MAX;
-                break;
-            case StatementKind::Pieces:
-                pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(), task.key, scratch);
-                stored = UINT32_MAX;
-                i = st.end - 1;
-                break;
-            }
-        }
+        if (const DeriveStatus why = runTask<F>(d, task, params, evalStack); why != DeriveStatus::Complete) [[unlikely]]
+            return why;
     }
     return DeriveStatus::Complete;
 }
