@@ -2,6 +2,9 @@
 // shape/kinds/ holding one struct K that meets PrimitiveKindContract (shape/primitive_kind.hpp:
 // its kind and keyword, grammar arguments, parameters, voxel rows, silhouette outline,
 // tessellation, and the optional members); the list below is checked against it, kind by kind.
+// A kind's own work space is kept per kind from this list too: KindVoxelScratch (the voxelizer's,
+// one K::VoxelScratch each) and KindOutlineScratch (the silhouette builder's, one K::OutlineScratch
+// each), so a kind needing its own state declares it in its own file and nothing else changes.
 // visitKind(kind, f) calls f(KindTag<K>{}) for the kind's struct: one compare chain per primitive
 // (or statement), inlined, so the per-row and per-span loops inside a kind are monomorphic; no
 // virtual call anywhere.
@@ -11,6 +14,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "shape/kinds/box.hpp"
@@ -66,6 +70,27 @@ template <class List>
 struct AllVoxelScratch;
 template <class... K>
 struct AllVoxelScratch<KindList<K...>> : VoxelScratchOf<K>::type... {};
+
+/// The place of a kind without K::OutlineScratch in KindOutlineScratch: empty.
+struct NoOutlineScratch {
+    template <class Builder>
+    explicit NoOutlineScratch(const Builder&) {}
+};
+template <class K>
+struct OutlineScratchOf {
+    using type = NoOutlineScratch;
+};
+template <class K>
+    requires requires { typename K::OutlineScratch; }
+struct OutlineScratchOf<K> {
+    using type = typename K::OutlineScratch;
+};
+template <class List>
+struct AllOutlineScratch;
+template <class... K>
+struct AllOutlineScratch<KindList<K...>> {
+    using type = std::tuple<typename OutlineScratchOf<K>::type...>;
+};
 }  // namespace detail
 
 namespace detail {
@@ -112,6 +137,22 @@ using KindVoxelScratch = detail::AllVoxelScratch<Kinds>;
 template <class K>
 typename detail::VoxelScratchOf<K>::type& voxelScratch(KindVoxelScratch& all) {
     return all;
+}
+
+/// Per-kind silhouette state, one element per kind in Kinds order (its PrimitiveKind): the kind's
+/// K::OutlineScratch for each kind that declares one, an empty placeholder for the others. Built
+/// once per outline builder (score/image/silhouette_outline.hpp), each K::OutlineScratch from the
+/// builder (K::OutlineScratch(builder): the unit shapes it already holds, or the kind's own geometry).
+using KindOutlineScratch = detail::AllOutlineScratch<Kinds>::type;
+template <class Builder>
+KindOutlineScratch makeKindOutlineScratch(const Builder& builder) {
+    return [&]<class... K>(KindList<K...>) {
+        return KindOutlineScratch(typename detail::OutlineScratchOf<K>::type(builder)...);
+    }(Kinds{});
+}
+template <class K>
+typename detail::OutlineScratchOf<K>::type& outlineScratch(KindOutlineScratch& all) {
+    return std::get<std::size_t(K::kind)>(all);
 }
 
 /// False if p refers to data `meshes` does not hold (K::shapeOf; kinds without one always draw).

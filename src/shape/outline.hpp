@@ -2,11 +2,14 @@
 // definition of "covered" and the builder that makes outlines for a camera): pieces of points in
 // 1/256-pixel fixed point, each piece covering the closed convex hull of its points. The kinds'
 // outline code (shape/kinds/*.hpp, `outline`) appends pieces; these types and constants are what
-// it may rely on without seeing the camera.
+// it may rely on without seeing the camera, with UnitShape, the convex polyhedra in a primitive's
+// local coordinates that pieces are projected from (the builder's own, or a kind's OutlineScratch).
 #pragma once
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "shape/primitive.hpp"
 
@@ -42,6 +45,14 @@ static_assert(kRoundSides >= 3 && kRoundSides <= 32, "ring corners are kept in 3
 /// hint a hull algorithm may use; it must not rely on it); the rest come in no order.
 struct OutlinePiece {
     std::uint32_t first = 0, count = 0;
+    std::uint16_t rings = 0, ringSize = 0;
+};
+
+/// A convex polyhedron in a primitive's local (u) coordinates, drawn as one piece (all of its
+/// vertices; cut by the clip plane along its edges when needed).
+struct UnitShape {
+    std::vector<glm::dvec3> vertices;  ///< local (u) coordinates; rings first, then loose points
+    std::vector<std::uint16_t> edges;  ///< pairs of vertex indices
     std::uint16_t rings = 0, ringSize = 0;
 };
 

@@ -19,7 +19,10 @@
 //                       (score/silhouette_outline.hpp is the builder; shape/outline.hpp the pieces)
 //   KindTessellation    K::surface(surfaceBuilder, p, meshes): its surface (shape/surface.hpp)
 // Optional members, found with `requires` where they are used: K::VoxelScratch (the voxelizer
-// keeps one, rows.scratch<K>()), K::shapeOf(p, meshes) (null: the primitive refers to data it does
+// keeps one, rows.scratch<K>()), K::OutlineScratch (its silhouette state: the outline builder
+// keeps one, built once with K::OutlineScratch(builder) from the builder's unit shapes or the
+// kind's own geometry, and hands it out as builder.scratch<K>(); shape/kinds.hpp's
+// KindOutlineScratch), K::shapeOf(p, meshes) (null: the primitive refers to data it does
 // not have, and draws nothing), K::textureRadius(p) (a round kind: its sides are textured
 // cylindrically at that radius, geometry/texture_uv.hpp).
 //

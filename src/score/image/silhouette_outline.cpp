@@ -1,6 +1,7 @@
-// Silhouette outlines: unit shapes, the local -> pixel map of a primitive, the fast path (every
-// point in front and inside the guard band: project and snap) and the cut path (near plane /
-// ground, then the guard band, in double precision) for convex pieces and mesh triangles.
+// Silhouette outlines: the builder's unit shapes (a kind's own live in its K::OutlineScratch, built
+// here once per builder), the local -> pixel map of a primitive, the fast path (every point in
+// front and inside the guard band: project and snap) and the cut path (near plane / ground, then
+// the guard band, in double precision) for convex pieces and mesh triangles.
 #include "score/image/silhouette_outline.hpp"
 
 #include <algorithm>
@@ -51,6 +52,43 @@ std::vector<glm::dvec2> roundTable(int sides) {
         t.push_back({std::cos(a), std::sin(a)});
     }
     return t;
+}
+
+std::vector<glm::dvec2> squareTable() { return {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}; }
+
+/// The UV sphere: kRoundSides meridians, kRoundSides / 2 latitude bands, and the poles.
+UnitShape uvSphere() {
+    std::vector<glm::dvec2> latitudes;
+    const int bands = kRoundSides / 2;
+    for (int j = 1; j < bands; ++j) latitudes.push_back({std::sin(M_PI * j / bands), -std::cos(M_PI * j / bands)});
+    return ringShape(roundTable(kRoundSides), latitudes, {{{0, -1, 0}, 0}, {{0, 1, 0}, bands - 2}});
+}
+
+OutlineBuilder::RingTable squareRingTable() {
+    OutlineBuilder::RingTable t;
+    t.corners = squareTable();
+    t.normals = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    t.apothem = 1.0;
+    t.reach = std::sqrt(2.0);
+    return t;
+}
+
+/// The round rings' levels of detail: 16, 8, 4 corners (every 1st, 2nd, 4th).
+std::array<OutlineBuilder::RingTable, kRoundLevels> roundRingTables() {
+    const std::vector<glm::dvec2> round = roundTable(kRoundSides);
+    std::array<OutlineBuilder::RingTable, kRoundLevels> tables;
+    for (int level = 0; level < kRoundLevels; ++level) {
+        const int sides = kRoundSides >> level;
+        OutlineBuilder::RingTable& t = tables[std::size_t(level)];
+        for (int k = 0; k < sides; ++k) {
+            t.corners.push_back(round[std::size_t(k << level)]);
+            const double a = 2.0 * M_PI * (k + 0.5) / sides;
+            t.normals.push_back({std::cos(a), std::sin(a)});
+        }
+        t.apothem = std::cos(M_PI / sides);
+        t.reach = 1.0;
+    }
+    return tables;
 }
 
 /// Convex hull (counter-clockwise) of points in double precision; a pre-step only: the exact
@@ -111,38 +149,23 @@ double OutlineBuilder::projectedRadius(const Homogeneous& c, const Homogeneous& 
     return std::isfinite(r) ? r : INFINITY;
 }
 
-OutlineBuilder::OutlineBuilder(const Camera& camera)
-    : camera_(camera), width_(camera.width()), height_(camera.height()) {
-    const std::vector<glm::dvec2> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, round = roundTable(kRoundSides);
-    box_ = ringShape(square, {{1, -1}, {1, 1}}, {});
-    prism_ = ringShape(round, {{1, -1}, {1, 1}}, {});
-    pyramid_ = ringShape(round, {{1, -1}}, {{{0, 1, 0}, 0}});
-    std::vector<glm::dvec2> latitudes;
-    const int bands = kRoundSides / 2;
-    for (int j = 1; j < bands; ++j) latitudes.push_back({std::sin(M_PI * j / bands), -std::cos(M_PI * j / bands)});
-    uvSphere_ = ringShape(round, latitudes, {{{0, -1, 0}, 0}, {{0, 1, 0}, bands - 2}});
-    cone_ = prism_;
-    roof_ = box_;
-    std::vector<glm::dvec2> paraboloidRings;
-    for (int i = 0; i < kParaboloidRings; ++i) paraboloidRings.push_back({paraboloidRingRadius(i), paraboloidRingHeight(i)});
-    paraboloid_ = ringShape(round, paraboloidRings, {{{0, 1, 0}, kParaboloidRings - 1}});
-    sphereRing_ = roundTable(kSphereSides);
-    squareRing_.corners = square;
-    squareRing_.normals = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-    squareRing_.apothem = 1.0;
-    squareRing_.reach = std::sqrt(2.0);
-    for (int level = 0; level < kRoundLevels; ++level) {  // 16, 8, 4 corners: every 1st, 2nd, 4th
-        const int sides = kRoundSides >> level;
-        RingTable& t = roundRings_[level];
-        for (int k = 0; k < sides; ++k) {
-            t.corners.push_back(round[std::size_t(k << level)]);
-            const double a = 2.0 * M_PI * (k + 0.5) / sides;
-            t.normals.push_back({std::cos(a), std::sin(a)});
-        }
-        t.apothem = std::cos(M_PI / sides);
-        t.reach = 1.0;
-    }
+OutlineBuilder::UnitShape OutlineBuilder::roundShape(const std::vector<glm::dvec2>& rings,
+                                                     const std::vector<std::pair<glm::dvec3, int>>& loose) {
+    return ringShape(roundTable(kRoundSides), rings, loose);
 }
+
+OutlineBuilder::OutlineBuilder(const Camera& camera)
+    : camera_(camera),
+      width_(camera.width()),
+      height_(camera.height()),
+      box_(ringShape(squareTable(), {{1, -1}, {1, 1}}, {})),
+      prism_(roundShape({{1, -1}, {1, 1}}, {})),
+      pyramid_(roundShape({{1, -1}}, {{{0, 1, 0}, 0}})),
+      uvSphere_(uvSphere()),
+      squareRing_(squareRingTable()),
+      roundRings_(roundRingTables()),
+      sphereRing_(roundTable(kSphereSides)),
+      kindScratch_(makeKindOutlineScratch(*this)) {}
 
 bool OutlineBuilder::localMap(const Primitive& p, LocalMap& map) const {
     // local u -> world: centre + axes * (half * u); world -> homogeneous: camera rows / clip plane

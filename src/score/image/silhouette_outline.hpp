@@ -43,14 +43,17 @@
 // fixed-point range, so a piece reaching that far is clipped to the guard rectangle first (in
 // double precision); nothing inside the picture changes.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "score/image/camera.hpp"
+#include "shape/kinds.hpp"
 #include "shape/outline.hpp"
 #include "shape/primitive.hpp"
 
@@ -58,7 +61,8 @@ namespace shapevo {
 
 /// Builds outlines for one camera; holds the unit shapes and scratch space (no allocation once warm).
 /// Which pieces a primitive is drawn with is its kind's `outline` (shape/kinds/*.hpp, called with
-/// static dispatch from addPrepared); the builder gives it the services below "for the kinds".
+/// static dispatch from addPrepared); the builder gives it the services below "for the kinds",
+/// and keeps one K::OutlineScratch for each kind that declares one (scratch<K>()).
 class OutlineBuilder {
 public:
     explicit OutlineBuilder(const Camera& camera);
@@ -90,11 +94,7 @@ public:
     /// Ring corners (kRoundSides >> level) or sphere contact-curve points the last round primitive
     /// given to addPrepared was drawn with; 0 after boxes and meshes and on the cut path.
     int lastRoundPoints() const { return lastRoundPoints_; }
-    struct UnitShape {
-        std::vector<glm::dvec3> vertices;  ///< local (u) coordinates; rings first, then loose points
-        std::vector<std::uint16_t> edges;  ///< pairs of vertex indices
-        std::uint16_t rings = 0, ringSize = 0;
-    };
+    using UnitShape = shapevo::UnitShape;  ///< shape/outline.hpp
 
     /// A ring of a box / prism / frustum: radius-1 corners (x, z) in cyclic order and the outward
     /// normals (x, z) of the side faces between corners k and k + 1.
@@ -128,20 +128,25 @@ public:
     void setLastRoundPoints(int points) { lastRoundPoints_ = points; }
     /// The meshes given to prepare() (a Mesh primitive's mesh is there: prepare checked it).
     const std::vector<MeshShape>* preparedMeshes() const { return meshes_; }
-    /// Unit shapes: the box; the kRoundSides-gon prism and pyramid; the UV sphere (kRoundSides
-    /// meridians, kRoundSides / 2 bands); a scratch copy of the prism (a cone rescales its top
-    /// ring); the square ring of a box; (cos, sin) of the kSphereSides contact-curve angles.
+    /// Unit shapes: the box (bottom ring at vertices 0 .. 3, top ring 4 .. 7); the kRoundSides-gon
+    /// prism (bottom ring 0 .. kRoundSides - 1, then the top ring) and pyramid; the UV sphere
+    /// (kRoundSides meridians, kRoundSides / 2 bands); the square ring of a box; (cos, sin) of the
+    /// kSphereSides contact-curve angles. All are ready when the kinds' OutlineScratch is built.
     const UnitShape& boxShape() const { return box_; }
     const UnitShape& prismShape() const { return prism_; }
     const UnitShape& pyramidShape() const { return pyramid_; }
     const UnitShape& uvSphereShape() const { return uvSphere_; }
-    UnitShape& frustumScratch() { return cone_; }
-    /// A scratch copy of the box (a roof rescales its top ring: vertices 4 .. 7); the paraboloid's
-    /// polyhedron (kParaboloidRings rings, then the apex: shape/kinds/paraboloid.hpp).
-    UnitShape& roofScratch() { return roof_; }
-    const UnitShape& paraboloidShape() const { return paraboloid_; }
     const RingTable& squareRing() const { return squareRing_; }
     const std::vector<glm::dvec2>& sphereRing() const { return sphereRing_; }
+    /// A round unit shape: kRoundSides-gon rings at the given (radius, u.y), each joined to the
+    /// next, the corners at angles 2 pi k / kRoundSides from +x towards +z; then loose points, each
+    /// joined to every corner of the ring given with it (an apex, a pole).
+    static UnitShape roundShape(const std::vector<glm::dvec2>& rings, const std::vector<std::pair<glm::dvec3, int>>& loose);
+    /// Kind K's own silhouette state (K::OutlineScratch, built once with this builder; shape/kinds.hpp).
+    template <class K>
+    auto& scratch() {
+        return outlineScratch<K>(kindScratch_);
+    }
     /// Reusable scratch: homogeneous points; per mesh vertex its snapped point and whether it is
     /// in front and inside the guard band.
     std::vector<Homogeneous>& homogeneousScratch() { return h_; }
@@ -156,13 +161,12 @@ private:
     LocalMap map_;                              ///< of the prepared primitive
     const Primitive* prepared_ = nullptr;
     const std::vector<MeshShape>* meshes_ = nullptr;
-    UnitShape box_, prism_, pyramid_, uvSphere_;
-    RingTable squareRing_, roundRings_[kRoundLevels];
     int lastRoundPoints_ = 0;
-    UnitShape cone_;                  ///< scratch: the prism with its top ring scaled by the taper
-    UnitShape roof_;                  ///< scratch: the box with its top ring scaled by the fractions
-    UnitShape paraboloid_;            ///< the paraboloid's inscribed polyhedron (shape/kinds/paraboloid.hpp)
+    UnitShape box_, prism_, pyramid_, uvSphere_;
+    RingTable squareRing_;
+    std::array<RingTable, kRoundLevels> roundRings_;  ///< kRoundSides >> level corners
     std::vector<glm::dvec2> sphereRing_;  ///< (cos, sin) of the kSphereSides contact-curve angles
+    KindOutlineScratch kindScratch_;      ///< built from *this: declared after the shapes above
     std::vector<Homogeneous> h_, cut_;
     std::vector<glm::dvec2> xy_, hull_, clipped_;
     std::vector<FixedPoint> snapped_;   ///< mesh vertices, snapped once per primitive

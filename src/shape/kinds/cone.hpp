@@ -129,6 +129,13 @@ struct ConeKind {
     static void voxelize(const Primitive& p, const std::vector<MeshShape>*, Rows& rows, Counts& counts) {
         voxelizeChords(ConeSolid::from(p), rows, counts);
     }
+    /// Its silhouette state, one per outline builder: the builder's prism, whose top ring (vertices
+    /// kRoundSides .. 2 kRoundSides - 1) `outline` rescales by the taper.
+    struct OutlineScratch {
+        UnitShape frustum;
+        template <class Builder>
+        explicit OutlineScratch(const Builder& b) : frustum(b.prismShape()) {}
+    };
     /// The round two-ring fast path with the top ring scaled by the taper; else the pyramid (taper
     /// not > 0) or the prism with its top ring scaled, as one convex piece.
     template <class Builder>
@@ -139,7 +146,7 @@ struct ConeKind {
             b.addConvex(map, b.pyramidShape(), out);
         } else {
             const auto& prism = b.prismShape();
-            auto& cone = b.frustumScratch();
+            UnitShape& cone = b.template scratch<ConeKind>().frustum;
             const std::size_t n = prism.ringSize;
             for (std::size_t k = 0; k < n; ++k) {
                 const glm::dvec3& v = prism.vertices[n + k];

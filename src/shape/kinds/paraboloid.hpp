@@ -19,6 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "shape/chord_rows.hpp"
 #include "shape/outline.hpp"
 #include "shape/surface.hpp"
@@ -105,10 +107,23 @@ struct ParaboloidKind {
     static void voxelize(const Primitive& p, const std::vector<MeshShape>*, Rows& rows, Counts& counts) {
         voxelizeChords(ParaboloidSolid::from(p), rows, counts);
     }
+    /// Its silhouette state, one per outline builder: the polyhedron as a unit shape
+    /// (kParaboloidRings round rings, then the apex joined to the last ring).
+    struct OutlineScratch {
+        UnitShape polyhedron;
+        template <class Builder>
+        explicit OutlineScratch(const Builder&) : polyhedron(Builder::roundShape(rings(), {{{0.0, 1.0, 0.0}, kParaboloidRings - 1}})) {}
+        /// (radius, u.y) of each ring.
+        static std::vector<glm::dvec2> rings() {
+            std::vector<glm::dvec2> r;
+            for (int i = 0; i < kParaboloidRings; ++i) r.push_back({paraboloidRingRadius(i), paraboloidRingHeight(i)});
+            return r;
+        }
+    };
     /// The polyhedron's kParaboloidRings * kRoundSides + 1 vertices as one convex piece.
     template <class Builder>
     static void outline(Builder& b, const typename Builder::LocalMap& map, const Primitive&, Outline& out) {
-        b.addConvex(map, b.paraboloidShape(), out);
+        b.addConvex(map, b.template scratch<ParaboloidKind>().polyhedron, out);
     }
     /// Textures: its sides are mapped cylindrically at this mean radius, its radius averaged over
     /// its height (geometry/texture_uv.hpp).

@@ -142,6 +142,13 @@ struct RoofKind {
         voxelizeChords(RoofSolid::from(p), rows, counts);
     }
 
+    /// Its silhouette state, one per outline builder: the builder's box, whose top ring (vertices
+    /// 4 .. 7) `outline` rescales by the fractions.
+    struct OutlineScratch {
+        UnitShape roof;
+        template <class Builder>
+        explicit OutlineScratch(const Builder& b) : roof(b.boxShape()) {}
+    };
     /// Equal fractions: the square two-ring fast path (a square frustum, or a pyramid for 0); else
     /// (or when cut) the 8 corners, top ring scaled, as one convex piece.
     template <class Builder>
@@ -150,7 +157,7 @@ struct RoofKind {
         const double tx = roofFraction(params.taper), tz = roofFraction(params.taperZ);
         if (tx == tz && b.addRingsFast(map, &b.squareRing(), tx, out)) return;
         const auto& box = b.boxShape();
-        auto& roof = b.roofScratch();
+        UnitShape& roof = b.template scratch<RoofKind>().roof;
         for (std::size_t k = 4; k < 8; ++k) {
             const glm::dvec3& v = box.vertices[k];  // the top ring: k = 4 .. 7
             roof.vertices[k] = {v.x * tx, v.y, v.z * tz};
