@@ -9,6 +9,7 @@
 
 #include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
+#include "score/volume/vdb_write.hpp"
 #include "score/volume/voxelizer.hpp"
 
 namespace shapevo {
@@ -53,15 +54,7 @@ void writeModelVdb(const Geometry& geometry, const GridSpec& grid, const std::st
         throw InputError(path, "", "cannot voxelize the model: the target grid is empty");
     openvdb::initialize();
     const openvdb::FloatGrid::Ptr vdb = modelGrid(geometry, grid);
-    writeAtomically(path, [&](const std::string& temp) {
-        try {
-            openvdb::io::File file(temp);
-            file.write(openvdb::GridCPtrVec{vdb});
-            file.close();
-        } catch (const openvdb::Exception& e) {
-            throw InputError(path, "", std::string("cannot write: ") + e.what());
-        }
-    });
+    writeVdbGrid(vdb, path);
 }
 
 }  // namespace shapevo

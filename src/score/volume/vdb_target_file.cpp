@@ -19,6 +19,7 @@
 #include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
 #include "score/volume/vdb_bake.hpp"
+#include "score/volume/vdb_write.hpp"
 
 namespace shapevo {
 
@@ -100,18 +101,7 @@ TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::str
     grid->insertMeta("source", openvdb::StringMetadata(sourcePath));
     grid->insertMeta("shapevo_role", openvdb::StringMetadata("fill"));
 
-    writeAtomically(
-        outPath,
-        [&](const std::string& tmp) {
-            try {
-                openvdb::io::File file(tmp);
-                file.write(openvdb::GridCPtrVec{grid});
-                file.close();
-            } catch (const std::exception& e) {
-                throw InputError(outPath, "", std::string("cannot write: ") + e.what());
-            }
-        },
-        overwrite ? Replace::Always : Replace::Never);
+    writeVdbGrid(grid, outPath, overwrite ? Replace::Always : Replace::Never);
     return stats;
 }
 
