@@ -92,9 +92,10 @@ TEST(ReadmeDemo, ThePrintedBlockIsWhatTheDemoPrints) {
     ASSERT_GE(block.lines.size(), 3u);
     TempDir dir;
     // From the repository root, as a user types it; only the output folder differs. The block is
-    // the run's standard output (a sanitizer build adds its own report on stderr at exit).
-    const auto r = runCommand("cd " + std::string(SHAPEVO_SOURCE_DIR) + " && " + SHAPEVO_BIN + " run configs/spaceship.toml --out " +
-                              dir.file("run") + " 2>/dev/null");
+    // the run's standard output: its stderr is dropped inside the subshell (runCommand adds 2>&1
+    // after the command), so a sanitizer build's own report at exit does not count.
+    const auto r = runCommand("(cd " + std::string(SHAPEVO_SOURCE_DIR) + " && " + SHAPEVO_BIN + " run configs/spaceship.toml --out " +
+                              dir.file("run") + " 2>/dev/null)");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string mismatch = readmeDemoMismatch(block.lines, test::splitLines(r.output));
     EXPECT_EQ(mismatch, "") << "README.md's first run is stale; paste what the command prints now:\n" << r.output;
