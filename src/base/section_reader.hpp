@@ -8,9 +8,13 @@
 // key (or "--set" for a value given on the command line); every key asked for (has() too) counts
 // as known, so a key no reader asks for is reported as unknown. Messages name keys as
 // "section.key".
+// Every read states the key's meaning in one or two sentences (`meaning`): the config reference
+// (`shapevo reference config`, docs/reference/config.md) is made from these calls, with the
+// value the variable held before the read as the key's default, so it cannot drift from the code.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -20,20 +24,25 @@ namespace shapevo {
 
 class SectionReader {
 public:
-    virtual void number(std::string_view key, double& value, double lo, double hi) = 0;
+    virtual void number(std::string_view key, double& value, double lo, double hi, std::string_view meaning) = 0;
     /// A whole number in [lo, hi].
-    virtual void count(std::string_view key, std::uint32_t& value, double lo, double hi) = 0;
+    virtual void count(std::string_view key, std::uint32_t& value, double lo, double hi, std::string_view meaning) = 0;
+    /// A whole number in [0, 2^63 - 1] (TOML's largest integer), read exactly (not through a double).
+    virtual void wholeNumber64(std::string_view key, std::uint64_t& value, std::string_view meaning) = 0;
     /// true or false.
-    virtual void flag(std::string_view key, bool& value) = 0;
-    virtual void string(std::string_view key, std::string& value) = 0;
+    virtual void flag(std::string_view key, bool& value, std::string_view meaning) = 0;
+    virtual void string(std::string_view key, std::string& value, std::string_view meaning) = 0;
     /// A string or an array of strings (empty when the key is absent).
-    virtual std::vector<std::string> strings(std::string_view key) = 0;
+    virtual std::vector<std::string> strings(std::string_view key, std::string_view meaning) = 0;
     /// An array of exactly values.size() numbers; returns whether the key is present.
-    virtual bool numbers(std::string_view key, std::span<double> values) = 0;
+    virtual bool numbers(std::string_view key, std::span<double> values, std::string_view meaning) = 0;
+    /// A table of finite numbers (NAME = 1.5, ...) into `values`, keyed by name; returns whether
+    /// the key is present.
+    virtual bool numberTable(std::string_view key, std::map<std::string, double>& values, std::string_view meaning) = 0;
     /// numbers() into a glm vector (dvec2, dvec3).
     template <class Vec>
-    bool vec(std::string_view key, Vec& v) {
-        return numbers(key, std::span<double>(&v[0], std::size_t(Vec::length())));
+    bool vec(std::string_view key, Vec& v, std::string_view meaning) {
+        return numbers(key, std::span<double>(&v[0], std::size_t(Vec::length())), meaning);
     }
     /// Whether the key is in the section (it counts as known).
     virtual bool has(std::string_view key) = 0;

@@ -7,7 +7,7 @@ namespace shapevo {
 
 namespace {
 
-constexpr std::array<CommandEntry, 9> kCommands{{
+constexpr std::array<CommandEntry, 10> kCommands{{
     {"run", "Evolve a model: shapevo run CONFIG.toml", true, RunCommand::addOptions, RunCommand::run},
     {"sample",
      "Write random derivations of a grammar (no evolution): every sibling position of a slot is expressed with the slot's "
@@ -36,6 +36,10 @@ constexpr std::array<CommandEntry, 9> kCommands{{
      "Draw a shaded picture of a model (PNG; on the CPU, no display needed): shapevo render MODEL|RUN_DIR|CHECKPOINT -o "
      "view.png",
      false, RenderCommand::addOptions, RenderCommand::run},
+    {"reference",
+     "Print the reference written from the code: every config key (config), every command's --help (commands) or the man "
+     "page (man): shapevo reference config",
+     false, ReferenceCommand::addOptions, ReferenceCommand::run},
 }};
 
 }  // namespace

@@ -1,5 +1,5 @@
 // shapevo command line: the commands of cli/commands.hpp (run, sample, target, translate,
-// evaluate, resume, inspect, export, render), one file each in cli/commands/. Bad input
+// evaluate, resume, inspect, export, render, reference), one file each in cli/commands/. Bad input
 // (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
 // other failures exit with code 1. Under mpirun every rank runs this; only the commands the
 // table marks (run and resume) use more than one rank. Results go to stdout; errors, warnings
@@ -13,6 +13,7 @@
 
 #include "base/input_error.hpp"
 #include "base/keep_freed_memory.hpp"
+#include "cli/app.hpp"
 #include "cli/commands.hpp"
 #include "cli/log_router.hpp"
 #include "island/mpi_session.hpp"
@@ -23,16 +24,8 @@ int main(int argc, char** argv) {
     using namespace shapevo;
     keepFreedMemory();
     MpiSession mpi(argc, argv);
-    CLI::App app{"shapevo: evolve procedural models (grammars) until they match a target: a volume to fill or a picture to cover.\n"
-                 "Guide: docs/README.md; grammar language: grammars/README.md; every option: shapevo COMMAND --help"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", "shapevo 0.1.0");
-    std::vector<CLI::App*> subcommands;  // one per entry of commands()
-    for (const CommandEntry& c : commands()) {
-        subcommands.push_back(app.add_subcommand(std::string(c.name), std::string(c.summary)));
-        c.addOptions(*subcommands.back());
-    }
-
+    const std::unique_ptr<CLI::App> parser = makeApp();
+    CLI::App& app = *parser;
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -46,8 +39,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const CommandEntry* command = nullptr;
-    for (std::size_t i = 0; i < subcommands.size(); ++i)
-        if (*subcommands[i]) command = &commands()[i];
+    for (std::size_t i = 0; i < commands().size(); ++i)
+        if (*app.get_subcommand(std::string(commands()[i].name))) command = &commands()[i];
     if (command->manyRanks) installStopSignalHandlers();  // early: a signal while loading must not kill a rank
     if (mpi.size() > 1 && !command->manyRanks) {
         if (mpi.rank() == 0)

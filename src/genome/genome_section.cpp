@@ -4,8 +4,10 @@
 namespace shapevo {
 
 void readGenomeSection(SectionReader& r, GenomeLimits& limits) {
-    r.count("max_genes", limits.maxGenes, 1, 1e7);
-    r.count("max_primitives", limits.maxPrimitives, 1, 1 << 26);
+    r.count("max_genes", limits.maxGenes, 1, 1e7, "no operator makes a chromosome longer than this");
+    r.count("max_primitives", limits.maxPrimitives, 1, 1 << 26,
+            "a derivation stops after this many primitives; a model that reaches it is scored on those and counted "
+            "(truncated_models in summary.json)");
 }
 
 }  // namespace shapevo

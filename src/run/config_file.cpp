@@ -17,6 +17,7 @@
 
 #include <toml++/toml.h>
 
+#include "base/format_double.hpp"
 #include "base/input_error.hpp"
 #include "base/section_reader.hpp"
 #include "checkpoint/checkpoint_section.hpp"
@@ -170,6 +171,21 @@ public:
         }
         return true;
     }
+    /// A table of finite numbers into `out`; returns whether the key is present.
+    bool numberTable(const toml::table* t, const std::string& sec, const std::string& k, std::map<std::string, double>& out) {
+        const toml::node* n = key(t, sec, k);
+        if (!n) return false;
+        if (!n->is_table()) fail(*n, sec + "." + k + " must be a table of numbers ([" + sec + "." + k + "] NAME = 1.5)");
+        for (const auto& [name, value] : *n->as_table()) {
+            double v = 0;
+            if (auto i = value.value_exact<std::int64_t>()) v = double(*i);
+            else if (auto d = value.value_exact<double>()) v = *d;
+            else fail(value, sec + "." + k + "." + std::string(name.str()) + " must be a number");
+            if (!std::isfinite(v)) fail(value, sec + "." + k + "." + std::string(name.str()) + " must be a finite number");
+            out[std::string(name.str())] = v;
+        }
+        return true;
+    }
     /// Every key present must have been asked for.
     void rejectUnknown() const {
         for (const auto& [k, v] : root_) {
@@ -250,19 +266,60 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     t->insert_or_assign(leaf, std::move(*parsed.get("v")));
 }
 
+/// A key's default as TOML writes it, for the reference.
+std::string tomlText(double v) { return std::isnan(v) ? "" : formatDouble(v); }  // NaN: no default
+std::string tomlText(const std::string& v) { return v.empty() ? "" : "\"" + v + "\""; }
+std::string tomlText(std::span<const double> v) {
+    for (double x : v)
+        if (std::isnan(x)) return "";
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + formatDouble(v[i]);
+    return out + "]";
+}
+std::string rangeText(double lo, double hi) {
+    std::ostringstream s;
+    s << "[" << lo << ", " << hi << "]";
+    return s.str();
+}
+
 /// A SectionReader over one [section] of the config: the stages read their own keys through it.
+/// With `keys`, it also records each key it is asked for (the first time).
 class TomlSection final : public SectionReader {
 public:
-    TomlSection(Reader& rd, std::string section, std::filesystem::path folder)
-        : rd_(rd), section_(std::move(section)), t_(rd.section(section_)), folder_(std::move(folder)) {}
-    void number(std::string_view key, double& v, double lo, double hi) override { rd_.number(t_, section_, std::string(key), v, lo, hi); }
-    void count(std::string_view key, std::uint32_t& v, double lo, double hi) override {
+    TomlSection(Reader& rd, std::string section, std::filesystem::path folder, std::vector<ConfigKeyRecord>* keys)
+        : rd_(rd), section_(std::move(section)), t_(rd.section(section_)), folder_(std::move(folder)), keys_(keys) {}
+    void number(std::string_view key, double& v, double lo, double hi, std::string_view meaning) override {
+        record(key, "number", tomlText(v), rangeText(lo, hi), meaning);
         rd_.number(t_, section_, std::string(key), v, lo, hi);
     }
-    void flag(std::string_view key, bool& v) override { rd_.boolean(t_, section_, std::string(key), v); }
-    void string(std::string_view key, std::string& v) override { rd_.string(t_, section_, std::string(key), v); }
-    std::vector<std::string> strings(std::string_view key) override { return rd_.strings(t_, section_, std::string(key)); }
-    bool numbers(std::string_view key, std::span<double> v) override { return rd_.numbers(t_, section_, std::string(key), v); }
+    void count(std::string_view key, std::uint32_t& v, double lo, double hi, std::string_view meaning) override {
+        record(key, "whole number", tomlText(v), rangeText(lo, hi), meaning);
+        rd_.number(t_, section_, std::string(key), v, lo, hi);
+    }
+    void wholeNumber64(std::string_view key, std::uint64_t& v, std::string_view meaning) override {
+        record(key, "whole number", std::to_string(v), "[0, 9223372036854775807]", meaning);
+        rd_.wholeNumber64(t_, section_, std::string(key), v);
+    }
+    void flag(std::string_view key, bool& v, std::string_view meaning) override {
+        record(key, "true or false", v ? "true" : "false", "", meaning);
+        rd_.boolean(t_, section_, std::string(key), v);
+    }
+    void string(std::string_view key, std::string& v, std::string_view meaning) override {
+        record(key, "string", tomlText(v), "", meaning);
+        rd_.string(t_, section_, std::string(key), v);
+    }
+    std::vector<std::string> strings(std::string_view key, std::string_view meaning) override {
+        record(key, "string or array of strings", "[]", "", meaning);
+        return rd_.strings(t_, section_, std::string(key));
+    }
+    bool numbers(std::string_view key, std::span<double> v, std::string_view meaning) override {
+        record(key, "array of " + std::to_string(v.size()) + " numbers", tomlText(v), "", meaning);
+        return rd_.numbers(t_, section_, std::string(key), v);
+    }
+    bool numberTable(std::string_view key, std::map<std::string, double>& v, std::string_view meaning) override {
+        record(key, "table of numbers", "{}", "", meaning);
+        return rd_.numberTable(t_, section_, std::string(key), v);
+    }
     bool has(std::string_view key) override { return rd_.key(t_, section_, std::string(key)) != nullptr; }
     bool present() const override { return t_ != nullptr; }
     const std::string& file() const override { return rd_.path(); }
@@ -285,66 +342,69 @@ public:
     void located(const std::function<void()>& check) const override { rd_.located(check); }
 
 private:
+    void record(std::string_view key, std::string type, std::string defaultValue, std::string range, std::string_view meaning) {
+        if (!keys_) return;
+        for (const ConfigKeyRecord& k : *keys_)
+            if (k.section == section_ && k.key == key) return;
+        keys_->push_back({section_, std::string(key), std::move(type), std::move(defaultValue), std::move(range), std::string(meaning)});
+    }
+
     Reader& rd_;
     std::string section_;
     const toml::table* t_;
     std::filesystem::path folder_;
+    std::vector<ConfigKeyRecord>* keys_;
 };
 
 /// The config's sections, each opened (and made known) when a stage first asks for it.
 class TomlConfig final : public ConfigReader {
 public:
-    TomlConfig(Reader& rd, std::filesystem::path folder) : rd_(rd), folder_(std::move(folder)) {}
+    TomlConfig(Reader& rd, std::filesystem::path folder, std::vector<ConfigKeyRecord>* keys)
+        : rd_(rd), folder_(std::move(folder)), keys_(keys) {}
     SectionReader& section(std::string_view name) override {
         for (const auto& s : sections_)
             if (s.first == name) return *s.second;
-        sections_.emplace_back(std::string(name), std::make_unique<TomlSection>(rd_, std::string(name), folder_));
+        sections_.emplace_back(std::string(name), std::make_unique<TomlSection>(rd_, std::string(name), folder_, keys_));
         return *sections_.back().second;
     }
 
 private:
     Reader& rd_;
     std::filesystem::path folder_;
+    std::vector<ConfigKeyRecord>* keys_;
     std::vector<std::pair<std::string, std::unique_ptr<TomlSection>>> sections_;
 };
 
 /// [run]: name, seed, threads, out, wall_time, target_fitness.
-void readRunSection(Reader& rd, RunSettings& r) {
-    const toml::table* run = rd.section("run");
-    rd.string(run, "run", "name", r.name);
-    if (const std::string problem = runNameProblem(r.name); !problem.empty())
-        rd.fail(*run->get("name"), "run.name = \"" + shortened(r.name) + "\" " + problem +
-                                       "; it names the output folder runs/<name>, so it must be a plain name: 1-" +
-                                       std::to_string(kMaxRunNameLength) +
-                                       " bytes, no '/', '\\' or control character, not starting with '.' or '-'");
-    rd.wholeNumber64(run, "run", "seed", r.seed);
-    rd.number(run, "run", "threads", r.threads, 0, 4096);
-    rd.string(run, "run", "out", r.out);
-    rd.number(run, "run", "wall_time", r.wallTime, 0, 1e9);
-    if (rd.key(run, "run", "target_fitness")) {
-        double t = 0;
-        rd.number(run, "run", "target_fitness", t, -1e300, 1e300);
-        r.targetFitness = t;
-    }
+void readRunSection(SectionReader& r, RunSettings& run) {
+    r.string("name", run.name, "names the default output folder runs/<name>: a plain name of 1-128 bytes, no '/', '\\' or "
+                                "control character, not starting with '.' or '-'");
+    if (const std::string problem = runNameProblem(run.name); !problem.empty())
+        r.fail("name", "run.name = \"" + shortened(run.name) + "\" " + problem +
+                           "; it names the output folder runs/<name>, so it must be a plain name: 1-" +
+                           std::to_string(kMaxRunNameLength) +
+                           " bytes, no '/', '\\' or control character, not starting with '.' or '-'");
+    r.wholeNumber64("seed", run.seed, "the run's seed (--seed overrides); one seed gives one run on any machine and thread count");
+    std::uint32_t threads = std::uint32_t(run.threads);
+    r.count("threads", threads, 0, 4096,
+            "evaluation threads per rank, 0 = all cores (--threads overrides); more than the machine gives are cut to what it "
+            "gives; results do not depend on it");
+    run.threads = int(threads);
+    r.string("out", run.out, "the output folder (--out overrides); default runs/<name>");
+    r.number("wall_time", run.wallTime, 0, 1e9, "stop (with a checkpoint) after this many seconds; 0 = no limit");
+    double targetFitness = std::nan("");
+    r.number("target_fitness", targetFitness, -1e300, 1e300, "stop when any island's best fitness reaches it; none when absent");
+    if (!std::isnan(targetFitness)) run.targetFitness = targetFitness;
 }
 
 /// [grammar]: file (resolved against the config's folder) and [grammar.attr] NAME = number.
-void readGrammarSection(Reader& rd, RunSettings& r, const std::filesystem::path& folder) {
-    const toml::table* grammar = rd.section("grammar");
-    rd.string(grammar, "grammar", "file", r.grammarPath);
-    if (r.grammarPath.empty()) rd.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
-    if (!std::filesystem::path(r.grammarPath).is_absolute()) r.grammarPath = (folder / r.grammarPath).lexically_normal().string();
-    if (const toml::node* attrs = rd.key(grammar, "grammar", "attr")) {
-        if (!attrs->is_table()) rd.fail(*attrs, "grammar.attr must be a table of numbers ([grammar.attr] NAME = 1.5)");
-        for (const auto& [name, value] : *attrs->as_table()) {
-            double v = 0;
-            if (auto i = value.value_exact<std::int64_t>()) v = double(*i);
-            else if (auto d = value.value_exact<double>()) v = *d;
-            else rd.fail(value, "grammar.attr." + std::string(name.str()) + " must be a number");
-            if (!std::isfinite(v)) rd.fail(value, "grammar.attr." + std::string(name.str()) + " must be a finite number");
-            r.grammarAttrs[std::string(name.str())] = v;
-        }
-    }
+void readGrammarSection(SectionReader& r, RunSettings& run) {
+    r.string("file", run.grammarPath,
+             "the grammar file (.grammar, or a CastleMaker rule file .rule), relative to the config's folder; required");
+    if (run.grammarPath.empty()) r.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
+    run.grammarPath = r.resolvePath(run.grammarPath);
+    r.numberTable("attr", run.grammarAttrs,
+                  "values for the grammar's attrs ([grammar.attr] NAME = 1.5), replacing those the grammar file gives");
 }
 
 /// Checks across stages, after each has read its own keys: the initial lengths fit the genome's
@@ -392,7 +452,8 @@ void absoluteShellPaths(toml::table& root) {
 
 }  // namespace
 
-RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+RunSettings parseConfig(const std::string& text, const std::string& path, const std::vector<std::string>& overrides,
+                        std::vector<ConfigKeyRecord>* keys) {
     toml::table root;
     try {
         root = toml::parse(text, path);
@@ -413,10 +474,10 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     }
     Reader rd(root, path);
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    TomlConfig config(rd, folder);
+    TomlConfig config(rd, folder, keys);
     // Each stage reads its own section; the order is the order errors are found in.
-    readRunSection(rd, r);
-    readGrammarSection(rd, r, folder);
+    readRunSection(config.section("run"), r);
+    readGrammarSection(config.section("grammar"), r);
     r.target = readTargetSettings(config);
     readScoreSection(config.section("score"), r.fitness, r.incremental);
     readGenomeSection(config.section("genome"), r.limits);

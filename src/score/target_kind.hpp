@@ -125,6 +125,7 @@ struct TargetKind {
     std::span<const std::string_view> shellRelativeFiles;
     std::string_view noun;        ///< "a volume target", "an image target" (messages)
     std::string_view namedBy;     ///< how a config names it: "image = \"FILE.png\""
+    std::string_view namingLine;  ///< one [target] line that names it, for the config reference: image = "target.png"
     std::string_view keysPhrase;  ///< its keys in "... cannot be combined with fill/avoid volumes or a grid"
     std::string_view iouName;     ///< "voxel IoU", "silhouette IoU": progress line, curve plots, final line
     std::string_view iouKey;      ///< summary.json's key for it and evaluate's: "voxel_iou", "silhouette_iou"

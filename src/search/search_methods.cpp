@@ -18,31 +18,48 @@ constexpr double kBig = 1e12;
 
 void readNothing(SectionReader&, SearchSettings&) {}
 
-void readSmc(SectionReader& r, SearchSettings& s) { r.number("smc_temperature", s.smc.temperature, 1e-300, kBig); }
+void readSmc(SectionReader& r, SearchSettings& s) {
+    r.number("smc_temperature", s.smc.temperature, 1e-300, kBig, "SMC and SOSMC: weights are exp(fitness gain / T)");
+}
 
 void readRjmcmc(SectionReader& r, SearchSettings& s) {
     RjmcmcSettings& m = s.rjmcmc;
-    r.number("rjmcmc_jump_probability", m.jumpProbability, 0, 1);
-    r.count("rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6);
-    r.number("rjmcmc_temperature", m.temperature, 1e-300, kBig);
-    r.number("rjmcmc_temperature_ratio", m.temperatureRatio, 1, kBig);
-    r.number("rjmcmc_annealing", m.annealing, 1, kBig);
-    r.count("rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9);
-    r.number("rjmcmc_depth_bias", m.depthBias, 1e-6, 1);
-    r.flag("rjmcmc_delayed_rejection", m.delayedRejection);
+    r.number("rjmcmc_jump_probability", m.jumpProbability, 0, 1,
+             "RJMCMC: probability that a proposal is a jump (regrow) rather than a diffusion");
+    r.count("rjmcmc_diffusion_alters", m.diffusionAlters, 1, 1e6, "RJMCMC: alter mutations per diffusion move");
+    r.number("rjmcmc_temperature", m.temperature, 1e-300, kBig,
+             "RJMCMC: the coldest chain's temperature at generation 1");
+    r.number("rjmcmc_temperature_ratio", m.temperatureRatio, 1, kBig,
+             "RJMCMC: hottest chain's temperature / coldest chain's");
+    r.number("rjmcmc_annealing", m.annealing, 1, kBig,
+             "RJMCMC: every temperature is divided by this once per rjmcmc_annealing_interval generations (1: no "
+             "annealing)");
+    r.count("rjmcmc_annealing_interval", m.annealingInterval, 1, 1e9, "RJMCMC: generations between annealing steps");
+    r.number("rjmcmc_depth_bias", m.depthBias, 1e-6, 1,
+             "RJMCMC: a jump picks a non-terminal at depth d with weight bias^d (1: uniform; smaller favours the root)");
+    r.flag("rjmcmc_delayed_rejection", m.delayedRejection,
+           "RJMCMC: try a second proposal after a rejected jump (off in the authors' code)");
 }
 
 void readHybrid(SectionReader& r, SearchSettings& s) {
     HybridSettings& h = s.hybrid;
-    r.count("hybrid_islands", h.islands, 1, 1e6);
-    r.count("hybrid_migration_interval", h.migrationInterval, 0, 1e9);
-    r.count("hybrid_restart_interval", h.restartInterval, 0, 1e9);
-    r.count("hybrid_scout_interval", h.scoutInterval, 0, 1e9);
-    r.number("hybrid_mutation", h.mutation, 0, 1);
-    r.number("hybrid_regrow", h.regrow, 0, 1);
-    r.number("hybrid_refine", h.refine, 0, 1);
-    r.number("hybrid_refine_jump", h.refineJump, 0, 1);
-    r.number("hybrid_refine_nudge", h.refineNudge, 0, 1);
+    r.count("hybrid_islands", h.islands, 1, 1e6, "hybrid: sub-populations of one process (at most population / 2)");
+    r.count("hybrid_migration_interval", h.migrationInterval, 0, 1e9,
+            "hybrid: generations between migrations among its sub-populations (0: never)");
+    r.count("hybrid_restart_interval", h.restartInterval, 0, 1e9,
+            "hybrid: generations between restarts of the worst sub-population (0: never)");
+    r.count("hybrid_scout_interval", h.scoutInterval, 0, 1e9,
+            "hybrid: generations a scout sub-population (the last, with 3 or more) evolves alone before it replaces "
+            "the worst if better and starts again (0: no scout)");
+    r.number("hybrid_mutation", h.mutation, 0, 1,
+             "hybrid: probability that a pair is mutated rather than crossed over");
+    r.number("hybrid_regrow", h.regrow, 0, 1, "hybrid: share of mutations that regrow a subtree");
+    r.number("hybrid_refine", h.refine, 0, 1,
+             "hybrid: local moves of the elites per generation, per sub-population member");
+    r.number("hybrid_refine_jump", h.refineJump, 0, 1, "hybrid: probability that a local move is a regrow");
+    r.number("hybrid_refine_nudge", h.refineNudge, 0, 1,
+             "hybrid: on odd sub-populations, probability that a local move that is not a regrow is a nudge (else an "
+             "alter)");
 }
 
 std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const PopulationSettings& p, const GaSettings& ga,

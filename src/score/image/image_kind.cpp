@@ -17,9 +17,9 @@ namespace shapevo {
 namespace {
 
 /// A whole number in [lo, hi] (lo >= 0) into an int.
-void readInt(SectionReader& r, std::string_view key, int& value, double lo, double hi) {
+void readInt(SectionReader& r, std::string_view key, int& value, double lo, double hi, std::string_view meaning) {
     std::uint32_t v = std::uint32_t(value);
-    r.count(key, v, lo, hi);
+    r.count(key, v, lo, hi, meaning);
     value = int(v);
 }
 
@@ -27,23 +27,30 @@ void readInt(SectionReader& r, std::string_view key, int& value, double lo, doub
 /// Camera::compile now (located errors) and again when the target is loaded.
 void readCamera(SectionReader& r, CameraSpec& c) {
     std::string projection = "perspective";
-    r.string("projection", projection);
+    r.string("projection", projection,
+             "\"perspective\", \"orthographic\" (parallel rays) or \"shadow\" (the model's shadow on a ground plane)");
     if (projection == "perspective") c.projection = Projection::Perspective;
     else if (projection == "orthographic") c.projection = Projection::Orthographic;
     else if (projection == "shadow") c.projection = Projection::Shadow;
     else r.fail("projection", "camera.projection must be \"perspective\", \"orthographic\" or \"shadow\", got \"" + shortened(projection) + "\"");
-    readInt(r, "width", c.width, 1, 16384);
-    readInt(r, "height", c.height, 1, 16384);
-    r.vec("eye", c.eye);
-    r.vec("look_at", c.lookAt);
-    r.vec("up", c.up);
-    r.number("fov_degrees", c.fovDegrees, -1e9, 1e9);
-    r.number("view_height", c.viewHeight, -1e12, 1e12);
-    r.number("near", c.near, -1e12, 1e12);
-    r.vec("light", c.light);
-    r.number("ground_y", c.groundY, -1e12, 1e12);
-    r.vec("ground_min", c.groundMin);
-    r.vec("ground_max", c.groundMax);
+    readInt(r, "width", c.width, 1, 16384,
+            "picture width in pixels (a target picture is fitted into width x height, see target.fit)");
+    readInt(r, "height", c.height, 1, 16384, "picture height in pixels");
+    r.vec("eye", c.eye, "perspective and orthographic: the camera's position");
+    r.vec("look_at", c.lookAt, "perspective and orthographic: the point the camera looks at");
+    r.vec("up", c.up, "perspective and orthographic: the direction that is up in the picture");
+    r.number("fov_degrees", c.fovDegrees, -1e9, 1e9, "perspective: vertical field of view in degrees, strictly between 0 and 180");
+    r.number("view_height", c.viewHeight, -1e12, 1e12, "orthographic: world units across the picture's height (positive)");
+    r.number("near", c.near, -1e12, 1e12,
+             "perspective: nothing closer to the eye than this is seen (at least 1e-9; there is no far plane)");
+    r.vec("light", c.light, "shadow: the direction of the light's rays");
+    r.number("ground_y", c.groundY, -1e12, 1e12,
+             "shadow: the ground plane y = ground_y; only what is above it casts a shadow");
+    r.vec("ground_min", c.groundMin,
+          "shadow: the (x, z) corner of the ground rectangle that fills the picture (x to the right, z downwards)");
+    r.vec("ground_max", c.groundMax,
+          "shadow: the opposite (x, z) corner; a rectangle whose aspect differs from width / height is extended about "
+          "its centre");
     r.located([&] { Camera::compile(c, r.file(), "camera"); });
 }
 
@@ -167,16 +174,23 @@ constexpr std::array<std::string_view, 1> kImageExportFormats{"png"};
 std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
     auto s = std::make_unique<ImageTargetSettings>();
     PixelRule& rule = s->rule;
-    r.string("image", s->image_);
-    readInt(r, "hit_min", rule.hitMin, 0, 255);
-    readInt(r, "hit_max", rule.hitMax, 0, 255);
-    readInt(r, "avoid_min", rule.avoidMin, 0, 255);
-    readInt(r, "avoid_max", rule.avoidMax, 0, 255);
-    readInt(r, "alpha_threshold", rule.alphaThreshold, 0, 256);
+    r.string("image", s->image_,
+             "image: the target picture, a PNG (grey, grey + alpha, palette, RGB or RGBA, 8 or 16 bits); relative to "
+             "the config's folder (to the current directory when given with --set); names the image kind");
+    readInt(r, "hit_min", rule.hitMin, 0, 255,
+            "image: lowest luminance (Rec. 601, 0-255) of the pixels the model must cover");
+    readInt(r, "hit_max", rule.hitMax, 0, 255, "image: highest luminance of the pixels the model must cover");
+    readInt(r, "avoid_min", rule.avoidMin, 0, 255, "image: lowest luminance of the pixels the model must leave empty");
+    readInt(r, "avoid_max", rule.avoidMax, 0, 255, "image: highest luminance of the pixels the model must leave empty");
+    readInt(r, "alpha_threshold", rule.alphaThreshold, 0, 256,
+            "image: pixels with alpha below this are transparent: don't care (avoided with cover = \"opaque\")");
     // target.cover: a preset for the four ranges, so it is either it or them; alpha_threshold
     // goes with both.
     std::string cover;
-    r.string("cover", cover);
+    r.string("cover", cover,
+             "image: which pixels to cover, a preset of hit_min, hit_max, avoid_min and avoid_max: \"dark\" "
+             "(luminance 0-127 hit, 128-255 avoid), \"light\" (the reverse) or \"opaque\" (opaque pixels hit, "
+             "transparent ones avoid); not with those four keys");
     if (r.has("cover")) {
         const TargetCover presets[] = {TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
         const TargetCover* preset = nullptr;
@@ -192,7 +206,10 @@ std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
         rule = PixelRule::forCover(*preset, rule.alphaThreshold);
     }
     std::string fit = targetFitName(s->fit);
-    r.string("fit", fit);
+    r.string("fit", fit,
+             "image: how the picture meets the camera's frame: \"contain\" (aspect kept, as large as fits, margins "
+             "don't care), \"cover\" (aspect kept, fills the frame, overflow cut), \"stretch\" or \"exact\" (the "
+             "picture must have the frame's size)");
     if (r.has("fit")) {
         bool known = false;
         for (TargetFit f : {TargetFit::Contain, TargetFit::Cover, TargetFit::Stretch, TargetFit::Exact})
@@ -200,7 +217,9 @@ std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
         if (!known)
             r.fail("fit", "target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"" + shortened(fit) + "\"");
     }
-    r.number("scale", s->scale, 0.01, 1.0);
+    r.number("scale", s->scale, 0.01, 1.0,
+             "image, with fit = \"contain\" or \"stretch\": the share of the frame's width and height the fitted "
+             "picture may take, centred (the rest is don't care)");
     if (r.has("scale") && s->scale < 1.0 && s->fit != TargetFit::Contain && s->fit != TargetFit::Stretch)
         r.failKeys({"target.scale", "target.fit"}, "[target]",
                    "target.scale makes the picture take part of the frame, which only target.fit = \"contain\" or "
@@ -227,6 +246,7 @@ const TargetKind imageTargetKind{
     .shellRelativeFiles = kImageShellRelativeFiles,
     .noun = "an image target",
     .namedBy = "image = \"FILE.png\"",
+    .namingLine = "image = \"target.png\"",
     .keysPhrase = "an image",
     .iouName = "silhouette IoU",
     .iouKey = "silhouette_iou",

@@ -2,6 +2,7 @@
 #include "score/volume/volume_kind.hpp"
 
 #include <array>
+#include <limits>
 
 #include "base/input_error.hpp"
 #include "score/volume/model_volume.hpp"
@@ -66,12 +67,25 @@ constexpr std::array<std::string_view, 1> kVolumeExportFormats{"vdb"};
 
 std::unique_ptr<TargetSettings> VolumeTargetSettings::read(SectionReader& r) {
     auto s = std::make_unique<VolumeTargetSettings>();
-    for (const auto& f : r.strings("fill")) s->targets.push_back({r.resolvePath(f), false});
-    for (const auto& f : r.strings("avoid")) s->targets.push_back({r.resolvePath(f), true});
-    s->hasMin_ = r.vec("grid_min", s->gridKeys_.min);
-    s->hasMax_ = r.vec("grid_max", s->gridKeys_.max);
-    r.number("voxel_size", s->gridKeys_.voxelSize, 1e-6, 1e6);
+    for (const auto& f : r.strings("fill", "volume: one VDB level set or a list of them, the voxels to fill; names the volume kind"))
+        s->targets.push_back({r.resolvePath(f), false});
+    for (const auto& f : r.strings("avoid", "volume: VDB level sets of voxels to leave empty"))
+        s->targets.push_back({r.resolvePath(f), true});
+    // Read into NaN (no default: absent means the targets' bounds and the first target's voxels),
+    // kept only when given.
+    constexpr double none = std::numeric_limits<double>::quiet_NaN();
+    glm::dvec3 lo(none), hi(none);
+    double voxelSize = none;
+    s->hasMin_ = r.vec("grid_min", lo,
+                       "volume: the lower corner of an explicit dense grid (with grid_max and voxel_size); default: "
+                       "the targets' bounds padded by 25 % on every side");
+    s->hasMax_ = r.vec("grid_max", hi, "volume: the upper corner of the explicit grid");
+    r.number("voxel_size", voxelSize, 1e-6, 1e6,
+             "volume: the explicit grid's voxel size (default: the first target's)");
     s->hasVoxelSize_ = r.has("voxel_size");
+    if (s->hasMin_) s->gridKeys_.min = lo;
+    if (s->hasMax_) s->gridKeys_.max = hi;
+    if (s->hasVoxelSize_) s->gridKeys_.voxelSize = voxelSize;
     return s;
 }
 
@@ -108,6 +122,7 @@ const TargetKind volumeTargetKind{
     .shellRelativeFiles = {},
     .noun = "a volume target",
     .namedBy = "fill = \"FILE.vdb\" (at least one fill target)",
+    .namingLine = "fill = \"target.vdb\"",
     .keysPhrase = "fill/avoid volumes or a grid",
     .iouName = "voxel IoU",
     .iouKey = "voxel_iou",
