@@ -57,12 +57,19 @@ std::vector<std::string> shellWords(const std::string& line) {
     return words;
 }
 
+/// `line` without its indentation (a fenced block may sit in a list item).
+std::string unindented(const std::string& line) {
+    const auto start = line.find_first_not_of(" \t");
+    return start == std::string::npos ? "" : line.substr(start);
+}
+
 /// The shapevo commands of the fenced blocks of `file` (relative to the source).
 std::vector<DocsCommand> commandsOf(const std::string& file) {
     std::ifstream in(test::sourcePath(file));
     std::stringstream text;
     text << in.rdbuf();
-    const std::vector<std::string> lines = test::splitLines(text.str());
+    std::vector<std::string> lines = test::splitLines(text.str());
+    for (std::string& line : lines) line = unindented(line);
     std::vector<DocsCommand> out;
     for (std::size_t i = 0; i < lines.size(); ++i) {
         if (lines[i].rfind("```", 0) != 0) continue;
