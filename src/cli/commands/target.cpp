@@ -23,7 +23,10 @@ void TargetCommand::addOptions(CLI::App& command) {
                                            "a volume its inside must be determinable (holes filled, at most half its surface)")
         ->required();
     command.add_option("-o,--output", o.output, "output .vdb, or .png with --image (must not exist)")->required();
-    auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize, "voxel edge length in model units")->capture_default_str();
+    auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize,
+                                        "voxel edge length in model units (default: chosen to fit the mesh, the longest side "
+                                        "of its bounding box / " + std::to_string(kVoxelsAlongLongestSide) +
+                                            " rounded to 3 significant digits; the chosen size is printed)");
     command.add_option("--image", o.imageConfig, "draw the mesh through the camera of this image config ([target] image and "
                                                  "[camera]) into a PNG of the camera's size that its pixel rule reads as hit "
                                                  "where the mesh is")
