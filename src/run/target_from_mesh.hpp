@@ -17,10 +17,10 @@ namespace shapevo {
 
 /// The options of `shapevo target`, as the command line gives them.
 struct TargetRequest {
-    std::string meshPath;     ///< the mesh to read
-    std::string output;       ///< -o: .vdb, or .png with imageConfig; must not exist
+    std::string meshPath;             ///< the mesh to read
+    std::string output;               ///< -o: .vdb, or .png with imageConfig; must not exist
     std::optional<double> voxelSize;  ///< --voxel-size: a volume's voxel edge in model units; none: fittingVoxelSize
-    std::string imageConfig;  ///< --image: a config with an image target and camera ("" = a volume)
+    std::string imageConfig;          ///< --image: a config with an image target and camera ("" = a volume)
 };
 
 /// Without --voxel-size, the mesh's longest side (of the bounding box of its triangles' corners)
@@ -34,9 +34,8 @@ constexpr int kVoxelsAlongLongestSide = 128;
 double fittingVoxelSize(const Mesh& mesh);
 
 /// Writes the target `request` asks for. Prints what was made ("mesh: ...", "voxel size: ..."
-/// when it was chosen, "inside: ..." or the
-/// pixels covered, "wrote FILE") to `out`, and the mesh reader's warnings ("shapevo: warning:
-/// ...") to `err`. @throw InputError for a bad output name, an image config without an image
+/// when it was chosen, "inside: ..." or the pixels covered, "wrote FILE") to `out`, and the mesh
+/// reader's warnings ("shapevo: warning: ...") to `err`. @throw InputError for a bad output name, an image config without an image
 /// target, or a mesh that cannot be read, repaired or made into the target.
 void makeTargetFromMesh(const TargetRequest& request, std::ostream& out, std::ostream& err);
 

@@ -20,7 +20,9 @@ void TargetCommand::addOptions(CLI::App& command) {
     command.add_option("mesh", o.meshPath, "triangle mesh, format by extension: .obj, .ply, .stl (read by shapevo) or .off, "
                                            ".gltf, .glb, .fbx, .3mf, .dae, .3ds, .x, .blend, ... (read by Assimp; an unknown "
                                            "extension's error lists them all; a scene's meshes are merged in world space); for "
-                                           "a volume its inside must be determinable (holes filled, at most half its surface)")
+                                           "a volume its inside must be determinable (holes filled, at most half its surface) and enclose a "
+                                           "volume; a mesh without a valid face (all degenerate) or with a face index out of "
+                                           "range is refused")
         ->required();
     command.add_option("-o,--output", o.output, "output .vdb, or .png with --image (must not exist)")->required();
     auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize,
