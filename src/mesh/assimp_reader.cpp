@@ -41,7 +41,8 @@ constexpr std::size_t kMaxLoggedErrors = 20, kMaxLoggedChars = 300;
 
 void putU32(std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); }
 
-/// Collects what Assimp logs as an error, without DefaultLogger's "Error, T0: " prefix.
+/// Collects what Assimp logs as an error, without DefaultLogger's "Error, T0: " prefix, as one
+/// line of printable characters.
 class ErrorCollector : public Assimp::LogStream {
 public:
     explicit ErrorCollector(std::vector<std::string>& lines) : lines_(lines) {}
@@ -49,8 +50,8 @@ public:
         if (lines_.size() >= kMaxLoggedErrors) return;
         std::string text(message);
         if (text.rfind("Error, T", 0) == 0 && text.find(": ") != std::string::npos) text.erase(0, text.find(": ") + 2);
-        for (char& c : text)
-            if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+        for (char& c : text)  // one line of printable text (Assimp may quote the file's bytes)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
         while (!text.empty() && text.back() == ' ') text.pop_back();
         if (!text.empty()) lines_.push_back(text.substr(0, kMaxLoggedChars));
     }
