@@ -3,14 +3,21 @@
 // points and lines dropped) and sends the meshes back as a small binary message; the parent
 // decodes that message defensively (every count checked against the bytes present before
 // anything is reserved), checks each vertex and index, and merges the meshes into one Mesh.
+// Assimp reads on past some broken faces, logging an error and guessing (its OFF reader clamps
+// an index that is out of range to the last vertex): the child sends Assimp's error messages
+// along, and the parent refuses the file for one about a vertex or face index and turns the
+// others into warnings.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -23,13 +30,46 @@ namespace shapevo::meshio {
 
 namespace {
 
-// The child's message: 'M', then per mesh (until the end marker 'E' 'N' 'D'): the mesh tag 'm',
-// uint32 vertex count, that many float triples, uint32 face count, per face a uint32 corner
-// count and that many uint32 indices. Or: 'X' and Assimp's error message.
-constexpr char kMeshes = 'M', kError = 'X', kMeshTag = 'm';
+// The child's message: 'M', then Assimp's logged errors (each the tag 'l', a uint32 length and
+// the text), then per mesh (until the end marker 'E' 'N' 'D'): the mesh tag 'm', uint32 vertex
+// count, that many float triples, uint32 face count, per face a uint32 corner count and that many
+// uint32 indices. Or: 'X' and Assimp's error message.
+constexpr char kMeshes = 'M', kError = 'X', kMeshTag = 'm', kLogTag = 'l';
 constexpr char kEnd[] = "END";
+/// At most this many of Assimp's logged errors are sent, each cut to kMaxLoggedChars.
+constexpr std::size_t kMaxLoggedErrors = 20, kMaxLoggedChars = 300;
 
 void putU32(std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); }
+
+/// Collects what Assimp logs as an error, without DefaultLogger's "Error, T0: " prefix, as one
+/// line of printable characters.
+class ErrorCollector : public Assimp::LogStream {
+public:
+    explicit ErrorCollector(std::vector<std::string>& lines) : lines_(lines) {}
+    void write(const char* message) override {
+        if (lines_.size() >= kMaxLoggedErrors) return;
+        std::string text(message);
+        if (text.rfind("Error, T", 0) == 0 && text.find(": ") != std::string::npos) text.erase(0, text.find(": ") + 2);
+        for (char& c : text)  // one line of printable text (Assimp may quote the file's bytes)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+        while (!text.empty() && text.back() == ' ') text.pop_back();
+        if (!text.empty()) lines_.push_back(text.substr(0, kMaxLoggedChars));
+    }
+
+private:
+    std::vector<std::string>& lines_;
+};
+
+/// True for Assimp 5's messages about a face's vertex index it could not use ("OFF: Vertex index
+/// is out of range", "OBJ: Invalid face index.", "LWOB: face index is out of range", "Face has an
+/// invalid index. It will be ignored", "IRRMESH: Index out of range", ...): Assimp read on with
+/// the index clamped or the face dropped, so the mesh is not the file's.
+bool isFaceIndexError(std::string text) {
+    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* s : {"vertex index", "face index", "polygon index", "face has an invalid index", "irrmesh: index out of range"})
+        if (text.find(s) != std::string::npos) return true;
+    return false;
+}
 
 std::string upper(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
@@ -38,12 +78,17 @@ std::string upper(std::string s) {
 
 /// Runs in the child: import and flatten.
 std::string importScene(const std::string& path) {
-    Assimp::Importer importer;  // no DefaultLogger is created: Assimp logs to its NullLogger
+    // The child's own logger (the parent never creates one): errors only, no file, no console.
+    std::vector<std::string> logged;
+    Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(new ErrorCollector(logged), Assimp::Logger::Err);
+    Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                            aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     const aiScene* scene = importer.ReadFile(path, flags);
+    Assimp::DefaultLogger::kill();  // deletes the collector; `logged` keeps what it collected
     std::string out;
     if (!scene) {
         out += kError;
@@ -51,6 +96,11 @@ std::string importScene(const std::string& path) {
         return out;
     }
     out += kMeshes;
+    for (const std::string& line : logged) {
+        out += kLogTag;
+        putU32(out, std::uint32_t(line.size()));
+        out += line;
+    }
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* mesh = scene->mMeshes[m];
         if (!mesh) continue;
@@ -96,6 +146,12 @@ public:
         pos_ += 4;
         return v;
     }
+    std::string text(std::size_t n) {
+        need(n);
+        std::string s(data_.substr(pos_, n));
+        pos_ += n;
+        return s;
+    }
     /// Throws unless `count` items of `bytes` bytes each are still there.
     void needItems(std::uint64_t count, std::uint64_t bytes) const {
         if (count > left() / bytes) broken();
@@ -131,6 +187,16 @@ Mesh decode(const std::string& bytes, const std::string& path, const std::string
     if (bytes[0] != kMeshes) in.broken();
     in.skip(1);
     Mesh mesh;
+    while (in.startsWith(std::string_view(&kLogTag, 1))) {
+        in.skip(1);
+        const std::uint32_t n = in.u32();
+        in.needItems(n, 1);
+        const std::string line = in.text(n);
+        if (isFaceIndexError(line))
+            throw InputError(path, "", "cannot read " + format + " mesh: a face has a vertex index Assimp could not use (Assimp: \"" +
+                                           line + "\"); the file is malformed");
+        mesh.warnings.push_back(path + ": Assimp: " + line);
+    }
     std::uint64_t dropped = 0;
     for (std::uint32_t m = 0; !in.startsWith(kEnd); ++m) {
         if (!in.startsWith(std::string_view(&kMeshTag, 1))) in.broken();

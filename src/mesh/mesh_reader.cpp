@@ -1,6 +1,6 @@
 // Mesh file input: refuses missing, non-regular, empty and oversized files, picks the reader by
 // extension (ours for OBJ/PLY/STL, Assimp for the rest), runs the same checks on every result
-// (finite coordinates, indices in range, at least one triangle), and checks closedness (every
+// (finite coordinates, indices in range, at least one triangle with an area), and checks closedness (every
 // edge shared by exactly two triangles) for volume targets.
 #include "mesh/mesh_reader.hpp"
 
@@ -12,6 +12,9 @@
 #include <iterator>
 #include <sstream>
 #include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include "base/input_error.hpp"
 #include "mesh/mesh_formats.hpp"
@@ -71,6 +74,13 @@ std::string unknownExtensionMessage(const std::string& ext) {
            std::to_string(more.size()) + " more extensions through Assimp (" + examples + ", ...; all:" + all + ")";
 }
 
+/// True when triangle `t`'s corners span a positive area (computed in double, so that tiny
+/// triangles of float coordinates do not underflow).
+bool hasArea(const Mesh& mesh, const std::array<std::uint32_t, 3>& t) {
+    const glm::dvec3 a(mesh.vertices[t[0]]), b(mesh.vertices[t[1]]), c(mesh.vertices[t[2]]);
+    return glm::length(glm::cross(b - a, c - a)) > 0.0;
+}
+
 /// The checks every reader's result gets, whatever the format.
 void checkMesh(const Mesh& mesh, const std::string& path) {
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -85,6 +95,11 @@ void checkMesh(const Mesh& mesh, const std::string& path) {
                                  "vertex index " + std::to_string(i) + " out of range (" +
                                      std::to_string(mesh.vertices.size()) + " vertices)");
     if (mesh.triangles.empty()) throw InputError(path, "", "mesh has no triangles");
+    if (std::none_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const auto& t) { return hasArea(mesh, t); }))
+        throw InputError(path, "", "mesh has no valid face: " +
+                                       (mesh.triangles.size() == 1 ? std::string("its only triangle is")
+                                                                   : "all " + std::to_string(mesh.triangles.size()) + " triangles are") +
+                                       " degenerate (two corners at one position, or all three on a line)");
 }
 
 std::string formatPoint(const glm::vec3& p) {

@@ -35,14 +35,17 @@ struct MeshReadLimits {
 /// Polygons are fan-triangulated. STL vertices are welded where positions are exactly equal.
 /// Harmless oddities are read past and listed in `Mesh::warnings`, each naming the file and place
 /// (a PLY header line that is no PLY keyword, e.g. Blender 2.4x's "Created by ..." line).
+/// Assimp's logged errors become warnings, but one about a face's vertex index (Assimp reads on
+/// past it, clamping the index or dropping the face) refuses the file.
 /// After any reader the same checks run on the result: finite coordinates, indices in range, at
-/// least one triangle.
+/// least one triangle, and at least one valid face (a triangle whose corners span a positive area).
 /// @throw InputError naming the file (and line, element or mesh/face index) when the path is
 ///        missing, a directory or not a regular file, the file is empty or over maxFileBytes, the
 ///        extension is unknown (the message lists the known ones), a number is malformed, a face
-///        index is out of range, a face has fewer than 3 vertices (OBJ/PLY/STL), a coordinate is
-///        not finite, there are no triangles, or Assimp cannot read the file (its own message, or
-///        that it crashed, ran out of time or memory).
+///        index is out of range (also one Assimp reports and reads past), a face has fewer than 3
+///        vertices (OBJ/PLY/STL), a coordinate is not finite, there are no triangles, every
+///        triangle is degenerate ("no valid face"), or Assimp cannot read the file (its own
+///        message, or that it crashed, ran out of time or memory).
 Mesh readMesh(const std::string& path, const MeshReadLimits& limits = {});
 
 /// The extensions readMesh reads through Assimp (lower case, with the dot, sorted; without

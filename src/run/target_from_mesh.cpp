@@ -1,11 +1,16 @@
 // `shapevo target`: a mesh made into a volume or a picture target (target_from_mesh.hpp).
 #include "run/target_from_mesh.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <span>
 #include <string_view>
+
+#include <glm/common.hpp>
 
 #include "base/input_error.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -19,17 +24,42 @@ namespace shapevo {
 
 namespace {
 
-/// The mesh repaired for a determinable inside, as a level set of voxelSize voxels.
+/// The longest side of the bounding box of `mesh`'s triangle corners.
+double longestSide(const Mesh& mesh) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t i : t) lo = glm::min(lo, mesh.vertices[i]), hi = glm::max(hi, mesh.vertices[i]);
+    if (mesh.triangles.empty()) return 0.0;
+    return std::max({double(hi.x) - lo.x, double(hi.y) - lo.y, double(hi.z) - lo.z});
+}
+
+/// The mesh repaired for a determinable inside, as a level set of the requested voxel size, or
+/// of the fitting one (said on `out`).
 void writeVolumeTarget(const Mesh& mesh, const TargetRequest& r, std::ostream& out) {
     const MeshRepair repaired = repairForVolume(mesh, r.meshPath);
     out << "mesh: " << describeRepair(repaired) << std::endl;
-    const TargetVdbStats stats = writeTargetVdb(repaired.mesh, r.voxelSize, r.meshPath, r.output);
+    double voxelSize = r.voxelSize.value_or(0.0);
+    if (!r.voxelSize) {
+        voxelSize = fittingVoxelSize(repaired.mesh);
+        out << "voxel size: " << voxelSize << " (chosen: the longest side, " << longestSide(repaired.mesh) << " model units, in about "
+            << kVoxelsAlongLongestSide << " voxels; --voxel-size sets another)" << std::endl;
+    }
+    const TargetVdbStats stats = writeTargetVdb(repaired.mesh, voxelSize, r.meshPath, r.output);
     out << "inside: volume " << stats.insideVolume << " (model units^3), " << groupedNumber(stats.insideVoxels) << " voxels of "
-        << r.voxelSize << "\n"
+        << voxelSize << "\n"
         << "wrote " << r.output << "\n";
 }
 
 }  // namespace
+
+double fittingVoxelSize(const Mesh& mesh) {
+    const double raw = longestSide(mesh) / kVoxelsAlongLongestSide;
+    if (!(raw > 0.0) || !std::isfinite(raw)) return 0.0;
+    // 3 significant digits: scale by a power of ten that is exact in a double, round, scale back.
+    const int exponent = int(std::floor(std::log10(raw))) - 2;
+    const double power = std::pow(10.0, std::abs(exponent));
+    return exponent < 0 ? std::round(raw * power) / power : std::round(raw / power) * power;
+}
 
 void makeTargetFromMesh(const TargetRequest& r, std::ostream& out, std::ostream& err) {
     // --image: a picture through an image config's camera; otherwise a volume.

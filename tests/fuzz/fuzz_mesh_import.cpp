@@ -4,8 +4,8 @@
 // (Assimp in its sandboxed child process, then the same checks as every reader).
 //
 // An InputError naming the file is the expected way to reject input; any other exception, a
-// sanitizer report or a broken invariant is a crash: an accepted mesh has at least one triangle,
-// finite vertices, indices in range and warnings that name the file, and no import process is
+// sanitizer report or a broken invariant is a crash: an accepted mesh has at least one triangle
+// with an area, finite vertices, indices in range and warnings that name the file, and no import process is
 // left behind (every child reaped). Assimp itself is not instrumented: what it does wrong shows
 // up as a crash, hang or out-of-memory of the child, which readMesh must turn into an InputError.
 // With SHAPEVO_FUZZ_ASSIMP_FAILURES=<folder>, inputs on which Assimp's process crashed, hung or
@@ -20,6 +20,9 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include "base/input_error.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -84,6 +87,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const glm::vec3& v : m.vertices) CHECK(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
         for (const auto& t : m.triangles)
             for (std::uint32_t i : t) CHECK(i < m.vertices.size());
+        bool someArea = false;
+        for (const auto& t : m.triangles) {
+            const glm::dvec3 a(m.vertices[t[0]]), b(m.vertices[t[1]]), c(m.vertices[t[2]]);
+            someArea = someArea || glm::length(glm::cross(b - a, c - a)) > 0.0;
+        }
+        CHECK(someArea);
         for (const std::string& w : m.warnings) CHECK(w.rfind(path, 0) == 0);
     } catch (const InputError& e) {
         CHECK(std::strncmp(e.what(), path.c_str(), path.size()) == 0);

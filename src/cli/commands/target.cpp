@@ -20,10 +20,15 @@ void TargetCommand::addOptions(CLI::App& command) {
     command.add_option("mesh", o.meshPath, "triangle mesh, format by extension: .obj, .ply, .stl (read by shapevo) or .off, "
                                            ".gltf, .glb, .fbx, .3mf, .dae, .3ds, .x, .blend, ... (read by Assimp; an unknown "
                                            "extension's error lists them all; a scene's meshes are merged in world space); for "
-                                           "a volume its inside must be determinable (holes filled, at most half its surface)")
+                                           "a volume its inside must be determinable (holes filled, at most half its surface) and enclose a "
+                                           "volume; a mesh without a valid face (all degenerate) or with a face index out of "
+                                           "range is refused")
         ->required();
     command.add_option("-o,--output", o.output, "output .vdb, or .png with --image (must not exist)")->required();
-    auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize, "voxel edge length in model units")->capture_default_str();
+    auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize,
+                                        "voxel edge length in model units (default: chosen to fit the mesh, the longest side "
+                                        "of its bounding box / " + std::to_string(kVoxelsAlongLongestSide) +
+                                            " rounded to 3 significant digits; the chosen size is printed)");
     command.add_option("--image", o.imageConfig, "draw the mesh through the camera of this image config ([target] image and "
                                                  "[camera]) into a PNG of the camera's size that its pixel rule reads as hit "
                                                  "where the mesh is")

@@ -16,6 +16,10 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 #include "base/atomic_write.hpp"
 #include "base/input_error.hpp"
 #include "score/volume/vdb_bake.hpp"
@@ -40,6 +44,26 @@ std::string number(double v) {
     s.precision(10);
     s << v;
     return s.str();
+}
+
+/// True when every corner of `mesh`'s triangles lies in one plane (within a millionth of the
+/// mesh's size): such a mesh encloses no volume, however it is closed. The plane is that of the
+/// largest triangle; a mesh of degenerate triangles only (no plane) counts as flat.
+bool allInOnePlane(const Mesh& mesh) {
+    glm::dvec3 normal(0.0), origin(0.0), lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    double largest = 0.0;
+    for (const auto& t : mesh.triangles) {
+        const glm::dvec3 a(mesh.vertices[t[0]]), b(mesh.vertices[t[1]]), c(mesh.vertices[t[2]]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (glm::length(n) > largest) largest = glm::length(n), normal = n / largest, origin = a;
+        for (const glm::dvec3& p : {a, b, c}) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    if (!(largest > 0.0)) return true;
+    const double tolerance = 1e-6 * glm::length(hi - lo);
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t i : t)
+            if (std::abs(glm::dot(glm::dvec3(mesh.vertices[i]) - origin, normal)) > tolerance) return false;
+    return true;
 }
 
 }  // namespace
@@ -72,6 +96,9 @@ TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::str
                                  "vertex index " + std::to_string(i) + " out of range");
         triangles.emplace_back(tri[0], tri[1], tri[2]);
     }
+    if (allInOnePlane(mesh))
+        throw InputError(sourcePath, "", "the mesh encloses no volume: all its " + std::to_string(mesh.triangles.size()) +
+                                             " triangles lie in one plane (a flat mesh has no inside)");
     const double across = (hi - lo).length() / voxelSize;
     if (across > kMaxVoxelsAcross)
         throw InputError(sourcePath, "", "voxel size " + number(voxelSize) + " is too small: the mesh would be " +
@@ -84,15 +111,22 @@ TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::str
     if (!grid || grid->activeVoxelCount() == 0)
         throw InputError(sourcePath, "", "the level set is empty at voxel size " + number(voxelSize));
     // Every stored value (leaf voxels, and tiles: the interior's inactive negative tiles count as
-    // many voxels as they cover); the unstored background is outside.
+    // many voxels as they cover); the unstored background is outside. A voxel centre on the
+    // surface (value 0) counts as inside, but only one clearly inside (below a thousandth of a
+    // voxel) shows that the mesh encloses a volume: a zero-thickness mesh passing through voxel
+    // centres has values of 0 (or rounding's -epsilon) there and nothing below.
     TargetVdbStats stats;
-    for (auto it = grid->cbeginValueAll(); it; ++it)
+    std::uint64_t clearlyInside = 0;
+    const float clearly = float(-1e-3 * voxelSize);
+    for (auto it = grid->cbeginValueAll(); it; ++it) {
         if (*it <= 0.0f) stats.insideVoxels += it.getVoxelCount();
+        if (*it < clearly) clearlyInside += it.getVoxelCount();
+    }
     stats.insideVolume = double(stats.insideVoxels) * voxelSize * voxelSize * voxelSize;
-    if (stats.insideVoxels == 0)
+    if (clearlyInside == 0)
         throw InputError(sourcePath, "", "the inside of the mesh comes out empty at voxel size " + number(voxelSize) +
-                                             ": no voxel centre is enclosed (an open surface, or a mesh thinner than a "
-                                             "voxel; try a smaller --voxel-size)");
+                                             ": no voxel centre is enclosed (an open surface, a surface of zero "
+                                             "thickness, or a mesh thinner than a voxel; try a smaller --voxel-size)");
     grid->setName("target");
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
     grid->insertMeta("voxel_size", openvdb::DoubleMetadata(voxelSize));

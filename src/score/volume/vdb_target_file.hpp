@@ -38,9 +38,11 @@ struct TargetVdbStats {
 /// same directory and then renamed (or hard-linked, when not overwriting) into place.
 /// @throw InputError if `outPath` exists and `overwrite` is false, if voxelSize is not a
 ///        positive finite number (or is so small the grid would be absurd), if the mesh has no
-///        triangles, if the level set comes out empty or has no inside voxel (an open surface
-///        whose inside OpenVDB's flood fill cannot find, or a mesh thinner than a voxel), or if
-///        the file cannot be written. Nothing is written when it throws.
+///        triangles, if all its triangles lie in one plane (it encloses no volume), if the level
+///        set comes out empty or has no voxel centre clearly inside (an open surface whose inside
+///        OpenVDB's flood fill cannot find, a surface of zero thickness through voxel centres, or
+///        a mesh thinner than a voxel), or if the file cannot be written. Nothing is written when
+///        it throws.
 TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::string& sourcePath, const std::string& outPath,
                     bool overwrite = false);
 
