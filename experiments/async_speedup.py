@@ -93,7 +93,7 @@ def main():
         cells = []
         for label in labels[1:]:
             q = [by[(scene, label, k)]["evals_per_s"] / by[(scene, "1 rank", k)]["evals_per_s"] for k in range(1, a.reps + 1)]
-            cells.append("**%s×**" % spread(q))
+            cells.append("**%.2f×** (%.2f–%.2f)" % (statistics.median(q), min(q), max(q)))
         print("| %s (evaluations/s over 1 rank's) | %s |" % (scene, " | ".join(cells)))
     print("\n| scene | run | evaluations/s | wall s | CPU s | CPU s per 100k evaluations | slowest rank's waiting |")
     print("|---|---|---|---|---|---|---|")
