@@ -62,14 +62,14 @@ std::optional<std::string> checkpointRunId(const std::string& checkpoint) {
     }
 }
 
-std::string islandMismatch(const IslandState& island, const RunMetadata& run, int rank) {
+std::string islandMismatch(const IslandState& island, const RunMetadata& run, int rank, bool ownPace) {
     auto differs = [](const char* what, const std::string& a, const std::string& b) {
         return std::string(what) + " is " + a + " in the island file but " + b + " in run.h5";
     };
     if (island.runId != run.runId) return differs("the run id", island.runId, run.runId);
     if (island.seed != run.seed) return differs("the seed", std::to_string(island.seed), std::to_string(run.seed));
     if (island.ranks != run.ranks) return differs("the island count", std::to_string(island.ranks), std::to_string(run.ranks));
-    if (island.generation != run.generation)
+    if (island.generation != run.generation && !ownPace)
         return differs("the generation", std::to_string(island.generation), std::to_string(run.generation));
     if (island.rank != rank) return "the file is island " + std::to_string(island.rank) + ", read by rank " + std::to_string(rank);
     return "";

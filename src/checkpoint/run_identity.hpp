@@ -29,7 +29,9 @@ std::optional<std::string> checkpointRunId(const std::string& checkpoint);
 
 /// Empty if island file `island` (read by rank `rank`) belongs with run file `run`: same run id,
 /// seed, island count and generation, and its own rank; else what differs, naming both values.
-std::string islandMismatch(const IslandState& island, const RunMetadata& run, int rank);
+/// `ownPace`: the islands ran at their own pace (async migration), so an island's generation is
+/// its own and run.h5's is rank 0's: the generations are not compared.
+std::string islandMismatch(const IslandState& island, const RunMetadata& run, int rank, bool ownPace = false);
 
 /// An input file and the XXH3-64 of its bytes now. @throw InputError naming it if unreadable.
 InputFile hashInput(const std::string& role, const std::string& path);

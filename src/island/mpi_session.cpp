@@ -7,7 +7,12 @@
 #include <cstdlib>
 
 #include <mpi.h>
+#include <unistd.h>
 
+#include <csignal>
+
+#include "island/launcher_link.hpp"
+#include "island/launcher_watch.hpp"
 #include "island/polite_wait.hpp"
 
 namespace shapevo {
@@ -27,15 +32,23 @@ WaitTimer::~WaitTimer() { mpi_.addWaited(now() - start_); }
 
 MpiSession::MpiSession(int& argc, char**& argv) {
     if (!launchedByMpi()) return;
+    // The launcher is the parent now; one that dies before MPI_Init makes MPI_Init fail.
+    const pid_t launcher = ::getppid();
     int provided = 0;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
     active_ = true;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    std::signal(SIGPIPE, SIG_IGN);
+    takeOverLauncherLoss();
+    watch_ = std::make_unique<LauncherWatch>(launcher);
 }
 
 MpiSession::~MpiSession() {
-    if (active_) MPI_Finalize();
+    if (!active_) return;
+    const bool launcherLost = watch_->launcherLost();
+    watch_.reset();  // once the launcher is lost, its deadline still holds while the process ends
+    if (!launcherLost) MPI_Finalize();
 }
 
 bool MpiSession::allTrue(bool ok) const {

@@ -2,12 +2,19 @@
 // `shapevo run` (one island) never initialises MPI, so it starts fast and needs no launcher.
 // The collective helpers below work in both cases (with one rank they are trivial). Every
 // blocking call adds its time to waitedSeconds(): the time this rank spent waiting for others.
+// Under a launcher the session also watches it (island/launcher_watch.hpp): a rank whose launcher
+// dies stops cleanly within a bounded time, and then skips MPI_Finalize (which needs the launcher).
+// A rank's output goes through its launcher, so SIGPIPE is ignored: once the launcher is gone,
+// writing fails instead of killing the rank.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace shapevo {
+
+class LauncherWatch;
 
 class MpiSession {
 public:
@@ -43,6 +50,7 @@ public:
     [[noreturn]] void abort(int code) const;
 
 private:
+    std::unique_ptr<LauncherWatch> watch_;  ///< only under a launcher
     bool active_ = false;
     int rank_ = 0, size_ = 1;
     mutable double waited_ = 0;

@@ -1,14 +1,17 @@
-// Stop signals: an async-signal-safe flag set by the handler, read once per generation.
+// Stop signals: an async-signal-safe flag (a lock-free atomic) set by the handler or by
+// requestStop, read once per generation.
 #include "island/stop_signal.hpp"
 
+#include <atomic>
 #include <csignal>
 #include <initializer_list>
 
 namespace shapevo {
 
 namespace {
-volatile std::sig_atomic_t gSignal = 0;
-extern "C" void onStopSignal(int s) { gSignal = s; }
+std::atomic<int> gSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the flag is set inside a signal handler");
+extern "C" void onStopSignal(int s) { gSignal.store(s); }
 }  // namespace
 
 void installStopSignalHandlers() {
@@ -21,7 +24,9 @@ void installStopSignalHandlers() {
     for (int s : {SIGTERM, SIGUSR1, SIGINT, SIGHUP}) sigaction(s, &action, nullptr);
 }
 
-int stopSignalReceived() { return gSignal; }
+void requestStop(int signal) { gSignal.store(signal); }
+
+int stopSignalReceived() { return gSignal.load(); }
 
 const char* signalName(int signal) {
     switch (signal) {
@@ -29,6 +34,7 @@ const char* signalName(int signal) {
     case SIGUSR1: return "SIGUSR1";
     case SIGINT: return "SIGINT";
     case SIGHUP: return "SIGHUP";
+    case kLauncherLost: return "the loss of its launcher (mpirun or srun)";
     default: return "a signal";
     }
 }

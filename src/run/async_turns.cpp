@@ -55,7 +55,7 @@ HeardFigures combineStatuses(const AsyncControl& control, int islands) {
 
 AsyncTurns::AsyncTurns(TurnContext context) : c_(context), control_(c_.mpi, 0.2) {}
 
-TurnDecision AsyncTurns::after(const IslandRow& row, std::uint32_t generation, std::uint64_t evaluations, bool idle) {
+TurnDecision AsyncTurns::after(const IslandRow& row, std::uint32_t generation, std::uint64_t evaluations) {
     const int signal = stopSignalReceived();
     const bool finished = generation >= c_.s.population.generations;
     IslandStatus own;
@@ -75,7 +75,7 @@ TurnDecision AsyncTurns::after(const IslandRow& row, std::uint32_t generation, s
         toldSignal_ = toldSignal_ || signal, toldFinished_ = toldFinished_ || finished;
         order = control_.poll();
     } else {
-        order = decide(own, generation, idle);
+        order = decide(own, generation);
     }
     if (!order) return {};
     if (order->kind == AsyncOrder::Stop && c_.mpi.rank() != 0) {
@@ -86,7 +86,7 @@ TurnDecision AsyncTurns::after(const IslandRow& row, std::uint32_t generation, s
     return {true, order->kind == AsyncOrder::Stop};
 }
 
-std::optional<AsyncOrder> AsyncTurns::decide(const IslandStatus& own, std::uint32_t generation, bool idle) {
+std::optional<AsyncOrder> AsyncTurns::decide(const IslandStatus& own, std::uint32_t generation) {
     const RunSettings& s = c_.s;
     control_.collect(own);
     const double seconds = c_.clock.runSeconds();
@@ -94,7 +94,7 @@ std::optional<AsyncOrder> AsyncTurns::decide(const IslandStatus& own, std::uint3
     GenerationStats& global = h.global;
     global.generation = generation;
     global.seconds = seconds;
-    if (!idle) c_.meta.curve.push_back(global);  // one row per rank-0 generation
+    c_.meta.curve.push_back(global);  // one row per rank-0 generation
     c_.meta.generation = generation;
     c_.meta.wallSeconds = global.seconds;
     std::string& stopReason = c_.stop.why;
@@ -104,10 +104,10 @@ std::optional<AsyncOrder> AsyncTurns::decide(const IslandStatus& own, std::uint3
     else if (h.allFinished) stopReason = "done";
     std::optional<AsyncOrder> order;
     if (!stopReason.empty()) order = AsyncOrder{AsyncOrder::Stop, h.anySignal, c_.meta.generation};
-    else if ((!idle && c_.checkpoints.dueByCount(generation)) || c_.checkpoints.dueByTime())
+    else if (c_.checkpoints.dueByCount(generation) || c_.checkpoints.dueByTime())
         order = AsyncOrder{AsyncOrder::Checkpoint, 0, c_.meta.generation};
     if (order) control_.order(*order);
-    if (c_.progress && c_.progress->due(idle ? ~0u : global.generation, !stopReason.empty())) {
+    if (c_.progress && c_.progress->due(global.generation, !stopReason.empty())) {
         ProgressFigures f;
         f.row = global;
         f.runSecondsBefore = c_.clock.secondsBefore();

@@ -6,11 +6,9 @@
 // (run/island_checkpoints.hpp), and at the end the outputs (run/run_outputs.hpp).
 #include "run/island_loop.hpp"
 
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <thread>
 #include <vector>
 
 #include "base/peak_memory.hpp"
@@ -131,7 +129,7 @@ void IslandLoop::ownGeneration() {
 
 bool IslandLoop::afterGeneration() {
     ownGeneration();
-    return follow(async_ ? asyncTurns_.after(lastRow_, search_.generation(), search_.evaluations(), false)
+    return follow(async_ ? asyncTurns_.after(lastRow_, search_.generation(), search_.evaluations())
                          : syncTurns_.after(lastRow_, search_.generation()));
 }
 
@@ -183,24 +181,17 @@ JobResult IslandLoop::run() {
             result.evaluations = search_.evaluations();
             return result;
         }
-        // its figures until its next generation (async mode's statuses to rank 0)
-        lastRow_ = islandRow(localCurve_.empty() ? search_.stats() : localCurve_.back(), search_.population().fitness);
     } else {
         search_.initialize(evaluator_);
         stop = afterGeneration();
     }
+    // Sync mode stops every island after the same generation. In async mode an island that has
+    // done its generations goes on evolving until rank 0 orders the stop (once every island has
+    // done them), so no island waits for the slowest at the end of the run.
     while (!stop) {
-        if (search_.generation() < s_.population.generations) {
-            search_.step(evaluator_);
-            sayBoundsReached();
-            stop = afterGeneration();
-        } else {  // async only: done with its generations, waiting for the others (the run's end)
-            {
-                WaitTimer wait(mpi_);
-                std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            }
-            stop = follow(asyncTurns_.after(lastRow_, search_.generation(), search_.evaluations(), true));
-        }
+        search_.step(evaluator_);
+        sayBoundsReached();
+        stop = afterGeneration();
     }
     asyncTurns_.finish();
     migration_.finish();

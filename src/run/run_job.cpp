@@ -173,7 +173,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
         std::string readProblem;
         try {
             state = readIslandFile(candidate + "/" + islandFileName(mpi.rank()), grammar, s.limits);
-            readProblem = islandMismatch(state, meta, mpi.rank());
+            readProblem = islandMismatch(state, meta, mpi.rank(), s.migration.async && meta.ranks > 1);
             if (!readProblem.empty()) readProblem = islandFileName(mpi.rank()) + ": " + readProblem;
         } catch (const InputError& e) {
             readProblem = e.what();
