@@ -13,7 +13,8 @@ void settleRunLimit(RunSettings& s) {
 std::string runLimitText(const RunSettings& s) {
     const std::string seconds = formatDouble(s.wallTime) + " s";
     if (s.population.generations == kNoGenerationLimit) return "limit: " + seconds + " wall time";
-    const std::string generations = std::to_string(s.population.generations) + " generations";
+    const std::uint32_t n = s.population.generations;
+    const std::string generations = std::to_string(n) + (n == 1 ? " generation" : " generations");
     if (s.wallTime <= 0) return "limit: " + generations;
     return "limit: " + generations + " or " + seconds + ", whichever comes first";
 }

@@ -30,6 +30,7 @@ TEST(RunLimit, AGenerationCountAloneOrNeitherRunsThatManyGenerations) {
     EXPECT_EQ(runLimitText(runLimitParse("")), "limit: 50 generations");
     EXPECT_EQ(runLimitParse("").population.generations, 50u);
     EXPECT_EQ(runLimitText(runLimitParse("[ga]\ngenerations = 7\n")), "limit: 7 generations");
+    EXPECT_EQ(runLimitText(runLimitParse("[ga]\ngenerations = 1\n")), "limit: 1 generation");
     EXPECT_EQ(runLimitText(runLimitParse("[run]\nwall_time = 0\n")), "limit: 50 generations");  // 0: no wall time
 }
 
