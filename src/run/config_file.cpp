@@ -24,6 +24,7 @@
 #include "genome/genome_section.hpp"
 #include "island/migration_section.hpp"
 #include "run/output_folder.hpp"
+#include "run/run_limit.hpp"
 #include "score/score_section.hpp"
 #include "score/target_kinds.hpp"
 #include "search/search_sections.hpp"
@@ -482,6 +483,8 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     readScoreSection(config.section("score"), r.fitness, r.incremental);
     readGenomeSection(config.section("genome"), r.limits);
     readGaSection(config.section("ga"), r.population, r.ga);
+    r.generationsGiven = rd.find("ga", "generations") != nullptr;
+    settleRunLimit(r);
     checkInitialGenes(rd, r);
     readSearchSection(config.section("search"), r.search);
     readMigrationSection(config.section("migration"), r.migration);

@@ -11,6 +11,7 @@
 #include <ostream>
 #include <vector>
 
+#include "base/format_double.hpp"
 #include "base/peak_memory.hpp"
 #include "island/ring_migration.hpp"
 #include "island/stop_signal.hpp"
@@ -20,6 +21,7 @@
 #include "run/island_checkpoints.hpp"
 #include "run/loop_clock.hpp"
 #include "run/progress_line.hpp"
+#include "run/run_limit.hpp"
 #include "run/run_outputs.hpp"
 #include "run/sync_turns.hpp"
 #include "search/evaluator.hpp"
@@ -111,8 +113,9 @@ IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Gramma
 void IslandLoop::printStartLine() {
     if (root_ && !options_.quiet)
         log_ << "shapevo " << (restored_ ? "resume " : "run ") << s_.name << ": grammar " << s_.grammarPath << ", target "
-             << scene_.description() << ", " << mpi_.size() << " island(s) x " << evaluator_.threads()
-             << " thread(s), seed " << s_.seed << ", output " << folder_ << "\n";
+             << scene_.description() << (scene_.choices().empty() ? "" : ", ") << scene_.choices() << ", " << mpi_.size()
+             << " island(s) x " << evaluator_.threads() << " thread(s), seed " << s_.seed << ", output " << folder_ << ", "
+             << runLimitText(s_) << "\n";
 }
 
 void IslandLoop::ownGeneration() {
@@ -174,10 +177,14 @@ JobResult IslandLoop::run() {
     bool stop = false;
     if (restored_) {
         search_.restore(restored_->population, restored_->rng, restored_->generation, restored_->evaluations);
-        // in async mode the islands may stand at different generations: complete only when all are
-        if (mpi_.allTrue(search_.generation() >= s_.population.generations)) {
-            if (root_) log_ << "shapevo: " << folder_ << " is complete at generation " << search_.generation()
-                            << "; pass --generations N to continue it\n";
+        // in async mode the islands may stand at different generations: complete only when all are;
+        // a run whose wall time is spent (the same run.h5 time on every rank) is complete too
+        const bool timeSpent = s_.wallTime > 0 && clock_.secondsBefore() >= s_.wallTime;
+        if (mpi_.allTrue(search_.generation() >= s_.population.generations) || timeSpent) {
+            if (root_)
+                log_ << "shapevo: " << folder_ << " is complete at generation " << search_.generation()
+                     << (timeSpent ? "; its wall time (" + formatDouble(s_.wallTime) + " s) is spent: pass --wall-time S to continue it\n"
+                                   : "; pass --generations N to continue it\n");
             result.evaluations = search_.evaluations();
             return result;
         }

@@ -11,7 +11,8 @@ namespace shapevo {
 
 struct JobOptions {
     bool quiet = false;                         ///< no per-generation progress lines
-    std::optional<std::uint32_t> generations;   ///< resume: new generation limit
+    std::optional<std::uint32_t> generations;   ///< resume: new generation limit (as ga.generations)
+    std::optional<double> wallTime;             ///< resume: new wall time of the whole run, seconds (as run.wall_time)
     bool allowChangedInputs = false;            ///< resume: accept inputs whose files changed
     std::vector<std::string> changedInputs;     ///< resume: those that did (for summary.json)
 };

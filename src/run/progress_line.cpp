@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <ostream>
 
+#include "search/population_settings.hpp"
+
 namespace shapevo {
 
 namespace {
@@ -32,11 +34,14 @@ void ProgressLine::print(const ProgressFigures& f) {
     const GenerationStats& g = f.row;
     const double rate = g.seconds > f.runSecondsBefore ? double(g.evaluations) / g.seconds : 0;
     const double perGeneration = g.seconds / std::max(1u, g.generation);
-    double eta = perGeneration * double(generations_ > g.generation ? generations_ - g.generation : 0);
+    const bool counted = generations_ != kNoGenerationLimit;  // else the wall time alone ends the run
+    double eta = counted ? perGeneration * double(generations_ > g.generation ? generations_ - g.generation : 0) : 1e300;
     if (wallTime_ > 0) eta = std::min(eta, std::max(0.0, wallTime_ - g.seconds));
     char line[320];
-    int n = std::snprintf(line, sizeof line, "gen %*u/%u  best %.5f  IoU %.4f  mean %.5f  %.0f evals/s",
-                          int(std::to_string(generations_).size()), g.generation, generations_, g.best, g.iou, g.mean, rate);
+    int n = counted ? std::snprintf(line, sizeof line, "gen %*u/%u", int(std::to_string(generations_).size()), g.generation, generations_)
+                    : std::snprintf(line, sizeof line, "gen %u", g.generation);
+    n += std::snprintf(line + n, sizeof line - std::size_t(n), "  best %.5f  IoU %.4f  mean %.5f  %.0f evals/s", g.best, g.iou,
+                       g.mean, rate);
     if (f.islands > 1)
         n += std::snprintf(line + n, sizeof line - std::size_t(n), "  wait %.1f%% (max %.1f%%)", 100 * f.waitShareMean,
                            100 * f.waitShareMax);

@@ -24,6 +24,8 @@ struct ProgressFigures {
 
 class ProgressLine {
 public:
+    /// `generations`: the run's limit (kNoGenerationLimit: its wall time alone, "gen 12" without a
+    /// total); `wallTime`: 0 = none.
     ProgressLine(std::ostream& log, std::uint32_t generations, double wallTime);
     /// Whether a line for `generation` is due (`last`: the run stops after it).
     bool due(std::uint32_t generation, bool last) const;

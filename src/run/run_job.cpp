@@ -14,6 +14,7 @@
 #include "checkpoint/run_identity.hpp"
 #include "run/output_folder.hpp"
 #include "run/run_folder_lock.hpp"
+#include "run/run_limit.hpp"
 
 namespace shapevo {
 
@@ -161,7 +162,9 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
                                                  "; resume with --allow-changed-inputs to continue with the files as they are now");
             s = parseConfig(meta.configText, meta.configPath);
             s.seed = meta.seed;
-            if (options.generations) s.population.generations = *options.generations;
+            if (options.generations) s.population.generations = *options.generations, s.generationsGiven = true;
+            if (options.wallTime) s.wallTime = *options.wallTime;
+            settleRunLimit(s);
             grammar = parseGrammar(meta.grammarText, meta.grammarPath, s.grammarAttrs);
             requireRootFits(s, grammar);
             scene = Scene::load(s, grammar);

@@ -31,6 +31,9 @@ public:
     const std::string& description() const { return target_->description(); }
     /// The file a changed-target error names.
     const std::string& primaryFile() const { return target_->primaryFile(); }
+    /// What the target's kind chose for the user, for the start-up line ("cover: auto → opaque
+    /// (the picture has transparency)"); empty when nothing.
+    const std::string& choices() const { return target_->choices(); }
     /// Score the best model again and fill the summary's IoU (and its key); write the kind's files
     /// of it into `folder` (best.vdb for a volume, best-overlay.png for a picture).
     void reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const;

@@ -29,6 +29,7 @@ struct RunSettings {
     int threads = 0;          ///< 0 = all hardware threads
     std::string out;          ///< output folder; empty = runs/<name>[-N]
     double wallTime = 0;      ///< stop (with a checkpoint) after this many seconds; 0 = no limit
+    bool generationsGiven = false;  ///< ga.generations was given (config, --set, resume --generations): run/run_limit.hpp
     std::optional<double> targetFitness;  ///< stop when the best fitness of any island reaches it
 
     std::string grammarPath;
@@ -41,7 +42,7 @@ struct RunSettings {
     IncrementalSettings incremental;  ///< [score] incremental, cache_mb, check_incremental
     GenomeLimits limits;
     SearchSettings search;  ///< which method runs ([search])
-    PopulationSettings population;  ///< [ga] population, generations, initial lengths: every method's sizes
+    PopulationSettings population;  ///< [ga] population, generations (settled by run/run_limit.hpp), initial lengths: every method's sizes
     GaSettings ga;                  ///< [ga] elitism, tournament, mutation, operator weights: the GA's and the hybrid's
     MigrationSettings migration;
     CheckpointSettings checkpoint;

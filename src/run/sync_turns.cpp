@@ -2,6 +2,8 @@
 // checkpoint, print progress.
 #include "run/sync_turns.hpp"
 
+#include <algorithm>
+
 #include "island/stop_signal.hpp"
 
 namespace shapevo {
@@ -27,7 +29,9 @@ TurnDecision SyncTurns::after(const IslandRow& row, std::uint32_t g) {
         targetReached = targetReached || (s.targetFitness && row.best >= *s.targetFitness);
     }
     c_.meta.generation = g;
-    c_.meta.wallSeconds = m.rows.back().seconds;
+    // a run stopped by its wall time has spent it (the clock was read after the row's time), so
+    // that a resume finds it complete
+    c_.meta.wallSeconds = m.wallTimeSpent ? std::max(m.rows.back().seconds, s.wallTime) : m.rows.back().seconds;
     std::string& stopReason = c_.stop.why;
     if (m.signal > 0) stopReason = signalName(m.signal), c_.stop.bySignal = true;
     else if (m.wallTimeSpent) stopReason = "the wall-time budget";

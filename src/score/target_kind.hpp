@@ -73,6 +73,9 @@ public:
     const std::string& description() const { return description_; }
     /// The file a changed-target error names.
     const std::string& primaryFile() const { return primaryFile_; }
+    /// What the kind chose where the config left the choice to it, for the start-up line, e.g.
+    /// "cover: auto → opaque (the picture has transparency)"; empty when it chose nothing.
+    const std::string& choices() const { return choices_; }
     /// Score `c` (valid for the run's grammar) with the run's scorer, and count what it covers.
     virtual Evaluation evaluate(const Chromosome& c) const = 0;
     /// The IoU of `c` (Evaluation::iou) from one scoring pass: the progress line and the curve's
@@ -86,9 +89,9 @@ public:
     virtual void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const = 0;
 
 protected:
-    /// Set by the kind's constructor: hash(), description(), primaryFile().
+    /// Set by the kind's constructor: hash(), description(), primaryFile(), choices().
     std::uint64_t hash_ = 0;
-    std::string description_, primaryFile_;
+    std::string description_, primaryFile_, choices_;
 };
 
 /// A kind's settings, made by its reader (TargetKind::readTarget) and finished by the table

@@ -8,9 +8,12 @@
 
 namespace shapevo {
 
+/// PopulationSettings::generations of a run limited by its wall time alone (run/run_limit.hpp).
+inline constexpr std::uint32_t kNoGenerationLimit = UINT32_MAX;
+
 struct PopulationSettings {
     std::uint32_t population = 200;   ///< individuals of one island (particles for SMC, chains for RJMCMC)
-    std::uint32_t generations = 50;   ///< a run stops after this many generations
+    std::uint32_t generations = 50;   ///< a run stops after this many generations (kNoGenerationLimit: none)
     std::uint32_t initialGenesMin = 2, initialGenesMax = 40;  ///< initial length drawn uniformly in between
 };
 

@@ -1,6 +1,6 @@
 // Any logo (issue 14): the shipped tree and city configs take a PNG of any size and shape through
-// `--set target.image=...` alone (plus target.cover = "opaque" for a logo on a transparent
-// background): logos made here (a 229 x 304 disc, a 400 x 150 bar, a 256 x 256 white star on
+// `--set target.image=...` alone (target.cover = "auto", the default, covers the opaque pixels of a
+// logo on a transparent background and the dark ones of any other): logos made here (a 229 x 304 disc, a 400 x 150 bar, a 256 x 256 white star on
 // transparency) are fitted into the 800 x 600 frame and a short run's silhouette IoU rises above
 // a floor. A relative --set path is taken from the current directory and a resume finds the same
 // target; a 1 x 1 or 30000 x 30000 PNG is one clear message and exit 2, creating nothing.
@@ -88,7 +88,7 @@ TEST(AnyLogo, TreeLogoConfigCoversTheOpaquePixelsOfAWhiteStarOnTransparency) {
         writeLogo(path, 256, 256, [](int x, int y) {
             return std::hypot(x - 128, y - 128) < 60 + 40 * std::cos(5 * std::atan2(y - 128.0, x - 128.0));
         }, kWhite, kClear);
-    }, " --set target.cover=opaque --set ga.generations=25", 0.55);
+    }, " --set ga.generations=25", 0.55);  // no cover flag: target.cover = "auto" sees the transparency
 }
 
 TEST(AnyLogo, ARelativeLogoIsTakenFromTheCurrentDirectoryAndAResumeFindsTheSameTarget) {

@@ -1,5 +1,5 @@
 // The [target] keys of an image target that fit it into the camera's frame and choose its pixels:
-// target.fit (contain by default, cover, stretch, exact) and target.cover (dark by default,
+// target.fit (contain by default, cover, stretch, exact) and target.cover (auto by default, dark,
 // light, opaque), their errors with place, cover against the explicit luminance ranges, and a
 // relative target.image given with --set being taken from the current directory.
 #include <gtest/gtest.h>
@@ -44,14 +44,20 @@ void expectRule(const PixelRule& r, const PixelRule& want) {
     EXPECT_EQ(r.avoidMax, want.avoidMax);
     EXPECT_EQ(r.alphaThreshold, want.alphaThreshold);
     EXPECT_EQ(r.transparentAvoid, want.transparentAvoid);
+    EXPECT_EQ(r.autoCover, want.autoCover);
 }
 
-TEST(ImageTargetKeys, FitDefaultsToContainAndCoverToDark) {
+TEST(ImageTargetKeys, FitDefaultsToContainAndCoverToAuto) {
     const RunSettings s = parse("");
     ASSERT_EQ(&s.target->kind(), &imageTargetKind);
     EXPECT_EQ(imageOf(s).fit, TargetFit::Contain);
-    expectRule(imageOf(s).rule, PixelRule{});
-    expectRule(imageOf(s).rule, PixelRule::forCover(TargetCover::Dark));
+    expectRule(imageOf(s).rule, PixelRule::forCover(TargetCover::Auto));
+    EXPECT_TRUE(imageOf(s).rule.autoCover);  // the picture's transparency chooses when it is loaded
+    PixelRule dark = PixelRule::forCover(TargetCover::Dark);
+    dark.autoCover = true;  // whose ranges are the dark preset's
+    expectRule(imageOf(s).rule, dark);
+    expectRule(imageOf(parse("cover = \"auto\"\n")).rule, PixelRule::forCover(TargetCover::Auto));
+    expectRule(imageOf(parse("alpha_threshold = 10\n")).rule, PixelRule::forCover(TargetCover::Auto, 10));
     EXPECT_EQ(imageOf(s).png, "/configs/logo.png");  // in the file: relative to the config
 }
 
@@ -85,9 +91,10 @@ TEST(ImageTargetKeys, CoverPresetsSetTheRangesAndKeepTheAlphaThreshold) {
     expectRule(imageOf(parse("cover = \"opaque\"\nalpha_threshold = 10\n")).rule, PixelRule::forCover(TargetCover::Opaque, 10));
     expectRule(imageOf(parse("alpha_threshold = 10\ncover = \"light\"\n")).rule, PixelRule::forCover(TargetCover::Light, 10));
     expectRule(imageOf(parse("cover = \"dark\"\n", {"target.cover=opaque"})).rule, PixelRule::forCover(TargetCover::Opaque));
+    expectRule(imageOf(parse("cover = \"dark\"\n")).rule, PixelRule{});  // dark, chosen: no auto
     const InputError e = imageKeyError("cover = \"alpha\"\n");
     EXPECT_EQ(e.where(), "5:9");
-    EXPECT_NE(e.message().find("target.cover must be \"dark\", \"light\" or \"opaque\", got \"alpha\""), std::string::npos)
+    EXPECT_NE(e.message().find("target.cover must be \"auto\", \"dark\", \"light\" or \"opaque\", got \"alpha\""), std::string::npos)
         << e.message();
 }
 
@@ -98,10 +105,12 @@ TEST(ImageTargetKeys, CoverAndAnExplicitLuminanceRangeTogetherAreAnErrorNamingBo
     const InputError set = imageKeyError("avoid_min = 200\n", {"target.cover=opaque"});
     EXPECT_EQ(set.file(), "--set");
     EXPECT_NE(set.message().find("target.avoid_min"), std::string::npos) << set.message();
-    // without cover the ranges work as before
+    EXPECT_NE(imageKeyError("cover = \"auto\"\nhit_min = 3\n").message().find("target.cover and target.hit_min"), std::string::npos);
+    // without cover the ranges work as before, and say which pixels to cover: no auto
     const PixelRule r = imageOf(parse("hit_max = 80\navoid_min = 200\n")).rule;
     EXPECT_EQ(r.hitMax, 80);
     EXPECT_EQ(r.avoidMin, 200);
+    EXPECT_FALSE(r.autoCover);
 }
 
 TEST(ImageTargetKeys, ARelativeImageGivenWithSetIsTakenFromTheCurrentDirectory) {

@@ -49,7 +49,9 @@ void RunCommand::addOptions(CLI::App& command) {
     RunOptions& o = runOptions;
     command.add_option("config", o.config, "TOML config (see configs/)")->required();
     o.seedOption = command.add_option("--seed", o.seed, "random seed, 0 to 2^63-1 (overrides run.seed; written into the run's config.toml)");
-    command.add_option("--set", o.sets, "override a config value, e.g. --set ga.population=50 (repeatable)");
+    command.add_option("--set", o.sets,
+                       "override a config value, e.g. --set ga.population=50 (repeatable); --set run.wall_time=60 "
+                       "without ga.generations runs for 60 s, with it for whichever comes first");
     command.add_option("--out", o.out, "output folder; must not exist (default runs/<name>, runs/<name>-2, ...)");
     command.add_option("--threads", o.threads, "threads (overrides run.threads; 0 = all cores)")->check(CLI::NonNegativeNumber);
     command.add_flag("-q,--quiet", o.quiet, "no per-generation progress lines");

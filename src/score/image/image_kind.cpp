@@ -2,7 +2,9 @@
 // start-up visibility check, IoU, best-overlay.png) and its entry.
 #include "score/image/image_kind.hpp"
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <sstream>
 
 #include "base/format_double.hpp"
@@ -104,6 +106,8 @@ public:
         requireVisible(c, scorer_);
         description_ = s.png + " (" + imagePlacement(target_, s.fit) + ", " + std::to_string(target_.hitCount) + " to cover, " +
                        kind + groundNote(camera_) + ")";
+        if (target_.autoCover == TargetCover::Opaque) choices_ = "cover: auto → opaque (the picture has transparency)";
+        if (target_.autoCover == TargetCover::Dark) choices_ = "cover: auto → dark (the picture has no transparency)";
     }
     const Scorer& scorer() const override { return scorer_; }
 
@@ -185,25 +189,29 @@ std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
     readInt(r, "alpha_threshold", rule.alphaThreshold, 0, 256,
             "image: pixels with alpha below this are transparent: don't care (avoided with cover = \"opaque\")");
     // target.cover: a preset for the four ranges, so it is either it or them; alpha_threshold
-    // goes with both.
+    // goes with both. Neither given: "auto" (the picture's transparency chooses when it is loaded).
+    const char* const rangeKeys[] = {"hit_min", "hit_max", "avoid_min", "avoid_max"};
     std::string cover;
     r.string("cover", cover,
              "image: which pixels to cover, a preset of hit_min, hit_max, avoid_min and avoid_max: \"dark\" "
              "(luminance 0-127 hit, 128-255 avoid), \"light\" (the reverse) or \"opaque\" (opaque pixels hit, "
              "transparent ones avoid); not with those four keys");
     if (r.has("cover")) {
-        const TargetCover presets[] = {TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
+        const TargetCover presets[] = {TargetCover::Auto, TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
         const TargetCover* preset = nullptr;
         for (const TargetCover& c : presets)
             if (cover == targetCoverName(c)) preset = &c;
-        if (!preset) r.fail("cover", "target.cover must be \"dark\", \"light\" or \"opaque\", got \"" + shortened(cover) + "\"");
-        for (const char* k : {"hit_min", "hit_max", "avoid_min", "avoid_max"})
+        if (!preset)
+            r.fail("cover", "target.cover must be \"auto\", \"dark\", \"light\" or \"opaque\", got \"" + shortened(cover) + "\"");
+        for (const char* k : rangeKeys)
             if (r.has(k))
                 r.failKeys({"target.cover", "target.hit_min", "target.hit_max", "target.avoid_min", "target.avoid_max"}, "[target]",
                            "target.cover and target." + std::string(k) +
-                               " both say which pixels to cover: give the preset (cover = \"dark\", \"light\" or "
+                               " both say which pixels to cover: give the preset (cover = \"auto\", \"dark\", \"light\" or "
                                "\"opaque\") or the luminance ranges (hit_min, hit_max, avoid_min, avoid_max), not both");
         rule = PixelRule::forCover(*preset, rule.alphaThreshold);
+    } else if (std::none_of(std::begin(rangeKeys), std::end(rangeKeys), [&](const char* k) { return r.has(k); })) {
+        rule = PixelRule::forCover(TargetCover::Auto, rule.alphaThreshold);
     }
     std::string fit = targetFitName(s->fit);
     r.string("fit", fit,

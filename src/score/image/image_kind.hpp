@@ -2,12 +2,14 @@
 // image_target.hpp), seen through a camera: a perspective or orthographic silhouette, or a shadow
 // on a ground plane (score/image/camera.hpp). Its [target] keys:
 //   image = "FILE.png"                                  names this kind
-//   cover = "dark" | "light" | "opaque"  or  hit_min, hit_max, avoid_min, avoid_max; alpha_threshold
+//   cover = "auto" (default) | "dark" | "light" | "opaque"  or  hit_min, hit_max, avoid_min, avoid_max;
+//   alpha_threshold
 //   fit = "contain" | "cover" | "stretch" | "exact";  scale (contain and stretch only)
 // and its own section [camera] (projection and its settings). Its IoU is the silhouette IoU
-// ("silhouette_iou"), its best-model output best-overlay.png (the silhouette against the
-// picture), its export format png, a run hashes the picture, and `shapevo target MESH --image
-// CONFIG` draws a mesh into a picture target through a config's camera and pixel rule.
+// ("silhouette_iou"), the preset target.cover = "auto" chose is its LoadedTarget::choices(), its
+// best-model output best-overlay.png (the silhouette against the picture), its export format png,
+// a run hashes the picture, and `shapevo target MESH --image CONFIG` draws a mesh into a picture
+// target through a config's camera and pixel rule (an opaque picture, which "auto" reads as dark).
 #pragma once
 #include <string>
 

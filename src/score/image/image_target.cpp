@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <algorithm>
-
 #include "base/hash.hpp"
 #include "base/input_error.hpp"
 #include "image/png_image.hpp"
@@ -69,6 +67,7 @@ PixelRule PixelRule::forCover(TargetCover cover, int alphaThreshold) {
     PixelRule r;
     r.alphaThreshold = alphaThreshold;
     switch (cover) {
+        case TargetCover::Auto: r.autoCover = true; break;
         case TargetCover::Dark: break;
         case TargetCover::Light: r.hitMin = 128, r.hitMax = 255, r.avoidMin = 0, r.avoidMax = 127; break;
         case TargetCover::Opaque: r.hitMin = 0, r.hitMax = 255, r.avoidMin = 1, r.avoidMax = 0, r.transparentAvoid = true; break;
@@ -88,6 +87,7 @@ const char* targetFitName(TargetFit fit) {
 
 const char* targetCoverName(TargetCover cover) {
     switch (cover) {
+        case TargetCover::Auto: return "auto";
         case TargetCover::Dark: return "dark";
         case TargetCover::Light: return "light";
         case TargetCover::Opaque: return "opaque";
@@ -212,9 +212,16 @@ ImageTarget fitImageTarget(const ImageTarget& picture, int frameWidth, int frame
     return t;
 }
 
-ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int frameWidth, int frameHeight, TargetFit fit,
+ImageTarget loadImageTarget(const std::string& path, const PixelRule& given, int frameWidth, int frameHeight, TargetFit fit,
                             double scale) {
     const PngImage image = readPng(path);
+    // target.cover = "auto": a picture with a transparent pixel is a logo on transparency
+    TargetCover autoCover = TargetCover::Auto;
+    if (given.autoCover)
+        autoCover = std::any_of(image.alpha.begin(), image.alpha.end(), [&](std::uint8_t a) { return a < given.alphaThreshold; })
+                        ? TargetCover::Opaque
+                        : TargetCover::Dark;
+    const PixelRule rule = autoCover == TargetCover::Opaque ? PixelRule::forCover(TargetCover::Opaque, given.alphaThreshold) : given;
     if (image.width < kMinTargetSide || image.height < kMinTargetSide)
         throw InputError(path, "",
                          "the image is " + size(image.width, image.height) + " pixels, too small for a target: it needs at least " +
@@ -239,9 +246,11 @@ ImageTarget loadImageTarget(const std::string& path, const PixelRule& rule, int 
                                                    " with alpha >= " + std::to_string(rule.alphaThreshold);
         throw InputError(path, "",
                          "no hit pixel: " + which + (picture.hitCount > 0 ? " once fitted into the camera's frame" : "") +
+                             (autoCover != TargetCover::Auto ? " (target.cover = \"auto\" chose \"" + std::string(targetCoverName(autoCover)) + "\")" : "") +
                              ", so there is nothing to match (target.cover = \"dark\" covers dark pixels, \"light\" light "
                              "ones, \"opaque\" the opaque ones of a picture on a transparent background)");
     }
+    t.autoCover = autoCover;
     return t;
 }
 

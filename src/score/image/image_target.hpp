@@ -4,10 +4,12 @@
 // Which pixels are which (PixelRule): luminance in the hit range -> hit, luminance in the avoid
 // range -> avoid, anything else -> don't care; a pixel whose alpha is below the threshold is don't
 // care, or avoid when `transparentAvoid` is set. The presets (TargetCover, config key
-// target.cover): "dark" (the default: 0..127 hit, 128..255 avoid, transparent don't care; on the
-// papers' black-on-white targets that is "black = target"), "light" (the ranges swapped) and
-// "opaque" (alpha >= threshold hit whatever its colour, transparent avoid: white or coloured logos
-// on a transparent background).
+// target.cover): "auto" (the default: "opaque" for a picture with transparency, i.e. at least one
+// pixel whose alpha is below the threshold, "dark" for one without; loadImageTarget decides and
+// says which in ImageTarget::autoCover), "dark" (0..127 hit, 128..255 avoid, transparent don't
+// care; on the papers' black-on-white targets that is "black = target"), "light" (the ranges
+// swapped) and "opaque" (alpha >= threshold hit whatever its colour, transparent avoid: white or
+// coloured logos on a transparent background).
 //
 // How the picture meets the frame (TargetFit, config key target.fit): the picture is classified
 // at its own size, then resampled into a rectangle of the frame (TargetPlacement):
@@ -31,7 +33,7 @@
 
 namespace shapevo {
 
-enum class TargetCover { Dark, Light, Opaque };
+enum class TargetCover { Auto, Dark, Light, Opaque };
 enum class TargetFit { Contain, Cover, Stretch, Exact };
 
 /// A picture smaller than this on a side is refused as a target: there is no shape in it.
@@ -42,8 +44,13 @@ struct PixelRule {
     int avoidMin = 128, avoidMax = 255; ///< luminance range of avoid pixels (min > max: none)
     int alphaThreshold = 128;           ///< pixels with alpha below this are transparent (0: none is)
     bool transparentAvoid = false;      ///< transparent pixels are avoid (else don't care)
+    /// target.cover = "auto": loadImageTarget uses the opaque preset (same threshold) for a
+    /// picture with a transparent pixel, and this rule (the dark ranges) for one without.
+    /// makeImageTarget ignores it.
+    bool autoCover = false;
 
-    /// The rule of a preset; `alphaThreshold` is kept as given.
+    /// The rule of a preset (Auto: the dark ranges with autoCover set); `alphaThreshold` is kept
+    /// as given.
     static PixelRule forCover(TargetCover cover, int alphaThreshold = 128);
 
     /// InputError(file, section + ".<key>", ...) if a bound is outside 0..255 (threshold 0..256)
@@ -75,7 +82,7 @@ TargetPlacement placeTarget(int pictureWidth, int pictureHeight, int frameWidth,
                             double scale);
 
 const char* targetFitName(TargetFit fit);      ///< "contain", "cover", "stretch", "exact"
-const char* targetCoverName(TargetCover cover);  ///< "dark", "light", "opaque"
+const char* targetCoverName(TargetCover cover);  ///< "auto", "dark", "light", "opaque"
 
 struct ImageTarget {
     std::string path;
@@ -87,6 +94,9 @@ struct ImageTarget {
     std::uint64_t hitCount = 0;
     std::uint64_t avoidCount = 0;
     std::uint64_t hash = 0;            ///< XXH3-64 of the frame's size and bits; identifies the target in outputs
+    /// Under target.cover = "auto" (PixelRule::autoCover), the preset loadImageTarget chose: Opaque
+    /// (the picture has a pixel with alpha below the threshold) or Dark; Auto otherwise.
+    TargetCover autoCover = TargetCover::Auto;
 
     int wordsPerRow() const { return (width + 63) / 64; }
     bool isHit(int x, int y) const { return (hit[std::size_t(y) * std::size_t(wordsPerRow()) + std::size_t(x >> 6)] >> (x & 63)) & 1; }
@@ -104,7 +114,8 @@ ImageTarget makeImageTarget(int width, int height, const std::vector<std::uint8_
 ImageTarget fitImageTarget(const ImageTarget& picture, int frameWidth, int frameHeight, const TargetPlacement& placement);
 
 /// Read the PNG at `path`, classify its pixels and fit them into the frameWidth x frameHeight
-/// frame. Throws InputError naming the file if it cannot be read (see readPng), if it is smaller
+/// frame; under rule.autoCover the picture's transparency chooses the rule first (see PixelRule).
+/// Throws InputError naming the file if it cannot be read (see readPng), if it is smaller
 /// than kMinTargetSide on a side, if `fit` is exact and its size is not the frame's (an odd-sized
 /// target), if no pixel of the fitted target is a hit pixel (nothing to match), or, for the
 /// opaque preset (transparentAvoid with the full hit range), if no pixel is transparent.
