@@ -392,7 +392,8 @@ void readRunSection(SectionReader& r, RunSettings& run) {
             "gives; results do not depend on it");
     run.threads = int(threads);
     r.string("out", run.out, "the output folder (--out overrides); default runs/<name>");
-    r.number("wall_time", run.wallTime, 0, 1e9, "stop (with a checkpoint) after this many seconds; 0 = no limit");
+    r.number("wall_time", run.wallTime, 0, 1e9, "stop (with a checkpoint) after this many seconds of the whole run, summed over resumes; 0 = no "
+             "limit. Without ga.generations the run lasts this long; with it, whichever comes first");
     double targetFitness = std::nan("");
     r.number("target_fitness", targetFitness, -1e300, 1e300, "stop when any island's best fitness reaches it; none when absent");
     if (!std::isnan(targetFitness)) run.targetFitness = targetFitness;

@@ -13,7 +13,9 @@ void readGaSection(SectionReader& r, PopulationSettings& p, GaSettings& g) {
     constexpr double big = 1e12;
     r.count("population", p.population, 2, 1e7,
             "individuals per island (per MPI rank); the sizes of [ga] apply to every search method");
-    r.count("generations", p.generations, 1, 1e9, "generations per run; generation 1 is the initial population");
+    r.count("generations", p.generations, 1, 1e9, "generations per run (generation 1 is the initial population); with run.wall_time and no generations, "
+            "the wall time alone ends the run; in async island mode every island does at least this many (one that "
+            "finishes first goes on until the slowest has)");
     r.count("elitism", g.elitism, 0, 1e7,
             "the best individuals kept unchanged in the next generation; smaller than population");
     r.count("tournament", g.tournament, 1, 1e7, "individuals drawn per tournament selection; at most population");

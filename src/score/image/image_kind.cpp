@@ -187,15 +187,18 @@ std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
     readInt(r, "avoid_min", rule.avoidMin, 0, 255, "image: lowest luminance of the pixels the model must leave empty");
     readInt(r, "avoid_max", rule.avoidMax, 0, 255, "image: highest luminance of the pixels the model must leave empty");
     readInt(r, "alpha_threshold", rule.alphaThreshold, 0, 256,
-            "image: pixels with alpha below this are transparent: don't care (avoided with cover = \"opaque\")");
+            "image: pixels with alpha below this are transparent: don't care (avoided with cover = \"opaque\"; what "
+            "makes cover = \"auto\" choose \"opaque\")");
     // target.cover: a preset for the four ranges, so it is either it or them; alpha_threshold
     // goes with both. Neither given: "auto" (the picture's transparency chooses when it is loaded).
     const char* const rangeKeys[] = {"hit_min", "hit_max", "avoid_min", "avoid_max"};
-    std::string cover;
+    std::string cover(targetCoverName(TargetCover::Auto));  // the default when no range is given either
     r.string("cover", cover,
-             "image: which pixels to cover, a preset of hit_min, hit_max, avoid_min and avoid_max: \"dark\" "
-             "(luminance 0-127 hit, 128-255 avoid), \"light\" (the reverse) or \"opaque\" (opaque pixels hit, "
-             "transparent ones avoid); not with those four keys");
+             "image: which pixels to cover, a preset of hit_min, hit_max, avoid_min and avoid_max: \"auto\" (when the "
+             "picture is loaded: \"opaque\" if it has transparency, a pixel with alpha below alpha_threshold, else "
+             "\"dark\"; the run's first line says which), \"dark\" (luminance 0-127 hit, 128-255 avoid), \"light\" (the "
+             "reverse) or \"opaque\" (opaque pixels hit, transparent ones avoid); not with those four keys, and giving "
+             "any of them without cover sets the ranges instead");
     if (r.has("cover")) {
         const TargetCover presets[] = {TargetCover::Auto, TargetCover::Dark, TargetCover::Light, TargetCover::Opaque};
         const TargetCover* preset = nullptr;
