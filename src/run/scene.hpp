@@ -31,6 +31,9 @@ public:
     const std::string& description() const { return target_->description(); }
     /// The file a changed-target error names.
     const std::string& primaryFile() const { return target_->primaryFile(); }
+    /// The hashes of the target files as the kind read them (LoadedTarget::inputHashes; may be
+    /// empty).
+    const std::vector<std::uint64_t>& targetInputHashes() const { return target_->inputHashes(); }
     /// Score the best model again and fill the summary's IoU (and its key); write the kind's files
     /// of it into `folder` (best.vdb for a volume, best-overlay.png for a picture).
     void reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const;

@@ -73,6 +73,10 @@ public:
     const std::string& description() const { return description_; }
     /// The file a changed-target error names.
     const std::string& primaryFile() const { return primaryFile_; }
+    /// hash64 of the bytes the loader read of each of TargetSettings::inputFiles(), in order (what
+    /// hashFile gives): a run records its target inputs without reading them again. Empty when
+    /// the kind does not keep them; the run then hashes the files itself.
+    const std::vector<std::uint64_t>& inputHashes() const { return inputHashes_; }
     /// Score `c` (valid for the run's grammar) with the run's scorer, and count what it covers.
     virtual Evaluation evaluate(const Chromosome& c) const = 0;
     /// The IoU of `c` (Evaluation::iou) from one scoring pass: the progress line and the curve's
@@ -86,9 +90,10 @@ public:
     virtual void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const = 0;
 
 protected:
-    /// Set by the kind's constructor: hash(), description(), primaryFile().
+    /// Set by the kind's constructor: hash(), description(), primaryFile(), inputHashes().
     std::uint64_t hash_ = 0;
     std::string description_, primaryFile_;
+    std::vector<std::uint64_t> inputHashes_;
 };
 
 /// A kind's settings, made by its reader (TargetKind::readTarget) and finished by the table

@@ -94,7 +94,7 @@ inline std::string toDae(const Mesh& m, const glm::vec3& move) {
 
 // ---- 3MF: a ZIP archive (stored, no compression) of the 3D model XML and its relationships ----
 
-inline std::uint32_t crc32(const std::string& bytes) {
+inline std::uint32_t zipCrc32(const std::string& bytes) {  // not crc32: png_test_util.hpp has one (unity build)
     std::uint32_t c = 0xffffffffu;
     for (unsigned char b : bytes) {
         c ^= b;
@@ -108,7 +108,7 @@ inline std::string storedZip(const std::vector<std::pair<std::string, std::strin
     auto u32 = [&](std::string& o, std::uint32_t v) { u16(o, std::uint16_t(v & 0xffff)), u16(o, std::uint16_t(v >> 16)); };
     std::string out, central;
     for (const auto& [name, data] : files) {
-        const std::uint32_t offset = std::uint32_t(out.size()), crc = crc32(data), size = std::uint32_t(data.size());
+        const std::uint32_t offset = std::uint32_t(out.size()), crc = zipCrc32(data), size = std::uint32_t(data.size());
         u32(out, 0x04034b50), u16(out, 20), u16(out, 0), u16(out, 0), u16(out, 0), u16(out, 0x21);
         u32(out, crc), u32(out, size), u32(out, size), u16(out, std::uint16_t(name.size())), u16(out, 0);
         out += name + data;
