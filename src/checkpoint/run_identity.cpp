@@ -82,6 +82,10 @@ InputFile hashInput(const std::string& role, const std::string& path) {
     return {role, absolute, f.hash};
 }
 
+InputFile recordInput(const std::string& role, const std::string& path, std::uint64_t hash) {
+    return {role, std::filesystem::absolute(path).lexically_normal().string(), hash};
+}
+
 std::vector<std::string> changedInputs(const std::vector<InputFile>& inputs) {
     std::vector<std::string> changed;
     for (const InputFile& f : inputs) {

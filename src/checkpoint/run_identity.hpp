@@ -35,6 +35,9 @@ std::string islandMismatch(const IslandState& island, const RunMetadata& run, in
 
 /// An input file and the XXH3-64 of its bytes now. @throw InputError naming it if unreadable.
 InputFile hashInput(const std::string& role, const std::string& path);
+/// The record of an input its loader has already read and hashed (hash64 of its bytes, as
+/// hashFile gives): the same InputFile as hashInput, without reading the file again.
+InputFile recordInput(const std::string& role, const std::string& path, std::uint64_t hash);
 /// The inputs whose files changed (or vanished) since `inputs` was recorded, one line each:
 /// "grammar /abs/part.obj changed (was 0123..., now 4567...)".
 std::vector<std::string> changedInputs(const std::vector<InputFile>& inputs);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/atomic_write.hpp"
+#include "base/side_by_side.hpp"
 #include "checkpoint/checkpoint_file.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
@@ -33,14 +34,19 @@ void writeFile(const std::string& path, const std::string& text) {
 }
 
 /// Every input file of a run: the config, the grammar, the files it includes, the meshes and
-/// textures it names and the targets.
-std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g) {
+/// textures it names and the targets (with the hashes of the bytes the scene read, where its kind
+/// kept them: a target is read once).
+std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g, const Scene& scene) {
     std::vector<InputFile> inputs{hashInput("config", s.configPath), hashInput("grammar", s.grammarPath)};
     const std::filesystem::path grammarDir = std::filesystem::path(s.grammarPath).parent_path();
     for (const std::string& f : g.includes) inputs.push_back(hashInput("include", (grammarDir / f).string()));
     for (const MeshShape& m : g.meshes) inputs.push_back(hashInput("mesh", (grammarDir / m.path).string()));
     for (const Texture& t : g.textures) inputs.push_back(hashInput("texture", t.file));
-    for (const std::string& t : s.target->inputFiles()) inputs.push_back(hashInput("target", t));
+    const std::vector<std::string> targets = s.target->inputFiles();
+    const std::vector<std::uint64_t>& read = scene.targetInputHashes();
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        inputs.push_back(read.size() == targets.size() ? recordInput("target", targets[i], read[i])
+                                                       : hashInput("target", targets[i]));
     return inputs;
 }
 
@@ -55,7 +61,7 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
         grammar = loadGrammar(s.grammarPath, s.grammarAttrs);
         requireRootFits(s, grammar);
         scene = Scene::load(s, grammar);
-        if (mpi.rank() == 0) meta.inputs = inputsOf(s, grammar);
+        if (mpi.rank() == 0) meta.inputs = inputsOf(s, grammar, *scene);
     });
     std::string folder;
     RunFolderLock lock;
@@ -66,11 +72,10 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     });
     folder = mpi.broadcast(folder);
     meta.runId = mpi.broadcast(mpi.rank() == 0 ? newRunId() : std::string());
-    if (mpi.rank() == 0) {
-        writeRunId(folder, meta.runId);
-        writeFile(folder + "/config.toml", s.configText);
-        writeFile(folder + "/" + std::filesystem::path(s.grammarPath).filename().string(), grammar.source);
-    }
+    if (mpi.rank() == 0)  // side by side: each waits for the disk (base/side_by_side.hpp)
+        runSideBySide({[&] { writeRunId(folder, meta.runId); },
+                       [&] { writeFile(folder + "/config.toml", s.configText); },
+                       [&] { writeFile(folder + "/" + std::filesystem::path(s.grammarPath).filename().string(), grammar.source); }});
     meta.seed = s.seed;
     meta.ranks = mpi.size();
     meta.targetHash = scene->hash();

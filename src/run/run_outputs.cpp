@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <ostream>
 #include <vector>
 
+#include "base/side_by_side.hpp"
 #include "genome/genome_file.hpp"
 #include "geometry/derive.hpp"
 #include "mesh/glb_writer.hpp"
@@ -74,32 +76,37 @@ RunTotals gatherTotals(const MpiSession& mpi, const IslandTotals& own, const Loo
 
 namespace {
 
-/// best.png, best.obj, best.ply, best.glb, best.genome; returns the model's primitive count.
-std::size_t writeBestModel(const RunEnd& end) {
+/// The best model's files (best.png, best.obj, best.ply, best.glb, best.genome), the curves
+/// (curve.csv, curve.svg, curve.png) and the target kind's files (Scene::reportBest: best.vdb, ...),
+/// written side by side (base/side_by_side.hpp): each waits for the disk, and the pictures'
+/// drawing and compressing take most of the rest. A mesh with textures writes its OBJ once all
+/// the others exist, so that its images (report/texture_files.hpp) never take, nor lose, the name
+/// of another output. Fills the summary's primitive count and IoU.
+void writeModelAndCurves(const RunEnd& end, RunSummary& sum) {
     Geometry geometry;
     DeriveScratch scratch;
     derive(end.grammar, end.champion, geometry, scratch, end.s.limits.maxPrimitives);
+    sum.bestPrimitives = geometry.primitives.size();
     const Mesh mesh = meshOf(geometry);
     const std::string& folder = end.folder;
-    // best.png first: a grammar's texture named best.png then goes beside best.obj as best_2.png
-    writeModelPicture(mesh, std::array{View::ThreeQuarter}, PictureSize{}, folder + "/best.png");
-    writeObj(mesh, folder + "/best.obj");
-    writePly(mesh, folder + "/best.ply");
-    writeGlb(mesh, folder + "/best.glb");
-    writeGenome(end.grammar, end.champion, folder + "/best.genome");
-    return geometry.primitives.size();
-}
-
-/// curve.csv, curve.svg, curve.png.
-void writeCurves(const RunEnd& end) {
-    const RunSettings& s = end.s;
-    const std::string& folder = end.folder;
-    writeCurveCsv(end.meta.curve, folder + "/curve.csv");
     CurvePlotLabels plot;
-    plot.title = (s.name.empty() ? std::string("shapevo run") : s.name) + ": " + end.scene.description();
+    plot.title = (end.s.name.empty() ? std::string("shapevo run") : end.s.name) + ": " + end.scene.description();
     plot.iouName = end.scene.kind().iouName;
-    writeCurveSvg(end.meta.curve, plot, folder + "/curve.svg");
-    writeCurvePng(end.meta.curve, plot, folder + "/curve.png");
+    const std::vector<GenerationStats>& curve = end.meta.curve;
+    const bool textured = !mesh.textures.empty();
+    std::vector<std::function<void()>> jobs{
+        [&] { writeModelPicture(mesh, std::array{View::ThreeQuarter}, PictureSize{}, folder + "/best.png"); },
+        [&] { writePly(mesh, folder + "/best.ply"); },
+        [&] { writeGlb(mesh, folder + "/best.glb"); },
+        [&] { writeGenome(end.grammar, end.champion, folder + "/best.genome"); },
+        [&] { writeCurveCsv(curve, folder + "/curve.csv"); },
+        [&] { writeCurveSvg(curve, plot, folder + "/curve.svg"); },
+        [&] { writeCurvePng(curve, plot, folder + "/curve.png"); },
+        [&] { end.scene.reportBest(end.champion, folder, sum); },
+    };
+    if (!textured) jobs.push_back([&] { writeObj(mesh, folder + "/best.obj"); });
+    runSideBySide(jobs);
+    if (textured) writeObj(mesh, folder + "/best.obj");
 }
 
 /// The scorer's warnings (stderr): evaluations that got the worst fitness or were truncated.
@@ -136,9 +143,8 @@ void writeRunOutputs(const RunEnd& end, JobResult& result, std::ostream& log) {
     const RunSettings& s = end.s;
     const RunMetadata& meta = end.meta;
     const RunTotals& t = end.totals;
-    const std::size_t primitives = writeBestModel(end);
-    writeCurves(end);
     RunSummary sum;
+    writeModelAndCurves(end, sum);
     sum.name = s.name;
     sum.config = meta.configPath;
     sum.grammar = meta.grammarPath;
@@ -148,9 +154,7 @@ void writeRunOutputs(const RunEnd& end, JobResult& result, std::ostream& log) {
     sum.wallSeconds = result.wallSeconds;
     sum.bestFitness = result.bestFitness;
     sum.bestGenes = end.champion.genes;
-    sum.bestPrimitives = primitives;
     sum.targetHash = end.scene.hash();
-    end.scene.reportBest(end.champion, end.folder, sum);
     result.iou = sum.iou;
     sum.threads = end.threads;
     sum.islands = end.ranks;

@@ -1,8 +1,11 @@
 // The end of a run: the best individual of all islands and the run's totals gathered from every
 // rank (collective), then rank 0's outputs in the run folder: best.png, best.obj (and best.mtl),
-// best.ply, best.glb, best.genome, curve.csv/.svg/.png, the target kind's own files and
-// summary.json (Scene::reportBest), the scorer's warnings and the closing line.
-// Promise: the collectives run in the same order on every rank; only rank 0 writes.
+// best.ply, best.glb, best.genome, curve.csv/.svg/.png and the target kind's own files
+// (Scene::reportBest), written side by side (base/side_by_side.hpp; a textured best.obj after the
+// others, so its images take free names), then summary.json, the scorer's warnings and the
+// closing line.
+// Promise: the collectives run in the same order on every rank; only rank 0 writes; each file's
+// bytes do not depend on the order the files are written in.
 #pragma once
 #include <cstdint>
 #include <iosfwd>

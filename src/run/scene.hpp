@@ -34,6 +34,9 @@ public:
     /// What the target's kind chose for the user, for the start-up line ("cover: auto → opaque
     /// (the picture has transparency)"); empty when nothing.
     const std::string& choices() const { return target_->choices(); }
+    /// The hashes of the target files as the kind read them (LoadedTarget::inputHashes; may be
+    /// empty).
+    const std::vector<std::uint64_t>& targetInputHashes() const { return target_->inputHashes(); }
     /// Score the best model again and fill the summary's IoU (and its key); write the kind's files
     /// of it into `folder` (best.vdb for a volume, best-overlay.png for a picture).
     void reportBest(const Chromosome& best, const std::string& folder, RunSummary& summary) const;

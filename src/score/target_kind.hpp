@@ -76,6 +76,10 @@ public:
     /// What the kind chose where the config left the choice to it, for the start-up line, e.g.
     /// "cover: auto → opaque (the picture has transparency)"; empty when it chose nothing.
     const std::string& choices() const { return choices_; }
+    /// hash64 of the bytes the loader read of each of TargetSettings::inputFiles(), in order (what
+    /// hashFile gives): a run records its target inputs without reading them again. Empty when
+    /// the kind does not keep them; the run then hashes the files itself.
+    const std::vector<std::uint64_t>& inputHashes() const { return inputHashes_; }
     /// Score `c` (valid for the run's grammar) with the run's scorer, and count what it covers.
     virtual Evaluation evaluate(const Chromosome& c) const = 0;
     /// The IoU of `c` (Evaluation::iou) from one scoring pass: the progress line and the curve's
@@ -89,9 +93,10 @@ public:
     virtual void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const = 0;
 
 protected:
-    /// Set by the kind's constructor: hash(), description(), primaryFile(), choices().
+    /// Set by the kind's constructor: hash(), description(), primaryFile(), choices(), inputHashes().
     std::uint64_t hash_ = 0;
     std::string description_, primaryFile_, choices_;
+    std::vector<std::uint64_t> inputHashes_;
 };
 
 /// A kind's settings, made by its reader (TargetKind::readTarget) and finished by the table

@@ -1,7 +1,8 @@
 // Textured grammars through the command line: `shapevo sample` writes a textured OBJ with its MTL
 // and the image beside it, and a GLB with the image embedded, for a CastleMaker rule file's
 // add_texture too; a run writes best.obj, best.mtl, the image and best.glb into its folder,
-// records the texture among its inputs and resumes; a missing texture file is exit 2 with
+// records the texture among its inputs and resumes, and a texture named like one of its outputs
+// (curve.png) takes the next free name; a missing texture file is exit 2 with
 // file:line:column naming it, and nothing is written.
 #include <gtest/gtest.h>
 
@@ -101,6 +102,22 @@ TEST(TextureCli, ARunWritesTheTexturedBestModelAndResumes) {
     why += fs::absolute(dir.file("bricks.png")).lexically_normal().string();
     why += " changed";
     EXPECT_NE(changed.output.find(why), std::string::npos) << changed.output;
+}
+
+TEST(TextureCli, ARunsTextureNamedLikeAnOutputTakesTheNextFreeNameAndTheOutputKeepsItsOwn) {
+    // The run's outputs are written side by side; the textured OBJ comes after all of them, so its
+    // image never takes curve.png (nor is replaced by the plot).
+    TempDir dir;
+    fs::copy_file(sourcePath("tests/data/bricks.png"), dir.file("curve.png"));
+    std::string grammar = kWall;
+    grammar.replace(grammar.find("\"bricks.png\""), 12, "\"curve.png\"");
+    const std::string cfg = test::configWithGrammar(dir, grammar, "wall");
+    const auto r = runShapevo("run " + cfg + " --out " + dir.file("r") + " --set ga.generations=2 --set ga.population=16 "
+                              "--set ga.elitism=2 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(readFile(dir.file("r/best.mtl")).find("map_Kd curve_2.png"), std::string::npos) << readFile(dir.file("r/best.mtl"));
+    EXPECT_EQ(readFile(dir.file("r/curve_2.png")), readFile(sourcePath("tests/data/bricks.png")));
+    EXPECT_NE(readFile(dir.file("r/curve.png")), readFile(sourcePath("tests/data/bricks.png"))) << "curve.png is the plot";
 }
 
 }  // namespace

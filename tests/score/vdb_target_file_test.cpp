@@ -12,6 +12,7 @@
 #include <openvdb/openvdb.h>
 
 #include "../mesh/cube_mesh.hpp"
+#include "base/hash.hpp"
 #include "base/input_error.hpp"
 #include "score/volume/vdb_target_file.hpp"
 #include "../test_support.hpp"
@@ -62,6 +63,17 @@ TEST(VdbTargetFile, WrittenCubeBakesToExactCountOfVoxelCentresInside) {
     EXPECT_EQ(t.fillCount, expected);
     EXPECT_EQ(t.avoidCount, 0u);
     EXPECT_DOUBLE_EQ(t.grid.voxelSize, 0.3);
+}
+
+TEST(VdbTargetFile, EachFileIsHashedAsItIsReadAsHashFileHashesIt) {
+    TempDir dir;
+    const std::string cube = dir.file("cube.vdb"), box = dir.file("box.vdb");
+    writeTargetVdb(cubeMesh(1.0f), 0.3, "cube.obj", cube);
+    writeTargetVdb(boxMesh({-1, -0.5f, -0.25f}, {1, 0.5f, 0.25f}), 0.3, "box.obj", box);
+    const VolumeTarget t = loadVolumeTarget({{cube}, {box, true}});
+    ASSERT_EQ(t.fileHashes.size(), 2u);
+    EXPECT_EQ(t.fileHashes[0], hashFile(cube).hash);
+    EXPECT_EQ(t.fileHashes[1], hashFile(box).hash);
 }
 
 TEST(VdbTargetFile, AutomaticGridIsActiveBoundsPaddedByAQuarterOnTheTargetLattice) {

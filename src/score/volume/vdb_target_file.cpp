@@ -21,6 +21,7 @@
 #include <glm/vec3.hpp>
 
 #include "base/atomic_write.hpp"
+#include "base/hash.hpp"
 #include "base/input_error.hpp"
 #include "score/volume/vdb_bake.hpp"
 #include "score/volume/vdb_write.hpp"
@@ -141,13 +142,29 @@ TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::str
 
 namespace {
 
-/// Reads the float grid named "target" if there is one, else the first float level set, else
-/// the first float grid; refuses it unless it is a non-empty level set (GRID_LEVEL_SET).
-openvdb::FloatGrid::Ptr readLevelSet(const std::string& path) {
+/// The file's bytes, read once: they are parsed and hashed from memory.
+std::string readBytes(const std::string& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path, "", "cannot open VDB file: is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open VDB file");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path, "", "cannot open VDB file");
+    std::string bytes;
+    std::vector<char> block(1 << 16);
+    while (file) {
+        file.read(block.data(), std::streamsize(block.size()));
+        bytes.append(block.data(), std::size_t(file.gcount()));
+    }
+    if (!file.eof()) throw InputError(path, "", "cannot read VDB file");
+    return bytes;
+}
+
+/// Reads the float grid named "target" if there is one, else the first float level set, else
+/// the first float grid; refuses it unless it is a non-empty level set (GRID_LEVEL_SET). The file
+/// is read once; `fileHash` is hash64 of its bytes (what hashFile gives).
+openvdb::FloatGrid::Ptr readLevelSet(const std::string& path, std::uint64_t& fileHash) {
+    std::string bytes = readBytes(path);
+    fileHash = hash64(bytes);
+    std::istringstream in(std::move(bytes));
     openvdb::GridPtrVecPtr grids;
     try {
         // A read past the end throws at once. (openvdb::io::File reads on with garbage instead: a
@@ -209,9 +226,9 @@ VolumeTarget loadVolumeTarget(const std::vector<TargetVolumeSpec>& specs, const 
     initOpenVdb();
     if (specs.empty()) throw InputError("targets", "", "no volume target given");
     std::vector<openvdb::FloatGrid::Ptr> grids;
-    for (const TargetVolumeSpec& s : specs) grids.push_back(readLevelSet(s.path));
-
     VolumeTarget target;
+    for (const TargetVolumeSpec& s : specs) grids.push_back(readLevelSet(s.path, target.fileHashes.emplace_back()));
+
     if (grid) {
         target.grid = overrideGrid(*grid);
     } else {

@@ -56,7 +56,8 @@ TargetVdbStats writeTargetVdb(const Mesh& mesh, double voxelSize, const std::str
 /// Dense voxels outside a target's active bounding box (plus one voxel) are never inside it.
 /// Fill targets set `fill` bits, avoid targets set `avoid` bits; counts and the XXH3-64 hash
 /// (grid spec, then fill words, then avoid words, little-endian bytes) are filled in.
-/// Of each file the FloatGrid named "target" is used, else the first FloatGrid.
+/// Of each file the FloatGrid named "target" is used, else the first FloatGrid. Each file is read
+/// once, and the hash of its bytes kept (VolumeTarget::fileHashes).
 /// @throw InputError naming the path when a file is unreadable, not a VDB, holds no FloatGrid
 ///        or an empty one; naming "grid override" when the override box is unusable.
 VolumeTarget loadVolumeTarget(const std::vector<TargetVolumeSpec>& specs, const GridOverride* grid = nullptr);

@@ -19,6 +19,7 @@ public:
         scorer_.setMaxPrimitives(c.maxPrimitives);
         scorer_.setIncremental(c.incremental.cacheBytes(), c.incremental.check);
         hash_ = target_.hash;
+        inputHashes_ = target_.fileHashes;  // inputFiles() lists the same specs in the same order
         primaryFile_ = s.targets.front().path;
         description_ = s.targets.front().path + " (" + std::to_string(target_.grid.nx) + "x" + std::to_string(target_.grid.ny) +
                        "x" + std::to_string(target_.grid.nz) + " voxels, " + std::to_string(target_.fillCount) + " to fill)";

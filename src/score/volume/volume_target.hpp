@@ -17,6 +17,9 @@ struct VolumeTarget {
     std::uint64_t fillCount = 0;
     std::uint64_t avoidCount = 0;
     std::uint64_t hash = 0;            ///< XXH3-64 of grid spec and bits; identifies the target in outputs
+    /// hash64 of each target file's bytes as they were read (what hashFile gives), in the order
+    /// of the specs: a run records its inputs without reading the files again.
+    std::vector<std::uint64_t> fileHashes;
 };
 
 }  // namespace shapevo
