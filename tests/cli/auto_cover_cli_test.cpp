@@ -20,14 +20,7 @@ using test::TempDir;
 /// A 256 x 256 palette PNG: a disc of palette entry `ink` on entry 1 - ink; entry 0 is white,
 /// entry 1 black, their alpha `alpha` (a tRNS chunk unless empty).
 void writeAutoCoverCliLogo(const std::string& path, int ink, std::vector<std::uint8_t> alpha) {
-    test::PngSpec s;
-    s.width = s.height = 256;
-    s.colourType = PNG_COLOR_TYPE_PALETTE;
-    s.palette = {png_color{255, 255, 255}, png_color{0, 0, 0}};
-    s.paletteAlpha = std::move(alpha);
-    for (int y = 0; y < 256; ++y)
-        for (int x = 0; x < 256; ++x) s.bytes.push_back(std::uint8_t(std::hypot(x - 128, y - 128) < 90 ? ink : 1 - ink));
-    test::writeTestPng(path, s);
+    test::writeTwoEntryPalettePng(path, ink, std::move(alpha), [](int x, int y) { return std::hypot(x - 128, y - 128) < 90; });
 }
 
 const std::string kAutoCoverSmall = " --set ga.population=20 --set ga.elitism=4 --set ga.generations=2 --threads 1";

@@ -41,6 +41,20 @@ inline void writeTestPng(const std::string& path, const PngSpec& s) {
     std::fclose(f);
 }
 
+/// A 256 x 256 palette PNG of two entries, 0 white and 1 black, with `alpha` per entry (a tRNS
+/// chunk; empty: none): entry `ink` where `inside(x, y)`, entry 1 - ink elsewhere.
+template <class Inside>
+void writeTwoEntryPalettePng(const std::string& path, int ink, std::vector<std::uint8_t> alpha, Inside inside) {
+    PngSpec s;
+    s.width = s.height = 256;
+    s.colourType = PNG_COLOR_TYPE_PALETTE;
+    s.palette = {png_color{255, 255, 255}, png_color{0, 0, 0}};
+    s.paletteAlpha = std::move(alpha);
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x) s.bytes.push_back(std::uint8_t(inside(x, y) ? ink : 1 - ink));
+    writeTestPng(path, s);
+}
+
 inline std::uint32_t crc32(const std::string& bytes) {
     std::uint32_t c = 0xffffffffu;
     for (unsigned char b : bytes) {

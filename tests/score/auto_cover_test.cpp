@@ -26,14 +26,7 @@ bool autoCoverInStar(int x, int y) {
 /// A 256 x 256 palette PNG: entry 0 white, entry 1 black; `alpha` (tRNS, empty: none) per entry;
 /// the star is entry `ink`, the rest entry 1 - ink.
 void writeAutoCoverPalette(const std::string& path, int ink, std::vector<std::uint8_t> alpha) {
-    test::PngSpec s;
-    s.width = s.height = 256;
-    s.colourType = PNG_COLOR_TYPE_PALETTE;
-    s.palette = {png_color{255, 255, 255}, png_color{0, 0, 0}};
-    s.paletteAlpha = std::move(alpha);
-    for (int y = 0; y < 256; ++y)
-        for (int x = 0; x < 256; ++x) s.bytes.push_back(std::uint8_t(autoCoverInStar(x, y) ? ink : 1 - ink));
-    test::writeTestPng(path, s);
+    test::writeTwoEntryPalettePng(path, ink, std::move(alpha), autoCoverInStar);
 }
 
 /// Hit and avoid pixels of `path` loaded at its own size under `rule`, and what auto chose.
