@@ -4,15 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <ostream>
 #include <span>
 #include <string_view>
 
-#include <glm/common.hpp>
 
 #include "base/input_error.hpp"
+#include "mesh/corner_box.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_repair.hpp"
 #include "run/command_options.hpp"
@@ -26,11 +25,9 @@ namespace {
 
 /// The longest side of the bounding box of `mesh`'s triangle corners.
 double longestSide(const Mesh& mesh) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const auto& t : mesh.triangles)
-        for (std::uint32_t i : t) lo = glm::min(lo, mesh.vertices[i]), hi = glm::max(hi, mesh.vertices[i]);
     if (mesh.triangles.empty()) return 0.0;
-    return std::max({double(hi.x) - lo.x, double(hi.y) - lo.y, double(hi.z) - lo.z});
+    const CornerBox box = cornerBox(mesh);
+    return std::max({double(box.hi.x) - box.lo.x, double(box.hi.y) - box.lo.y, double(box.hi.z) - box.lo.z});
 }
 
 /// The mesh repaired for a determinable inside, as a level set of the requested voxel size, or

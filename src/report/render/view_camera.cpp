@@ -3,13 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "base/input_error.hpp"
+#include "mesh/corner_box.hpp"
 
 namespace shapevo {
 
@@ -41,13 +40,8 @@ std::vector<View> parseViews(const std::string& text, const std::string& option)
 BoundingSphere boundingSphere(const Mesh& mesh) {
     BoundingSphere s;
     if (mesh.triangles.empty()) return s;
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const auto& t : mesh.triangles)
-        for (std::uint32_t i : t) {
-            lo = glm::min(lo, mesh.vertices[i]);
-            hi = glm::max(hi, mesh.vertices[i]);
-        }
-    s.centre = 0.5f * (lo + hi);
+    const CornerBox box = cornerBox(mesh);
+    s.centre = 0.5f * (box.lo + box.hi);
     float r2 = 0.0f;
     for (const auto& t : mesh.triangles)
         for (std::uint32_t i : t) {

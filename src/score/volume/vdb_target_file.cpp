@@ -16,13 +16,13 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "base/atomic_write.hpp"
 #include "base/hash.hpp"
 #include "base/input_error.hpp"
+#include "mesh/corner_box.hpp"
 #include "score/volume/vdb_bake.hpp"
 #include "score/volume/vdb_write.hpp"
 
@@ -51,16 +51,16 @@ std::string number(double v) {
 /// mesh's size): such a mesh encloses no volume, however it is closed. The plane is that of the
 /// largest triangle; a mesh of degenerate triangles only (no plane) counts as flat.
 bool allInOnePlane(const Mesh& mesh) {
-    glm::dvec3 normal(0.0), origin(0.0), lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    glm::dvec3 normal(0.0), origin(0.0);
     double largest = 0.0;
     for (const auto& t : mesh.triangles) {
         const glm::dvec3 a(mesh.vertices[t[0]]), b(mesh.vertices[t[1]]), c(mesh.vertices[t[2]]);
         const glm::dvec3 n = glm::cross(b - a, c - a);
         if (glm::length(n) > largest) largest = glm::length(n), normal = n / largest, origin = a;
-        for (const glm::dvec3& p : {a, b, c}) lo = glm::min(lo, p), hi = glm::max(hi, p);
     }
     if (!(largest > 0.0)) return true;
-    const double tolerance = 1e-6 * glm::length(hi - lo);
+    const CornerBox box = cornerBox(mesh);
+    const double tolerance = 1e-6 * glm::length(glm::dvec3(box.hi) - glm::dvec3(box.lo));
     for (const auto& t : mesh.triangles)
         for (std::uint32_t i : t)
             if (std::abs(glm::dot(glm::dvec3(mesh.vertices[i]) - origin, normal)) > tolerance) return false;
