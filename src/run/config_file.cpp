@@ -378,13 +378,13 @@ private:
 
 /// [run]: name, seed, threads, out, wall_time, target_fitness.
 void readRunSection(SectionReader& r, RunSettings& run) {
-    r.string("name", run.name, "names the default output folder runs/<name>: a plain name of 1-128 bytes, no '/', '\\' or "
-                                "control character, not starting with '.' or '-'");
+    // The rule a name follows, as the reference states it and as an error quotes it.
+    const std::string plainName = "a plain name: 1-" + std::to_string(kMaxRunNameLength) +
+                                  " bytes, no '/', '\\' or control character, not starting with '.' or '-'";
+    r.string("name", run.name, "names the default output folder runs/<name>: " + plainName);
     if (const std::string problem = runNameProblem(run.name); !problem.empty())
         r.fail("name", "run.name = \"" + shortened(run.name) + "\" " + problem +
-                           "; it names the output folder runs/<name>, so it must be a plain name: 1-" +
-                           std::to_string(kMaxRunNameLength) +
-                           " bytes, no '/', '\\' or control character, not starting with '.' or '-'");
+                           "; it names the output folder runs/<name>, so it must be " + plainName);
     r.wholeNumber64("seed", run.seed, "the run's seed (--seed overrides); one seed gives one run on any machine and thread count");
     std::uint32_t threads = std::uint32_t(run.threads);
     r.count("threads", threads, 0, 4096,
