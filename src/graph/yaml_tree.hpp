@@ -1,0 +1,49 @@
+// YamlTree: a YAML 1.1 document read with libyaml (the parser PyYAML, and so the original tool,
+// uses) into a small tree whose every node knows its line and column. Scalars are resolved as
+// PyYAML's SafeLoader resolves plain scalars (true/false/yes/no/on/off, null/~/empty, ints incl.
+// 0x/0o/0b/sexagesimal-free decimal with _, floats incl. .inf/.nan); quoted scalars are strings.
+// Bounded whatever the input: file size, nesting depth and the number of nodes after aliases are
+// expanded (a "billion laughs" alias bomb is an error, not a hang); a duplicate mapping key is an
+// error. Errors are InputError naming the file, line and column.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace shapevo::graph {
+
+struct YamlLimits {
+    std::size_t maxBytes = 16u << 20;     // the file's size
+    int maxDepth = 64;                    // nested collections
+    std::size_t maxNodes = 2'000'000;     // nodes, counting each alias's expansion
+};
+
+struct YamlNode {
+    enum class Kind : std::uint8_t { Null, Bool, Int, Float, String, Sequence, Mapping };
+    Kind kind = Kind::Null;
+    bool boolean = false;
+    std::int64_t integer = 0;     // Kind::Int (a plain int beyond 64 bits is an error)
+    double number = 0;            // Kind::Float
+    std::string text;             // the scalar as written (every scalar kind), for messages and strings
+    bool quoted = false;          // a quoted or block scalar (always a string)
+    int line = 0, column = 0;     // 1-based, where the node starts
+    std::vector<YamlNode> items;                          // Kind::Sequence
+    std::vector<std::pair<YamlNode, YamlNode>> entries;   // Kind::Mapping, in file order
+
+    bool isScalar() const { return kind != Kind::Sequence && kind != Kind::Mapping; }
+    /// The value of `key` in a mapping whose keys are scalars, or nullptr.
+    const YamlNode* find(std::string_view key) const;
+    /// "line:column".
+    std::string where() const { return std::to_string(line) + ":" + std::to_string(column); }
+    /// "a mapping", "a string", "the integer 5", ... for messages.
+    std::string describe() const;
+};
+
+/// Parses `text` (the contents of `path`, named in errors). One document; an empty file is Null.
+YamlNode parseYaml(std::string_view text, const std::string& path, const YamlLimits& limits = {});
+/// Reads and parses the file (InputError if it cannot be read or exceeds limits.maxBytes).
+YamlNode readYamlFile(const std::string& path, const YamlLimits& limits = {});
+
+}  // namespace shapevo::graph
