@@ -13,13 +13,6 @@ namespace {
 constexpr std::uint32_t kUnranked = std::numeric_limits<std::uint32_t>::max();
 }
 
-struct Matcher::Step {
-    enum Kind : std::uint8_t { VertexAtEdgeEnd, EdgeAtVertex, AnyVertex, AnyEdge } kind;
-    int mother = 0;  // the mother element this step binds
-    int via = 0;     // VertexAtEdgeEnd: the bound mother edge; EdgeAtVertex: the bound mother vertex
-    int end = 0;     // the end of the mother edge that `via` / the new vertex is
-};
-
 Matcher::Matcher(const GraphGrammar& grammar, const HostGraph& graph, const std::vector<Value>& globals, DrawSource& draws,
                  const MatchBudget& budget, bool fixGeometricOrdering)
     : grammar_(grammar), graph_(graph), draws_(draws), budget_(budget), fixGeometricOrdering_(fixGeometricOrdering) {

@@ -50,7 +50,13 @@ public:
     MatchView oldest(std::size_t production, std::size_t i) const;
 
 private:
-    struct Step;
+    /// One binding of a search plan (from an anchor, the rest of the mother graph).
+    struct Step {
+        enum Kind : std::uint8_t { VertexAtEdgeEnd, EdgeAtVertex, AnyVertex, AnyEdge } kind;
+        int mother = 0;  // the mother element this step binds
+        int via = 0;     // VertexAtEdgeEnd: the bound mother edge; EdgeAtVertex: the bound mother vertex
+        int end = 0;     // the end of the mother edge that `via` / the new vertex is
+    };
     struct Stored {
         bool alive = false;
         std::uint32_t serial = 0;
