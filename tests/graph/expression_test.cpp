@@ -287,9 +287,11 @@ TEST(Expression, CompileErrorsNameTheTokenAndItsOffset) {
 }
 
 TEST(Expression, NestingAndSizeAreBoundedWithoutRecursingDeep) {
-    const CompileFailure parens = compileFailure(std::string(100000, '(') + "1" + std::string(100000, ')'));
+    const CompileFailure parens = compileFailure(std::string(30000, '(') + "1" + std::string(30000, ')'));
     EXPECT_NE(parens.message.find("nested deeper than 64"), std::string::npos) << parens.message;
     EXPECT_EQ(parens.offset, 64u);
+    const CompileFailure manyParens = compileFailure(std::string(100000, '(') + "1" + std::string(100000, ')'));
+    EXPECT_NE(manyParens.message.find("longer than 65536 bytes"), std::string::npos) << manyParens.message;
     const CompileFailure minus = compileFailure(std::string(50000, '-') + "1");
     EXPECT_NE(minus.message.find("nested deeper"), std::string::npos) << minus.message;
     const CompileFailure nots = compileFailure([] {
