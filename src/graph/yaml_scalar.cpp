@@ -4,6 +4,8 @@
 // octal / sexagesimal / decimal.
 #include "graph/yaml_scalar.hpp"
 
+#include "base/input_error.hpp"
+
 #include <charconv>
 #include <clocale>
 #include <cmath>
@@ -147,10 +149,10 @@ std::string constructInt(std::string_view text, std::int64_t& out) {
         }
     } else
         parsed = parseUnsigned(v, 10, magnitude);
-    if (parsed == Parsed::kInvalid) return "'" + std::string(text) + "' is not an integer";
+    if (parsed == Parsed::kInvalid) return "'" + shortened(text) + "' is not an integer";
     constexpr std::uint64_t kMaxPositive = std::numeric_limits<std::int64_t>::max();
     if (parsed == Parsed::kTooLarge || magnitude > kMaxPositive + (negative ? 1 : 0))
-        return "the integer " + std::string(text) + " does not fit in 64 bits";
+        return "the integer " + shortened(text) + " does not fit in 64 bits";
     out = negative ? static_cast<std::int64_t>(0 - magnitude) : static_cast<std::int64_t>(magnitude);
     return {};
 }
@@ -198,7 +200,7 @@ std::string constructFloat(std::string_view text, double& out) {
         }
     } else
         ok = parseDouble(v, out);
-    if (!ok) return "'" + std::string(text) + "' is not a number";
+    if (!ok) return "'" + shortened(text) + "' is not a number";
     out *= sign;
     return {};
 }
@@ -234,8 +236,8 @@ std::string resolveImplicit(YamlNode& node) {
 }  // namespace
 
 std::string shortTag(std::string_view tag) {
-    if (tag.rfind(kYamlTagPrefix, 0) == 0) return "!!" + std::string(tag.substr(kYamlTagPrefix.size()));
-    return std::string(tag);
+    if (tag.rfind(kYamlTagPrefix, 0) == 0) return "!!" + shortened(tag.substr(kYamlTagPrefix.size()));
+    return shortened(tag);
 }
 
 std::string resolve(YamlNode& node, std::string_view tag, bool plain) {
@@ -259,7 +261,7 @@ std::string resolve(YamlNode& node, std::string_view tag, bool plain) {
             if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
         node.kind = YamlNode::Kind::Bool;
         if (isBoolWord(lower, node.boolean)) return {};
-        return "'" + node.text + "' is not a boolean (yes, no, true, false, on, off)";
+        return "'" + shortened(node.text) + "' is not a boolean (yes, no, true, false, on, off)";
     }
     if (name == "int") {
         node.kind = YamlNode::Kind::Int;

@@ -38,6 +38,15 @@ struct YamlNode {
     std::vector<YamlNode> items;                          // Kind::Sequence
     std::vector<std::pair<YamlNode, YamlNode>> entries;   // Kind::Mapping, in file order
 
+    // Declared here, defaulted in yaml_tree.cpp: with clang and libstdc++, implicit (inline)
+    // members would instantiate std::pair<YamlNode, YamlNode> while YamlNode is incomplete.
+    YamlNode();
+    YamlNode(const YamlNode&);
+    YamlNode(YamlNode&&) noexcept;
+    YamlNode& operator=(const YamlNode&);
+    YamlNode& operator=(YamlNode&&) noexcept;
+    ~YamlNode();
+
     bool isScalar() const { return kind != Kind::Sequence && kind != Kind::Mapping; }
     /// The value of `key` in a mapping whose keys are scalars, or nullptr.
     const YamlNode* find(std::string_view key) const;
