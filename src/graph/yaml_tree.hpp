@@ -34,7 +34,8 @@ struct YamlNode {
     double number = 0;            // Kind::Float
     std::string text;             // the scalar as written (every scalar kind), for messages and strings
     bool quoted = false;          // written quoted or as a block (a string unless explicitly tagged)
-    int line = 0, column = 0;     // 1-based, where the node starts
+    int line = 0, column = 0;     // 1-based, where the node starts (a copy made for an alias: its
+                                  // root is placed at the alias, its children where the anchor's are)
     std::vector<YamlNode> items;                          // Kind::Sequence
     std::vector<std::pair<YamlNode, YamlNode>> entries;   // Kind::Mapping, in file order
 
