@@ -2,8 +2,10 @@
 // whose ends are ordered and may be empty (a dangling edge is legal and counts as an element).
 // Element ids are indices that are never reused: a deleted element stays as a tombstone, so an id
 // names one element for the whole derivation and every iteration order is the order of creation
-// (no address-dependent order anywhere: one seed, one graph, on every machine).
+// (no address-dependent order anywhere: one seed, one graph, on every machine). A tombstone keeps
+// its attributes (the expressions of the step that deleted it read them).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -40,6 +42,12 @@ public:
     void removeEdge(ElementId e);
     /// Moves one end of an edge (end 0: vertex1, 1: vertex2) to another live vertex or kNoVertex.
     void setEnd(ElementId e, int end, ElementId v);
+    /// Room for `vertices` and `edges` in all, so that adding up to that many moves no stored
+    /// element (ElementRefs taken before stay valid). Grows geometrically.
+    void reserve(std::size_t vertices, std::size_t edges) {
+        if (vertices > vertices_.capacity()) vertices_.reserve(std::max(vertices, 2 * vertices_.capacity()));
+        if (edges > edges_.capacity()) edges_.reserve(std::max(edges, 2 * edges_.capacity()));
+    }
 
     const std::vector<HostVertex>& vertices() const { return vertices_; }
     const std::vector<HostEdge>& edges() const { return edges_; }

@@ -1,10 +1,13 @@
 // YamlTree: a YAML 1.1 document read with libyaml (the parser PyYAML, and so the original tool,
 // uses) into a small tree whose every node knows its line and column. Scalars are resolved as
 // PyYAML's SafeLoader resolves plain scalars (true/false/yes/no/on/off, null/~/empty, ints incl.
-// 0x/0o/0b/sexagesimal-free decimal with _, floats incl. .inf/.nan); quoted scalars are strings.
+// 0x/0b/leading-0 octal/sexagesimal/decimal with _, floats incl. .inf/.nan; see yaml_scalar.hpp);
+// quoted and block scalars are strings unless an explicit tag (!!int ...) says otherwise.
 // Bounded whatever the input: file size, nesting depth and the number of nodes after aliases are
-// expanded (a "billion laughs" alias bomb is an error, not a hang); a duplicate mapping key is an
-// error. Errors are InputError naming the file, line and column.
+// expanded (a "billion laughs" alias bomb is an error, not a hang); a duplicate mapping key, a
+// merge key '<<', a tag outside the safe set and a second document are errors (yaml_tree.cpp says
+// where this differs from PyYAML). Errors are InputError naming the file, line and column (lines
+// end at '\n', columns count characters, both from 1).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -17,7 +20,10 @@ namespace shapevo::graph {
 struct YamlLimits {
     std::size_t maxBytes = 16u << 20;     // the file's size
     int maxDepth = 64;                    // nested collections
-    std::size_t maxNodes = 2'000'000;     // nodes, counting each alias's expansion
+    std::size_t maxNodes = 2'000'000;     // nodes, counting each alias's expansion and each anchored
+                                          // node's copy kept for its aliases
+    std::size_t maxAliasNodes = 100'000;  // nodes copied by all aliases together: an alias bomb stops
+                                          // after this much work (a few MB), not at maxNodes
 };
 
 struct YamlNode {
@@ -27,7 +33,7 @@ struct YamlNode {
     std::int64_t integer = 0;     // Kind::Int (a plain int beyond 64 bits is an error)
     double number = 0;            // Kind::Float
     std::string text;             // the scalar as written (every scalar kind), for messages and strings
-    bool quoted = false;          // a quoted or block scalar (always a string)
+    bool quoted = false;          // written quoted or as a block (a string unless explicitly tagged)
     int line = 0, column = 0;     // 1-based, where the node starts
     std::vector<YamlNode> items;                          // Kind::Sequence
     std::vector<std::pair<YamlNode, YamlNode>> entries;   // Kind::Mapping, in file order

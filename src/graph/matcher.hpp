@@ -1,0 +1,103 @@
+// Matcher: every match of every production in the host graph, kept up to date as steps change
+// it (graph-grammar README, section 2.3). A match maps the mother graph's vertices and edges
+// injectively onto live host elements of the same kind, keeping incidences (not induced), with
+// every element's conditions true, `.directed` mother edges running the same way, and the
+// geometric ordering where the production asks for it. After a step, only matches that contain a
+// changed element are dropped, and only matches that contain one are searched for (anchored at
+// it): a step costs what it changed, not the size of the graph. A budget bounds what one
+// production may hold and what one update may search (a mother graph of many wildcard vertices
+// matches combinatorially many ways): exceeding it is an error naming the production.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "graph/draw_source.hpp"
+#include "graph/graph_grammar.hpp"
+#include "graph/host_graph.hpp"
+
+namespace shapevo::graph {
+
+struct MatchBudget {
+    std::size_t maxMatches = 1'000'000;     // per production, held at once
+    std::size_t maxSearchSteps = 50'000'000;  // element bindings tried in one update
+};
+
+/// One match, as views into the matcher's storage (valid until the next update).
+struct MatchView {
+    const ElementId* vertices;     // per mother vertex
+    const ElementId* edges;        // per mother edge
+    const std::uint8_t* swapped;   // per mother edge: 1 if mother vertex1 maps to the host edge's vertex2
+    std::int64_t generationSum;
+};
+
+class Matcher {
+public:
+    /// `globals`: the global variables' values (conditions see them), in GraphGrammar::globals order.
+    Matcher(const GraphGrammar& grammar, const HostGraph& graph, const std::vector<Value>& globals, DrawSource& draws,
+            const MatchBudget& budget, bool fixGeometricOrdering);
+    /// Searches the whole graph (at the start of a derivation).
+    void initialize();
+    /// After a step: drop the matches of every changed element, search anchored at the live ones.
+    /// Each list: ids in the order they changed (duplicates allowed).
+    void update(const std::vector<ElementId>& changedVertices, const std::vector<ElementId>& changedEdges);
+
+    std::size_t count(std::size_t production) const { return productions_[production].all.size(); }
+    /// The i-th match (0 <= i < count) in storage order.
+    MatchView match(std::size_t production, std::size_t i) const;
+    /// How many matches have the lowest generation sum, and the i-th of them.
+    std::size_t oldestCount(std::size_t production) const;
+    MatchView oldest(std::size_t production, std::size_t i) const;
+
+private:
+    struct Step;
+    struct Stored {
+        bool alive = false;
+        std::uint32_t serial = 0;
+        std::int64_t generationSum = 0;
+        std::uint32_t positionInAll = 0, positionInBucket = 0;
+    };
+    struct PerProduction {
+        std::size_t vertexCount = 0, edgeCount = 0;
+        bool geometric = false;
+        std::vector<std::vector<Step>> plans;  // per anchor: mother vertices, then mother edges
+        std::vector<Stored> stored;
+        std::vector<ElementId> images;          // stride vertexCount + edgeCount
+        std::vector<std::uint8_t> swapped;      // stride edgeCount
+        std::vector<std::uint32_t> freeSlots;
+        std::vector<std::uint32_t> all;         // live slots
+        std::map<std::int64_t, std::vector<std::uint32_t>> buckets;  // generation sum -> live slots
+    };
+    struct SlotRef {
+        std::uint32_t production, slot, serial;
+    };
+
+    void buildPlans();
+    void searchFrom(bool isVertex, ElementId anchor, std::uint32_t rank);
+    bool extend(std::size_t p, const std::vector<Step>& plan, std::size_t step, std::uint32_t rank);
+    void countSearchStep(std::size_t p);
+    bool vertexFits(std::size_t p, int mother, ElementId host);
+    bool edgeFits(std::size_t p, int mother, ElementId host, std::uint8_t swapped);
+    bool conditionsHold(const std::vector<MatchCondition>& conditions, const AttrMap& attrs, ElementRef element, const Production& production);
+    bool geometricOrderHolds(std::size_t p) const;
+    void record(std::size_t p, std::uint32_t rank);
+    void remove(std::size_t p, std::uint32_t slot);
+    void dropMatchesOf(std::vector<std::vector<SlotRef>>& index, ElementId id);
+    MatchView view(std::size_t p, std::uint32_t slot) const;
+
+    const GraphGrammar& grammar_;
+    const HostGraph& graph_;
+    DrawSource& draws_;
+    MatchBudget budget_;
+    bool fixGeometricOrdering_;
+    std::vector<PerProduction> productions_;
+    std::vector<std::vector<SlotRef>> vertexMatches_, edgeMatches_;  // per host element
+    std::vector<std::uint32_t> vertexRank_, edgeRank_;               // changed-order rank this update
+    std::vector<Value> conditionFrame_;                               // attr, attrs, globals...
+    // The match being built.
+    std::vector<ElementId> boundVertices_, boundEdges_;
+    std::vector<std::uint8_t> boundSwapped_;
+    std::size_t searchSteps_ = 0;
+};
+
+}  // namespace shapevo::graph

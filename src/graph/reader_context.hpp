@@ -1,0 +1,68 @@
+// ReaderContext: what the graph grammar reader shares between its files (read_graph_grammar.cpp,
+// read_production.cpp) — the file's path, the one id table spanning the whole file, located
+// errors, scalar conversions and expression compilation with messages that name the place.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "graph/graph_grammar.hpp"
+#include "graph/yaml_tree.hpp"
+
+namespace shapevo::graph::reading {
+
+/// Where a message points: the node, and what the node is ("production 'Grow', daughter vertex 12").
+struct Place {
+    const YamlNode* node;
+    std::string what;
+};
+
+class ReaderContext {
+public:
+    ReaderContext(std::string path, AttrNames& names) : path_(std::move(path)), names_(names) {}
+
+    [[noreturn]] void fail(const YamlNode& at, const std::string& message) const;
+    [[noreturn]] void fail(const Place& at, const std::string& message) const;
+
+    const YamlNode& mapping(const YamlNode& n, const std::string& what) const;
+    const YamlNode& sequence(const YamlNode& n, const std::string& what) const;
+    const YamlNode& required(const YamlNode& map, std::string_view key, const std::string& what) const;
+    /// Refuses a key not in `allowed` (a typo in a key would otherwise be ignored silently).
+    void onlyKeys(const YamlNode& map, std::initializer_list<std::string_view> allowed, const std::string& what) const;
+    std::string keyText(const YamlNode& key, const std::string& what) const;
+    std::int64_t integer(const YamlNode& n, const std::string& what) const;
+    /// A number given as a number or as a string ('-4', '6.93'), as Python's float() reads it.
+    double number(const YamlNode& n, const std::string& what) const;
+    /// A scalar as plain data (host graph attributes).
+    Value plainValue(const YamlNode& n, const std::string& what) const;
+    /// A scalar's Python str() (the text an expression place compiles: 'True' for a YAML bool).
+    std::string expressionText(const YamlNode& n, const std::string& what) const;
+
+    /// Registers a file id (graph, vertex, edge, production, option, mapping); a second use of
+    /// one id is an error naming both places.
+    void declareId(const YamlNode& idNode, const std::string& what);
+    /// Compiles an expression; an error names the place and the column inside the expression.
+    CompiledExpression compile(const YamlNode& n, const NameSlots& slots, const std::string& what) const;
+
+    FilePlace filePlace(const YamlNode& n, std::int64_t id = 0) const { return FilePlace{n.line, n.column, id}; }
+    const std::string& path() const { return path_; }
+    AttrNames& names() { return names_; }
+
+private:
+    std::string path_;
+    AttrNames& names_;
+    std::map<std::int64_t, std::pair<int, std::string>> ids_;  // id -> line, what
+};
+
+/// Reads one production (read_production.cpp); `globals` are the global variables' names.
+Production readProduction(ReaderContext& context, const std::string& name, const YamlNode& node,
+                          const std::vector<std::string>& globals);
+/// Reads one option of a production (read_option.cpp).
+ProductionOption readOption(ReaderContext& context, const YamlNode& node, const std::string& production, const Production& p,
+                            std::int64_t motherGraphId, const std::map<std::int64_t, int>& motherVertexIds,
+                            const std::map<std::int64_t, int>& motherEdgeIds, const std::vector<std::string>& globals);
+/// Reads a host graph (plain attributes, positions, generations).
+HostGraph readHostGraph(ReaderContext& context, const std::string& name, const YamlNode& node, const GraphGrammar::Keys& keys);
+
+}  // namespace shapevo::graph::reading
