@@ -52,9 +52,13 @@ Vec2 PlacementFrame::place(Vec2 d) const {
 }
 
 PlacementFrame placementFrame(const Production& production, const ProductionOption& option, const HostGraph& graph,
-                              const ElementId* vertexImages, const ElementId* edgeImages, const std::uint8_t* swapped) {
+                              const ElementId* vertexImages, const ElementId* edgeImages, const std::uint8_t* swapped,
+                              PlacementScratch& scratch) {
     PlacementFrame f;
-    std::vector<Vec2> daughter, host;
+    std::vector<Vec2>& daughter = scratch.daughter;
+    std::vector<Vec2>& host = scratch.host;
+    daughter.clear();
+    host.clear();
     for (const DaughterVertex& d : option.vertices)
         if (d.mother >= 0) {
             daughter.push_back(d.position);
@@ -77,7 +81,10 @@ PlacementFrame placementFrame(const Production& production, const ProductionOpti
     f.daughterCentre = mean(daughter);
     f.hostCentre = host.empty() ? f.daughterCentre : mean(host);
 
-    std::vector<Vec2> mother, images;
+    std::vector<Vec2>& mother = scratch.mother;
+    std::vector<Vec2>& images = scratch.images;
+    mother.clear();
+    images.clear();
     for (std::size_t i = 0; i < production.motherVertices.size(); ++i) {
         mother.push_back(production.motherVertices[i].position);
         images.push_back(graph.vertex(vertexImages[i]).position);

@@ -19,9 +19,15 @@ struct PlacementFrame {
     Vec2 place(Vec2 daughterPosition) const;
 };
 
+/// Buffers placementFrame reuses from call to call.
+struct PlacementScratch {
+    std::vector<Vec2> daughter, host, mother, images;
+};
+
 /// `vertexImages`/`edgeImages`/`swapped`: the match (per mother vertex / edge).
 PlacementFrame placementFrame(const Production& production, const ProductionOption& option, const HostGraph& graph,
-                              const ElementId* vertexImages, const ElementId* edgeImages, const std::uint8_t* swapped);
+                              const ElementId* vertexImages, const ElementId* edgeImages, const std::uint8_t* swapped,
+                              PlacementScratch& scratch);
 
 /// The angle (radians, in (-π/2, π/2]) of the original's least-squares line through `points`:
 /// y on x, or x on y when σy/σx > 2; 0 for fewer than two distinct points.

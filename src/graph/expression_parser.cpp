@@ -27,7 +27,6 @@ bool isDunder(std::string_view name) { return name.size() >= 2 && name.substr(0,
 
 }  // namespace parser_detail
 
-using namespace parser_detail;
 
 Parser::Parser(std::string_view text, std::size_t begin, std::size_t end, ParseContext& context, int depth)
     : text_(text), tokens_(tokenize(text, begin, end)), context_(context), depth_(depth) {}
@@ -52,7 +51,7 @@ void Parser::unexpected(const Token& t) const {
         if (p == "**") fail("operator '**' is not supported", t.offset);
         if (p == "=" || p == ":=") fail("assignment ('" + std::string(p) + "') is not supported", t.offset);
     }
-    if (t.kind == TokenKind::Name && isKeyword(t.text) && t.text != "not" && t.text != "and" && t.text != "or" &&
+    if (t.kind == TokenKind::Name && parser_detail::isKeyword(t.text) && t.text != "not" && t.text != "and" && t.text != "or" &&
         t.text != "if" && t.text != "else")
         fail("'" + std::string(t.text) + "' is not supported", t.offset);
     fail("unexpected " + quoteForMessage(t.kind == TokenKind::FString ? std::string_view("f-string") : t.text),
@@ -251,7 +250,7 @@ std::int32_t Parser::parsePostfix() {
             } else if (name.text == "attr") {
                 if (!isPunct("[")) fail("'.attr' must be followed by ['key']", peek().offset);
                 e = parseSubscript(e, true);
-            } else if (isDunder(name.text)) {
+            } else if (parser_detail::isDunder(name.text)) {
                 fail("'." + std::string(name.text) + "': names starting with '__' are not allowed", name.offset);
             } else {
                 fail("attribute '." + std::string(name.text) + "' is not allowed (only .attr['key'], .x and .y)",
@@ -331,11 +330,11 @@ std::int32_t Parser::parseName() {
     if (name == "True") return constant(Value(true), t.offset);
     if (name == "False") return constant(Value(false), t.offset);
     if (name == "None") return constant(Value(), t.offset);
-    if (isKeyword(name)) {
+    if (parser_detail::isKeyword(name)) {
         --next_;
         unexpected(t);
     }
-    if (isDunder(name)) fail("'" + std::string(name) + "': names starting with '__' are not allowed", t.offset);
+    if (parser_detail::isDunder(name)) fail("'" + std::string(name) + "': names starting with '__' are not allowed", t.offset);
     if ((name == "random" || name == "np" || name == "math") && isPunct(".")) {
         ++next_;
         if (peek().kind != TokenKind::Name) fail("expected a name after '" + std::string(name) + ".'", peek().offset);

@@ -13,13 +13,6 @@ namespace {
 constexpr std::uint32_t kUnranked = std::numeric_limits<std::uint32_t>::max();
 }
 
-struct Matcher::Step {
-    enum Kind : std::uint8_t { VertexAtEdgeEnd, EdgeAtVertex, AnyVertex, AnyEdge } kind;
-    int mother = 0;  // the mother element this step binds
-    int via = 0;     // VertexAtEdgeEnd: the bound mother edge; EdgeAtVertex: the bound mother vertex
-    int end = 0;     // the end of the mother edge that `via` / the new vertex is
-};
-
 Matcher::Matcher(const GraphGrammar& grammar, const HostGraph& graph, const std::vector<Value>& globals, DrawSource& draws,
                  const MatchBudget& budget, bool fixGeometricOrdering)
     : grammar_(grammar), graph_(graph), draws_(draws), budget_(budget), fixGeometricOrdering_(fixGeometricOrdering) {
@@ -241,9 +234,9 @@ void Matcher::record(std::size_t p, std::uint32_t rank) {
     std::vector<std::uint32_t>& bucket = pp.buckets[generations];
     s.positionInBucket = std::uint32_t(bucket.size());
     bucket.push_back(slot);
-    const SlotRef ref{std::uint32_t(p), slot, s.serial};
-    for (ElementId v : boundVertices_) vertexMatches_[v].push_back(ref);
-    for (ElementId e : boundEdges_) edgeMatches_[e].push_back(ref);
+    const SlotRef ref{std::uint32_t(p), slot, s.serial, kUnranked};
+    for (ElementId v : boundVertices_) link(vertexMatches_, v, ref);
+    for (ElementId e : boundEdges_) link(edgeMatches_, e, ref);
 }
 
 void Matcher::remove(std::size_t p, std::uint32_t slot) {
@@ -264,13 +257,20 @@ void Matcher::remove(std::size_t p, std::uint32_t slot) {
     pp.freeSlots.push_back(slot);
 }
 
-void Matcher::dropMatchesOf(std::vector<std::vector<SlotRef>>& index, ElementId id) {
-    if (id >= index.size()) return;
-    for (const SlotRef& r : index[id]) {
+void Matcher::link(std::vector<std::uint32_t>& heads, ElementId id, const SlotRef& ref) {
+    links_.push_back(ref);
+    links_.back().next = heads[id];
+    heads[id] = std::uint32_t(links_.size() - 1);
+}
+
+void Matcher::dropMatchesOf(std::vector<std::uint32_t>& heads, ElementId id) {
+    if (id >= heads.size()) return;
+    for (std::uint32_t i = heads[id]; i != kUnranked; i = links_[i].next) {
+        const SlotRef& r = links_[i];
         const Stored& s = productions_[r.production].stored[r.slot];
         if (s.alive && s.serial == r.serial) remove(r.production, r.slot);
     }
-    index[id].clear();
+    heads[id] = kUnranked;
 }
 
 bool Matcher::extend(std::size_t p, const std::vector<Step>& plan, std::size_t step, std::uint32_t rank) {
@@ -368,8 +368,8 @@ void Matcher::initialize() {
 }
 
 void Matcher::update(const std::vector<ElementId>& changedVertices, const std::vector<ElementId>& changedEdges) {
-    vertexMatches_.resize(graph_.vertices().size());
-    edgeMatches_.resize(graph_.edges().size());
+    vertexMatches_.resize(graph_.vertices().size(), kUnranked);
+    edgeMatches_.resize(graph_.edges().size(), kUnranked);
     vertexRank_.resize(graph_.vertices().size(), kUnranked);
     edgeRank_.resize(graph_.edges().size(), kUnranked);
     for (ElementId v : changedVertices) dropMatchesOf(vertexMatches_, v);

@@ -50,7 +50,13 @@ public:
     MatchView oldest(std::size_t production, std::size_t i) const;
 
 private:
-    struct Step;
+    /// One binding of a search plan (from an anchor, the rest of the mother graph).
+    struct Step {
+        enum Kind : std::uint8_t { VertexAtEdgeEnd, EdgeAtVertex, AnyVertex, AnyEdge } kind;
+        int mother = 0;  // the mother element this step binds
+        int via = 0;     // VertexAtEdgeEnd: the bound mother edge; EdgeAtVertex: the bound mother vertex
+        int end = 0;     // the end of the mother edge that `via` / the new vertex is
+    };
     struct Stored {
         bool alive = false;
         std::uint32_t serial = 0;
@@ -68,8 +74,11 @@ private:
         std::vector<std::uint32_t> all;         // live slots
         std::map<std::int64_t, std::vector<std::uint32_t>> buckets;  // generation sum -> live slots
     };
+    /// The matches an element is in: a singly linked list per element in one pool (no allocation
+    /// per element); entries of dropped matches are skipped by their serial, a list is cut when its
+    /// element changes, and the pool is reused by the next derivation.
     struct SlotRef {
-        std::uint32_t production, slot, serial;
+        std::uint32_t production, slot, serial, next;
     };
 
     void buildPlans();
@@ -82,7 +91,8 @@ private:
     bool geometricOrderHolds(std::size_t p) const;
     void record(std::size_t p, std::uint32_t rank);
     void remove(std::size_t p, std::uint32_t slot);
-    void dropMatchesOf(std::vector<std::vector<SlotRef>>& index, ElementId id);
+    void dropMatchesOf(std::vector<std::uint32_t>& heads, ElementId id);
+    void link(std::vector<std::uint32_t>& heads, ElementId id, const SlotRef& ref);
     MatchView view(std::size_t p, std::uint32_t slot) const;
 
     const GraphGrammar& grammar_;
@@ -91,7 +101,8 @@ private:
     MatchBudget budget_;
     bool fixGeometricOrdering_;
     std::vector<PerProduction> productions_;
-    std::vector<std::vector<SlotRef>> vertexMatches_, edgeMatches_;  // per host element
+    std::vector<SlotRef> links_;                                      // the lists' pool
+    std::vector<std::uint32_t> vertexMatches_, edgeMatches_;          // per host element: its list's head
     std::vector<std::uint32_t> vertexRank_, edgeRank_;               // changed-order rank this update
     std::vector<Value> conditionFrame_;                               // attr, attrs, globals...
     // The match being built.

@@ -112,11 +112,12 @@ void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t optio
     for (std::size_t j = 0; j < P.motherEdges.size(); ++j) generation = std::max(generation, graph.edge(edgeImages[j]).generation);
     generation += 1;
 
-    std::vector<Vec2> autoPositions(O.vertices.size());
+    std::vector<Vec2>& autoPositions = autoPositions_;
+    autoPositions.assign(O.vertices.size(), Vec2{});
     bool anyNew = false;
     for (const DaughterVertex& d : O.vertices) anyNew = anyNew || d.mother < 0;
     if (anyNew) {
-        const PlacementFrame frame = placementFrame(P, O, graph, vertexImages, edgeImages, swapped);
+        const PlacementFrame frame = placementFrame(P, O, graph, vertexImages, edgeImages, swapped, placementScratch_);
         for (std::size_t i = 0; i < O.vertices.size(); ++i)
             if (O.vertices[i].mother < 0) autoPositions[i] = frame.place(O.vertices[i].position);
     }
@@ -126,7 +127,10 @@ void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t optio
     if (F.readsOld) oldCopies_.reserve(O.vertices.size() + O.edges.size());
 
     // Delete what the morphism does not keep: edges, then vertices (their edges dangle).
-    std::vector<char> keptVertex(P.motherVertices.size(), 0), keptEdge(P.motherEdges.size(), 0);
+    std::vector<char>& keptVertex = keptVertex_;
+    std::vector<char>& keptEdge = keptEdge_;
+    keptVertex.assign(P.motherVertices.size(), 0);
+    keptEdge.assign(P.motherEdges.size(), 0);
     for (const DaughterVertex& d : O.vertices)
         if (d.mother >= 0) keptVertex[std::size_t(d.mother)] = 1;
     for (const DaughterEdge& d : O.edges)
@@ -144,11 +148,15 @@ void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t optio
     // Create what the daughter adds; its attributes in file order (verbatim ones now).
     auto newAttrs = [&](const std::vector<DaughterAttr>& attrs) {
         AttrMap map;
+        map.entries.reserve(attrs.size() + 1);
         for (const DaughterAttr& a : attrs) map.set(a.key, a.verbatim ? a.value : Value());
         map.set(grammar_.keys.generation, Value(generation));
         return map;
     };
-    std::vector<ElementId> vertexIds(O.vertices.size()), edgeIds(O.edges.size());
+    std::vector<ElementId>& vertexIds = vertexIds_;
+    std::vector<ElementId>& edgeIds = edgeIds_;
+    vertexIds.resize(O.vertices.size());
+    edgeIds.resize(O.edges.size());
     for (std::size_t i = 0; i < O.vertices.size(); ++i) {
         const DaughterVertex& d = O.vertices[i];
         if (d.mother >= 0) {

@@ -6,6 +6,7 @@
 #pragma once
 #include <vector>
 
+#include "graph/auto_position.hpp"
 #include "graph/draw_source.hpp"
 #include "graph/graph_grammar.hpp"
 #include "graph/host_graph.hpp"
@@ -51,6 +52,11 @@ private:
     std::vector<std::vector<OptionFrame>> frames_;  // per production, per option
     std::vector<ElementId> changedVertices_, changedEdges_;
     std::vector<AttrMap> oldCopies_;
+    // Scratch kept between steps (a step allocates only the elements it adds).
+    std::vector<Vec2> autoPositions_;
+    std::vector<char> keptVertex_, keptEdge_;
+    std::vector<ElementId> vertexIds_, edgeIds_;
+    PlacementScratch placementScratch_;
 };
 
 }  // namespace shapevo::graph

@@ -12,7 +12,7 @@
 
 #include "base/input_error.hpp"
 #include "graph/yaml_tree.hpp"
-#include "test_support.hpp"
+#include "../test_support.hpp"
 
 namespace yaml_tree_test {
 
