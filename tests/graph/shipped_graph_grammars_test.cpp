@@ -335,8 +335,13 @@ TEST(ShippedGraphGrammars, FacadeHangsExactlyOneBlindInEachWindow) {
                 EXPECT_GE(b.position.y, w->position.y - 0.85);
                 EXPECT_LE(b.position.y, w->position.y + 0.85);
                 const double drop = numberAttr(g, b.attrs, "drop");
-                if (textAttrIs(g, b.attrs, "blind", "open")) ++open, EXPECT_EQ(drop, 0.0);
-                else ++lowered, EXPECT_TRUE(drop >= 0.25 && drop <= 0.9) << drop;
+                if (textAttrIs(g, b.attrs, "blind", "open")) {
+                    ++open;
+                    EXPECT_EQ(drop, 0.0);
+                } else {
+                    ++lowered;
+                    EXPECT_TRUE(drop >= 0.25 && drop <= 0.9) << drop;
+                }
             }
             EXPECT_EQ(blinds, 1) << "seed " << seed;
         }
