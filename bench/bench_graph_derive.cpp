@@ -67,6 +67,9 @@ BENCHMARK(BM_KochFlake192)->Unit(benchmark::kMillisecond);
 void BM_KochFlake192WithSvg(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 192, true); }
 BENCHMARK(BM_KochFlake192WithSvg)->Unit(benchmark::kMillisecond);
 
+void BM_KochFlake10k(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 10'000); }
+BENCHMARK(BM_KochFlake10k)->Unit(benchmark::kMillisecond)->Iterations(10);
+
 void BM_KochFlake100k(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 100'000); }
 BENCHMARK(BM_KochFlake100k)->Unit(benchmark::kMillisecond)->Iterations(3);
 
