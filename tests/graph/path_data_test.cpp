@@ -89,36 +89,38 @@ std::string num(double v) {
 }
 
 TEST(PathDataArc, FourFlagCombinationsPickTheArcsOfABruteForceConstruction) {
-    // From (1, 0) to (0, 1), radius 1: the candidate centres are (0, 0) and (1, 1).
-    const Vec2 from{1, 0}, to{0, 1};
+    // Between (1, 0) and (0, 1), either way, radius 1: the candidate centres are (0, 0) and (1, 1).
     const Vec2 centres[2] = {{0, 0}, {1, 1}};
-    for (int large = 0; large < 2; ++large)
-        for (int sweep = 0; sweep < 2; ++sweep) {
-            // Independently: for each centre, the angle from `from` to `to` turning the sweep's way
-            // (sweep 1: growing angles); the arc is the one whose size agrees with the large flag.
-            Ellipse chosen;
-            double expected = 0;
-            int matches = 0;
-            for (const Vec2 c : centres) {
-                const Ellipse e{c, 1, 1, 0};
-                double turn = e.angle(to) - e.angle(from);
-                if (sweep && turn < 0) turn += 2 * kPi;
-                if (!sweep && turn > 0) turn -= 2 * kPi;
-                if ((std::abs(turn) > kPi) == bool(large)) {
-                    chosen = e;
-                    expected = turn;
-                    ++matches;
-                }
+    for (int combination = 0; combination < 8; ++combination) {
+        const bool reversed = combination & 4;
+        const int large = (combination >> 1) & 1, sweep = combination & 1;
+        const Vec2 from = reversed ? Vec2{0, 1} : Vec2{1, 0}, to = reversed ? Vec2{1, 0} : Vec2{0, 1};
+        // Independently: for each centre, the angle from `from` to `to` turning the sweep's way
+        // (sweep 1: growing angles); the arc is the one whose size agrees with the large flag.
+        Ellipse chosen;
+        double expected = 0;
+        int matches = 0;
+        for (const Vec2 c : centres) {
+            const Ellipse e{c, 1, 1, 0};
+            double turn = e.angle(to) - e.angle(from);
+            if (sweep && turn < 0) turn += 2 * kPi;
+            if (!sweep && turn > 0) turn -= 2 * kPi;
+            if ((std::abs(turn) > kPi) == bool(large)) {
+                chosen = e;
+                expected = turn;
+                ++matches;
             }
-            ASSERT_EQ(matches, 1);
-            const std::string d = "M1 0 A1 1 0 " + std::to_string(large) + " " + std::to_string(sweep) + " 0 1";
-            SCOPED_TRACE(d);
-            const PathData p = parsePathData(d);
-            EXPECT_TRUE(p.complete);
-            const int pieces = expectArc(p.segments, from, chosen, expected);
-            EXPECT_EQ(pieces, large ? 3 : 1);
-            EXPECT_EQ(p.segments.back().p[2], to) << "the arc ends exactly at its end point";
         }
+        ASSERT_EQ(matches, 1);
+        const std::string d = "M" + num(from.x) + " " + num(from.y) + " A1 1 0 " + std::to_string(large) + " " +
+                              std::to_string(sweep) + " " + num(to.x) + " " + num(to.y);
+        SCOPED_TRACE(d);
+        const PathData p = parsePathData(d);
+        EXPECT_TRUE(p.complete);
+        const int pieces = expectArc(p.segments, from, chosen, expected);
+        EXPECT_EQ(pieces, large ? 3 : 1);
+        EXPECT_EQ(p.segments.back().p[2], to) << "the arc ends exactly at its end point";
+    }
 }
 
 TEST(PathDataArc, RotatedEllipseArcStaysOnItsEllipse) {
