@@ -4,6 +4,8 @@
 #include <cctype>
 #include <charconv>
 
+#include "graph/elliptical_arc.hpp"
+
 namespace shapevo::graph {
 
 // Helpers in a named namespace: the unity build joins this file with others of the layer.
@@ -53,6 +55,13 @@ struct Scanner {
         i = j;
         return true;
     }
+    /// An arc's flag: one '0' or '1', so "a1 1 0 00 1 1" has the flags 0 and 0 (SVG's grammar).
+    bool flag(bool& out) {
+        skipSeparators();
+        if (i >= s.size() || (s[i] != '0' && s[i] != '1')) return false;
+        out = s[i++] == '1';
+        return true;
+    }
     bool point(Vec2& p, Vec2 origin) {
         if (!number(p.x) || !number(p.y)) return false;
         p.x += origin.x;
@@ -85,6 +94,10 @@ PathData parsePathData(std::string_view d) {
         const bool relative = std::islower(static_cast<unsigned char>(command));
         const char op = char(std::toupper(static_cast<unsigned char>(command)));
         const Vec2 origin = relative ? current : Vec2{};
+        if (out.segments.empty() && op != 'M') {  // a path starts with M
+            out.complete = false;
+            break;
+        }
         PathSegment seg;
         bool ok = true;
         switch (op) {
@@ -138,13 +151,26 @@ PathData parsePathData(std::string_view d) {
                 current = seg.p[2];
             }
             break;
+        case 'A': {
+            EllipticalArc arc;
+            arc.from = current;
+            ok = sc.number(arc.rx) && sc.number(arc.ry) && sc.number(arc.xAxisRotationDegrees) && sc.flag(arc.largeArc) &&
+                 sc.flag(arc.sweep) && sc.point(arc.to, origin);
+            if (ok) {
+                appendArcSegments(arc, out.segments);  // already appended: nothing for the push below
+                current = arc.to;
+                previous = op;
+                continue;
+            }
+            break;
+        }
         case 'Z':
             seg.op = PathSegment::Op::Close;
             current = subpathStart;
             break;
-        default: ok = false;  // arcs (A) and anything else
+        default: ok = false;  // an unknown command
         }
-        if (!ok || (out.segments.empty() && seg.op != PathSegment::Op::Move)) {  // a path starts with M
+        if (!ok) {
             out.complete = false;
             break;
         }

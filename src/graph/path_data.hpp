@@ -1,7 +1,10 @@
-// parsePathData: an SVG path's `d` (the subset graph grammars write: M L H V Q T C S Z, absolute
+// parsePathData: an SVG path's `d` (all of SVG 1.1's path data: M L H V Q T C S A Z, absolute
 // and relative, implicit repeats, numbers with exponents and without separators where SVG allows
-// them) into absolute segments in user units, for the PNG painter and any rasterizer of a
-// Drawing. As SVG renderers do, the path is kept up to the first error and the rest dropped.
+// them, arc flags without separators as in "a1 1 0 00 1 1") into absolute segments in user units,
+// for the PNG painter and any rasterizer of a Drawing. An arc (A) becomes what SVG renderers draw
+// (elliptical_arc.hpp): nothing, a Line, or one to four Cubic segments, so a reader of the
+// segments meets no arc. As SVG renderers do, the path is kept up to the first error and the rest
+// dropped.
 #pragma once
 #include <cstdint>
 #include <string_view>
@@ -19,7 +22,9 @@ struct PathSegment {
 
 struct PathData {
     std::vector<PathSegment> segments;
-    bool complete = true;  ///< false: an error (an arc, an unknown command, a bad number) cut it there
+    /// false: an error cut the path there (an unknown command, a missing or bad number or arc flag,
+    /// a path not starting with M); the segments before it are kept
+    bool complete = true;
 };
 
 PathData parsePathData(std::string_view d);

@@ -1,12 +1,14 @@
 // Tests of report/graph_picture: a Drawing painted as an SVG renderer paints it — a thick black
 // line dark along its middle and white beyond its butt ends, a default vertex circle a ring (no
 // fill), a rect filled black by default and red when asked, fill-opacity blending, a quadratic
-// path stroked through its curve, an image as a grey placeholder, the canvas fitted into another
+// path stroked through its curve, a half-circle arc (A) stroked on its side only, an image as a grey placeholder, the canvas fitted into another
 // size, and the natural size (one pixel per user unit).
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "graph/drawing.hpp"
@@ -111,6 +113,26 @@ TEST(GraphPicture, QuadraticPathIsStrokedAlongItsCurve) {
     const Picture p = paint(d);
     EXPECT_EQ(p.at(int(2 * kUnit), int(2 * kUnit)), (std::array<int, 3>{0, 128, 0}));
     EXPECT_EQ(p.at(int(2 * kUnit), int(1 * kUnit)), kWhite);
+}
+
+TEST(GraphPicture, HalfCircleArcIsStrokedOnItsSideAndTheCentreStaysWhite) {
+    Drawing d = square();
+    // In user units: from (35.4, -70.9) to (106.3, -70.9), radius 35.4 about the picture's centre,
+    // sweep 1 (growing angles, y down): the upper half; a line after it checks the path goes on.
+    const std::string k1 = std::to_string(kUnit), k2 = std::to_string(2 * kUnit), k3 = std::to_string(3 * kUnit);
+    d.shapes.push_back(shape(ShapeKind::Path, {{"d", "M " + k1 + " -" + k2 + " A " + k1 + " " + k1 + " 0 0 1 " + k3 +
+                                                         " -" + k2 + " l 0 " + k1},
+                                               {"fill", "none"},
+                                               {"stroke", "black"},
+                                               {"stroke-width", "6"}}));
+    const Picture p = paint(d);
+    const int c = int(2 * kUnit), r = int(kUnit), diagonal = int(kUnit / std::sqrt(2.0));
+    EXPECT_LT(p.at(c, c - r)[0], 64) << "the arc's top";
+    EXPECT_LT(p.at(c + diagonal, c - diagonal)[0], 64) << "the arc at 45 degrees";
+    EXPECT_LT(p.at(c - diagonal, c - diagonal)[0], 64) << "the arc at 135 degrees";
+    EXPECT_EQ(p.at(c, c), kWhite) << "the centre";
+    EXPECT_EQ(p.at(c, c + r), kWhite) << "the lower half is not drawn";
+    EXPECT_LT(p.at(int(3 * kUnit), c + r / 2)[0], 64) << "the line after the arc";
 }
 
 TEST(GraphPicture, ImageIsAGreyPlaceholder) {
