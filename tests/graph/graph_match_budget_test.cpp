@@ -19,7 +19,7 @@ using namespace shapevo::graph;
 /// A host of `hostVertices` vertices (ids 1000...), with an edge between every pair when
 /// `complete`, and one production 'Many' whose mother graph has ten vertices with no condition,
 /// in a chain of nine edges when `chain`, deleted by an empty daughter graph.
-std::string wildcardGrammar(int hostVertices, bool complete, bool chain) {
+std::string wildcardGrammar(int hostVertices, bool complete, bool chain, bool lastNeverMatches = false) {
     std::string t = "host_graphs:\n  H:\n    id: 1\n    vertices:\n";
     for (int i = 0; i < hostVertices; ++i)
         t += "    - {id: " + std::to_string(1000 + i) + ", attr: {x: " + std::to_string(i % 60) + ", y: " + std::to_string(i / 60) + "}}\n";
@@ -30,7 +30,9 @@ std::string wildcardGrammar(int hostVertices, bool complete, bool chain) {
             for (int b = a + 1; b < hostVertices; ++b)
                 t += "    - {id: " + std::to_string(edgeId++) + ", vertex1: " + std::to_string(1000 + a) + ", vertex2: " + std::to_string(1000 + b) + "}\n";
     t += "productions:\n  Many:\n    id: 2\n    mother_graph:\n      id: 3\n      vertices:\n";
-    for (int i = 0; i < 10; ++i) t += "      - {id: " + std::to_string(10 + i) + ", attr: {x: " + std::to_string(i) + ", y: 0}}\n";
+    for (int i = 0; i < 10; ++i)
+        t += "      - {id: " + std::to_string(10 + i) + ", attr: {x: " + std::to_string(i) + ", y: 0" +
+             (lastNeverMatches && i == 9 ? ", mark: 'True'" : "") + "}}\n";
     t += "      edges:\n";
     if (chain)
         for (int i = 0; i < 9; ++i)
@@ -60,6 +62,12 @@ TEST(GraphMatchBudget, TenWildcardVerticesOnThreeThousandVerticesStopWithABudget
 TEST(GraphMatchBudget, AChainOfTenWildcardVerticesOnADenseHostStopsWithABudgetError) {
     // 80 vertices, every pair joined: 80 + 3160 elements, 80·79·…·71 / 2 chains.
     expectBudgetError(wildcardGrammar(80, true, true));
+}
+
+TEST(GraphMatchBudget, AChainThatNeverCompletesStopsAtTheSearchBudget) {
+    // The last vertex needs a key no host vertex has: no match is ever found, so the search
+    // budget (element bindings per step), not the match budget, has to stop it.
+    expectBudgetError(wildcardGrammar(80, true, true, true));
 }
 
 TEST(GraphMatchBudget, ASmallerBudgetStopsSooner) {
