@@ -3,7 +3,6 @@
 #include "graph/read_graph_grammar.hpp"
 
 #include <fstream>
-#include <iterator>
 #include <set>
 
 #include "base/input_error.hpp"
@@ -173,9 +172,17 @@ GraphGrammar parseGraphGrammar(std::string_view text, const std::string& path) {
 
 GraphGrammar readGraphGrammar(const std::string& path) {
     const YamlNode root = readYamlFile(path);  // the size limit, read errors
-    // The text again, for expression errors' columns (within the size limit, as just checked).
+    // The text again, for expression errors' columns; none if it grew past the limit meanwhile.
+    std::string text;
     std::ifstream in(path, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char block[1 << 16];
+    while (in.read(block, sizeof block) || in.gcount() > 0) {
+        text.append(block, std::size_t(in.gcount()));
+        if (text.size() > YamlLimits{}.maxBytes) {
+            text.clear();
+            break;
+        }
+    }
     return grammarOf(root, path, text);
 }
 
