@@ -1,7 +1,8 @@
 // bench_graph_derive: 2D graph grammar derivations (src/graph/). (1) The original's Koch flake,
 // 192 steps (the paper's), per derivation; the original takes 3.2–5.1 s per derivation on this
 // kind of machine (graph-grammar README, section 5). (2) Koch to 100,000 steps (600,006
-// elements): a step's cost must not grow with the graph. (3) Each shipped grammar of
+// elements): a step's cost must not grow with the graph. The SVG text is measured with the
+// 192-step flake (BM_KochFlake192WithSvg). (3) Each shipped grammar of
 // grammars/graph/ to its end (or its step limit). The original's files are read from
 // ../shared/graph-grammar/original-examples (never copied); a benchmark whose file is absent is
 // skipped with a message.
@@ -14,7 +15,9 @@
 #include <string>
 
 #include "graph/derive.hpp"
+#include "graph/drawing.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "graph/svg_writer.hpp"
 
 #include "bench_main.hpp"
 
@@ -32,7 +35,7 @@ const GraphGrammar* load(const std::string& path) {
 
 std::string original(const char* name) { return std::string(SHAPEVO_SOURCE_DIR "/../shared/graph-grammar/original-examples/") + name; }
 
-void deriveSteps(benchmark::State& state, const std::string& path, std::int64_t steps) {
+void deriveSteps(benchmark::State& state, const std::string& path, std::int64_t steps, bool svg = false) {
     const GraphGrammar* g = load(path);
     if (!g) {
         state.SkipWithError(("absent: " + path).c_str());
@@ -47,6 +50,11 @@ void deriveSteps(benchmark::State& state, const std::string& path, std::int64_t 
         const DeriveResult r = deriveGraph(*g, 0, draws, limits);
         elements = r.graph.elements();
         benchmark::DoNotOptimize(elements);
+        if (svg) {
+            const Drawing drawing = drawingOf(r.graph, g->names, path);
+            const std::string text = drawingSvg(drawing, g->filters, canvasOf(drawing, 0.5));
+            benchmark::DoNotOptimize(text.data());
+        }
     }
     state.counters["elements"] = double(elements);
     state.counters["derivations/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
@@ -54,6 +62,10 @@ void deriveSteps(benchmark::State& state, const std::string& path, std::int64_t 
 
 void BM_KochFlake192(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 192); }
 BENCHMARK(BM_KochFlake192)->Unit(benchmark::kMillisecond);
+
+// The measure: a derivation and its SVG text (not written to disk).
+void BM_KochFlake192WithSvg(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 192, true); }
+BENCHMARK(BM_KochFlake192WithSvg)->Unit(benchmark::kMillisecond);
 
 void BM_KochFlake100k(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 100'000); }
 BENCHMARK(BM_KochFlake100k)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -11,7 +11,7 @@ constexpr std::array<CommandEntry, 10> kCommands{{
     {"run", "Evolve a model: shapevo run CONFIG.toml", true, RunCommand::addOptions, RunCommand::run},
     {"sample",
      "Write random derivations of a grammar (no evolution): every sibling position of a slot is expressed with the slot's "
-     "prob, independently, recursively",
+     "prob, independently, recursively; a 2D graph grammar (.yml) is derived and drawn as SVG or PNG",
      false, SampleCommand::addOptions, SampleCommand::run},
     {"target",
      "Make a target from a mesh (OBJ, PLY, STL, OFF, glTF/GLB, FBX, 3MF, DAE, 3DS or any other format Assimp reads): a volume "

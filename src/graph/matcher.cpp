@@ -129,7 +129,7 @@ void Matcher::countSearchStep(std::size_t p) {
 bool Matcher::vertexFits(std::size_t p, int mother, ElementId host) {
     countSearchStep(p);
     const HostVertex& v = graph_.vertex(host);
-    if (!v.alive) return false;
+    if (!v.alive || vertexRank_[host] < currentRank_) return false;  // found from an earlier changed element
     for (ElementId b : boundVertices_)
         if (b == host) return false;
     const MotherVertex& m = grammar_.productions[p].motherVertices[std::size_t(mother)];
@@ -139,7 +139,7 @@ bool Matcher::vertexFits(std::size_t p, int mother, ElementId host) {
 bool Matcher::edgeFits(std::size_t p, int mother, ElementId host, std::uint8_t swapped) {
     countSearchStep(p);
     const HostEdge& h = graph_.edge(host);
-    if (!h.alive) return false;
+    if (!h.alive || edgeRank_[host] < currentRank_) return false;
     const MotherEdge& m = grammar_.productions[p].motherEdges[std::size_t(mother)];
     if (swapped && (m.directed || h.vertex1 == h.vertex2 || (m.vertex1 < 0 && m.vertex2 < 0))) return false;
     for (ElementId b : boundEdges_)
@@ -334,8 +334,10 @@ bool Matcher::extend(std::size_t p, const std::vector<Step>& plan, std::size_t s
 }
 
 void Matcher::searchFrom(bool isVertex, ElementId anchor, std::uint32_t rank) {
+    currentRank_ = rank;
     for (std::size_t p = 0; p < productions_.size(); ++p) {
         PerProduction& pp = productions_[p];
+        if ((isVertex ? pp.vertexCount : pp.edgeCount) == 0) continue;
         boundVertices_.assign(pp.vertexCount, kNoVertex);
         boundEdges_.assign(pp.edgeCount, kNoVertex);
         boundSwapped_.assign(pp.edgeCount, 0);

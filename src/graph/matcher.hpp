@@ -109,6 +109,7 @@ private:
     std::vector<ElementId> boundVertices_, boundEdges_;
     std::vector<std::uint8_t> boundSwapped_;
     std::size_t searchSteps_ = 0;
+    std::uint32_t currentRank_ = 0;  // the rank of the anchor being searched from
 };
 
 }  // namespace shapevo::graph

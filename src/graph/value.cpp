@@ -110,6 +110,17 @@ void appendFloatRepr(std::string& out, double d) {
         out += d < 0 ? "-inf" : "inf";
         return;
     }
+    // Python writes fixed notation when the shortest digits' exponent is in [-4, 16): the same
+    // digits std::to_chars gives in fixed form (1e-4 and 1e16 are where the exponent changes).
+    const double magnitude = std::fabs(d);
+    if (magnitude == 0 || (magnitude >= 1e-4 && magnitude < 1e16)) {
+        char fixed[64];
+        const auto f = std::to_chars(fixed, fixed + sizeof fixed, d, std::chars_format::fixed);
+        const std::string_view text(fixed, std::size_t(f.ptr - fixed));
+        out += text;
+        if (text.find('.') == std::string_view::npos) out += ".0";
+        return;
+    }
     // Shortest round-trip digits in scientific form: [-]d[.ddd]e[+-]XX.
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::scientific);

@@ -4,6 +4,8 @@
 // octal / sexagesimal / decimal.
 #include "graph/yaml_scalar.hpp"
 
+#include "base/input_error.hpp"
+
 #include <charconv>
 #include <clocale>
 #include <cmath>
@@ -105,11 +107,14 @@ std::string withoutUnderscores(std::string_view s) {
     return out;
 }
 
-// Digits of `s` in `base` into `out`; false if empty, not all digits, or beyond 64 bits.
-bool parseUnsigned(std::string_view s, int base, std::uint64_t& out) {
-    if (s.empty()) return false;
+// Digits of `s` in `base` into `out`: kOk, kInvalid (empty or not all digits) or kTooLarge.
+enum class Parsed { kOk, kInvalid, kTooLarge };
+Parsed parseUnsigned(std::string_view s, int base, std::uint64_t& out) {
+    if (s.empty()) return Parsed::kInvalid;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out, base);
-    return ec == std::errc() && end == s.data() + s.size();
+    if (end != s.data() + s.size()) return Parsed::kInvalid;
+    if (ec == std::errc::result_out_of_range) return Parsed::kTooLarge;
+    return ec == std::errc() ? Parsed::kOk : Parsed::kInvalid;
 }
 
 // constructor.py construct_yaml_int. Returns "" or what is wrong.
@@ -121,38 +126,33 @@ std::string constructInt(std::string_view text, std::int64_t& out) {
         v.erase(0, 1);
     }
     std::uint64_t magnitude = 0;
-    bool ok = false;
+    Parsed parsed = Parsed::kOk;
     if (v == "0")
-        ok = true;
+        parsed = Parsed::kOk;
     else if (v.rfind("0b", 0) == 0)
-        ok = parseUnsigned(std::string_view(v).substr(2), 2, magnitude);
+        parsed = parseUnsigned(std::string_view(v).substr(2), 2, magnitude);
     else if (v.rfind("0x", 0) == 0)
-        ok = parseUnsigned(std::string_view(v).substr(2), 16, magnitude);
+        parsed = parseUnsigned(std::string_view(v).substr(2), 16, magnitude);
     else if (!v.empty() && v[0] == '0')
-        ok = parseUnsigned(std::string_view(v).substr(1), 8, magnitude);
+        parsed = parseUnsigned(std::string_view(v).substr(1), 8, magnitude);
     else if (v.find(':') != std::string::npos) {  // sexagesimal: 190:20:30 = 190*3600 + 20*60 + 30
-        ok = true;
         std::size_t start = 0;
-        while (ok) {
+        while (parsed == Parsed::kOk) {
             const std::size_t colon = v.find(':', start);
             std::uint64_t part = 0;
-            ok = parseUnsigned(std::string_view(v).substr(start, colon - start), 10, part) &&
-                 !__builtin_mul_overflow(magnitude, 60u, &magnitude) &&
-                 !__builtin_add_overflow(magnitude, part, &magnitude);
+            parsed = parseUnsigned(std::string_view(v).substr(start, colon - start), 10, part);
+            if (parsed == Parsed::kOk && (__builtin_mul_overflow(magnitude, 60u, &magnitude) ||
+                                          __builtin_add_overflow(magnitude, part, &magnitude)))
+                parsed = Parsed::kTooLarge;
             if (colon == std::string::npos) break;
             start = colon + 1;
         }
     } else
-        ok = parseUnsigned(v, 10, magnitude);
-    if (!ok) {
-        bool allDigits = !v.empty();
-        for (char c : v) allDigits = allDigits && (isHex(c) || c == 'x' || c == ':');
-        return allDigits ? "the integer " + std::string(text) + " does not fit in 64 bits"
-                         : "'" + std::string(text) + "' is not an integer";
-    }
+        parsed = parseUnsigned(v, 10, magnitude);
+    if (parsed == Parsed::kInvalid) return "'" + shortened(text) + "' is not an integer";
     constexpr std::uint64_t kMaxPositive = std::numeric_limits<std::int64_t>::max();
-    if (magnitude > kMaxPositive + (negative ? 1 : 0))
-        return "the integer " + std::string(text) + " does not fit in 64 bits";
+    if (parsed == Parsed::kTooLarge || magnitude > kMaxPositive + (negative ? 1 : 0))
+        return "the integer " + shortened(text) + " does not fit in 64 bits";
     out = negative ? static_cast<std::int64_t>(0 - magnitude) : static_cast<std::int64_t>(magnitude);
     return {};
 }
@@ -200,7 +200,7 @@ std::string constructFloat(std::string_view text, double& out) {
         }
     } else
         ok = parseDouble(v, out);
-    if (!ok) return "'" + std::string(text) + "' is not a number";
+    if (!ok) return "'" + shortened(text) + "' is not a number";
     out *= sign;
     return {};
 }
@@ -236,8 +236,8 @@ std::string resolveImplicit(YamlNode& node) {
 }  // namespace
 
 std::string shortTag(std::string_view tag) {
-    if (tag.rfind(kYamlTagPrefix, 0) == 0) return "!!" + std::string(tag.substr(kYamlTagPrefix.size()));
-    return std::string(tag);
+    if (tag.rfind(kYamlTagPrefix, 0) == 0) return "!!" + shortened(tag.substr(kYamlTagPrefix.size()));
+    return shortened(tag);
 }
 
 std::string resolve(YamlNode& node, std::string_view tag, bool plain) {
@@ -261,7 +261,7 @@ std::string resolve(YamlNode& node, std::string_view tag, bool plain) {
             if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
         node.kind = YamlNode::Kind::Bool;
         if (isBoolWord(lower, node.boolean)) return {};
-        return "'" + node.text + "' is not a boolean (yes, no, true, false, on, off)";
+        return "'" + shortened(node.text) + "' is not a boolean (yes, no, true, false, on, off)";
     }
     if (name == "int") {
         node.kind = YamlNode::Kind::Int;

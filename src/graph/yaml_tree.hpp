@@ -34,9 +34,19 @@ struct YamlNode {
     double number = 0;            // Kind::Float
     std::string text;             // the scalar as written (every scalar kind), for messages and strings
     bool quoted = false;          // written quoted or as a block (a string unless explicitly tagged)
-    int line = 0, column = 0;     // 1-based, where the node starts
+    int line = 0, column = 0;     // 1-based, where the node starts (a copy made for an alias: its
+                                  // root is placed at the alias, its children where the anchor's are)
     std::vector<YamlNode> items;                          // Kind::Sequence
     std::vector<std::pair<YamlNode, YamlNode>> entries;   // Kind::Mapping, in file order
+
+    // Declared here, defaulted in yaml_tree.cpp: with clang and libstdc++, implicit (inline)
+    // members would instantiate std::pair<YamlNode, YamlNode> while YamlNode is incomplete.
+    YamlNode();
+    YamlNode(const YamlNode&);
+    YamlNode(YamlNode&&) noexcept;
+    YamlNode& operator=(const YamlNode&);
+    YamlNode& operator=(YamlNode&&) noexcept;
+    ~YamlNode();
 
     bool isScalar() const { return kind != Kind::Sequence && kind != Kind::Mapping; }
     /// The value of `key` in a mapping whose keys are scalars, or nullptr.

@@ -15,6 +15,7 @@
 #include "report/render/contact_sheet.hpp"
 #include "run/command_options.hpp"
 #include "run/model_export.hpp"
+#include "run/sample_graphs.hpp"
 
 namespace shapevo {
 
@@ -86,6 +87,9 @@ void requireSizeWindow(const Grammar& g, const SampleRequest& r) {
 }  // namespace
 
 void sampleModels(const SampleRequest& r, std::ostream& out) {
+    if (isGraphGrammarPath(r.grammarPath)) return sampleGraphs(r, out);
+    if (!r.steps.empty()) throw InputError("--steps", "", "applies to graph grammars (.yml), not to " + shortened(r.grammarPath, 256));
+    if (!r.margin.empty()) throw InputError("--margin", "", "applies to graph grammars (.yml), not to " + shortened(r.grammarPath, 256));
     const std::uint64_t seed = parseSeed(r.seed, "--seed", UINT64_MAX);
     const std::uint32_t count = parseCount(r.count, kMaxSampleCount);
     constexpr std::array<std::string_view, 4> kSampleFormats{"obj", "ply", "glb", "png"};

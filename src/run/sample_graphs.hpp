@@ -1,0 +1,28 @@
+// sampleGraphs: what `shapevo sample FILE.yml` does for a 2D graph grammar (graph-grammar README):
+// derivations from the file's first host graph, each drawn as the original's exporter draws it,
+// written as SVG (graph/svg_writer.hpp) or PNG (report/graph_picture.hpp). Promises: file k is
+// the derivation of seed + k - 1, the same bytes on every machine; every option and output name
+// is checked and every derivation made and drawn before anything is written, so bad input leaves
+// no files behind; an existing file is never replaced.
+#pragma once
+#include <iosfwd>
+#include <string>
+
+#include "run/sample_models.hpp"
+
+namespace shapevo {
+
+/// True for a path `sample` reads as a graph grammar: .yml or .yaml (any case).
+bool isGraphGrammarPath(const std::string& path);
+
+/// The margin `sample` adds around a graph grammar's vertices, in model units, when --margin is
+/// not given (the shapes on the border stay whole; --margin 0 is the original's canvas).
+inline constexpr double kDefaultGraphMargin = 0.5;
+
+/// Derives, draws and writes what `request` asks for; prints one line per file ("koch.yml seed
+/// 1: 192 steps, 579 vertices, 579 edges (0 dangling), 1158 elements -> koch.svg").
+/// @throw InputError for an option that only tree grammars take, a bad option value, an
+/// existing output, a file that cannot be read or a derivation that fails.
+void sampleGraphs(const SampleRequest& request, std::ostream& out);
+
+}  // namespace shapevo
