@@ -59,8 +59,8 @@ Outcome deriveOnce(const GraphGrammar& g, std::size_t host) {
     DeriveLimits limits;
     limits.maxSteps = 50;
     limits.maxElements = 5000;
-    limits.maxMatches = 20'000;
-    limits.maxSearchSteps = 200'000;
+    limits.maxMatches = 1'000;
+    limits.maxSearchSteps = 10'000;
     SeededDraws draws(41);
     Outcome o;
     try {
@@ -97,9 +97,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const InputError& e) {
         if (ok || first != e.what()) broken("reading twice gave two outcomes");
     }
+    static const bool verbose = std::getenv("SHAPEVO_FUZZ_VERBOSE") != nullptr;  // what each input did
+    if (verbose) std::fprintf(stderr, "read: %s\n", ok ? "ok" : first.c_str());
     if (!ok) return 0;
     if (g.hosts.empty()) broken("a grammar without a host graph");
     for (std::size_t host = 0; host < g.hosts.size() && host < 2; ++host)
-        if (!(deriveOnce(g, host) == deriveOnce(g, host))) broken("one seed gave two derivations");
+    {
+        const Outcome a = deriveOnce(g, host);
+        if (verbose) std::fprintf(stderr, "host %zu: %s steps %lld elements %zu\n", host, a.error.c_str(), (long long)a.steps, a.elements);
+        if (!(a == deriveOnce(g, host))) broken("one seed gave two derivations");
+    }
     return 0;
 }
