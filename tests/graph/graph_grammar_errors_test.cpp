@@ -346,6 +346,19 @@ TEST(GraphGrammarErrors, RequirementNamedLikeAVector) {
     expectRefused("26: {source: 12}", "26: {here: 12}", "44:14", {"option 20", "'here'"});
 }
 
+TEST(GraphReaderNames, AnElementsOwnRequirementHidesAGlobalOfTheSameName) {
+    // The global 'scale' is 2.0; daughter vertex 26 names its requirement 'scale' too and reads
+    // it as an element (a float has no .attr: the global would fail here).
+    std::string text = variant("26: {source: 12}", "26: {scale: 12}");
+    text.replace(text.find("source.attr"), 11, "scale.attr");
+    const GraphGrammar g = parseGraphGrammar(text, "bad.yml");
+    SeededDraws draws(2);
+    DeriveLimits limits;
+    limits.maxSteps = 1;
+    const DeriveResult r = deriveGraph(g, 0, draws, limits);
+    EXPECT_EQ(r.steps, 1);
+}
+
 // --- errors while deriving -----------------------------------------------------------------
 
 Refused deriveError(const std::string& text, const DeriveLimits& limits = {}) {
