@@ -153,6 +153,8 @@ GraphGrammar grammarOf(const YamlNode& root, const std::string& path, std::strin
     std::vector<std::string> globalNames;
     if (const YamlNode* globals = root.find("global_vars"); globals && globals->kind != YamlNode::Kind::Null) {
         const NameSlots none;
+        if (globals->entries.size() > kMaxGlobalVariables)
+            c.fail(*globals, "global_vars: more than " + std::to_string(kMaxGlobalVariables) + " global variables");
         for (const auto& [name, expr] : c.mapping(*globals, "global_vars").entries) {
             const std::string n = c.keyText(name, "global_vars");
             g.globals.push_back({n, c.compile(expr, none, "global variable '" + shortened(n) + "'"), c.filePlace(expr)});

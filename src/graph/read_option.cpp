@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "base/input_error.hpp"
 #include "graph/reader_context.hpp"
@@ -147,6 +148,8 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
     NameSlots& s = o.slots;
     std::set<std::string> taken;
     auto add = [&](const std::string& name, const YamlNode& at, const std::string& kind) {
+        if (s.names.size() >= kMaxOptionNames + 2)
+            c.fail(at, what + ": more than " + std::to_string(kMaxOptionNames) + " vectors, requirements for all and variables");
         if (!taken.insert(name).second) c.fail(at, what + ": the name '" + shortened(name) + "' (" + kind + ") is already used by another name of this option");
         s.add(name);
     };
@@ -207,15 +210,20 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         s.add(g);
     }
     o.sharedSlots = s.names.size();
+    c.countScope(o.sharedSlots, node, what);
     // Variables: application ones see the vectors, the `all` requirements and earlier application
     // variables; run ones see the globals and earlier run variables.
+    // One layout per kind, each variable's name made visible once it is compiled (no copy per
+    // variable: a file of many variables reads in linear time).
+    NameSlots runVisible = visibleOnly(s, {{globalsBegin, o.sharedSlots}}), appVisible = visibleOnly(s, {{2, allEnd}});
     std::size_t appSeen = appBegin, runSeen = runBegin;
     for (std::size_t i = 0; i < o.variables.size(); ++i) {
         OptionVariable& var = o.variables[i];
-        const NameSlots visible = var.perRun ? visibleOnly(s, {{runBegin, runSeen}, {globalsBegin, o.sharedSlots}})
-                                             : visibleOnly(s, {{2, allEnd}, {appBegin, appSeen}});
+        NameSlots& visible = var.perRun ? runVisible : appVisible;
         var.expression = c.compile(*variableNodes[i].second, visible, what + ", variable '" + shortened(var.name) + "'");
-        (var.perRun ? runSeen : appSeen)++;
+        std::size_t& seen = var.perRun ? runSeen : appSeen;
+        visible.names[seen] = s.names[seen];
+        ++seen;
     }
     (void)vectorsEnd;
 
@@ -234,18 +242,27 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
             if (taken.count(r.name))
                 c.fail(name, what + ": the requirement '" + shortened(r.name) +
                                  "' has the name of a vector, a requirement for all or a variable of this option");
-            own[d].push_back(std::move(r));
+            std::vector<Requirement>& list = own[d];
+            if (list.size() >= kMaxOptionNames)
+                c.fail(name, what + " attr_requirements: more than " + std::to_string(kMaxOptionNames) + " requirements for one element");
+            list.push_back(std::move(r));
         }
     }
-    auto slotsFor = [&](std::int64_t id, std::vector<Requirement>& requirements) {
-        NameSlots element = s;
+    // An element's layout: the shared slots, then its own requirements, which hide a global of
+    // the same name (NameSlots::find takes the first). One working layout, restored after each
+    // element: no copy per element.
+    NameSlots element = s;
+    element.names.resize(o.sharedSlots);
+    std::vector<std::pair<std::size_t, std::string>> hidden;
+    auto slotsFor = [&](std::int64_t id, std::vector<Requirement>& requirements) -> const NameSlots& {
+        for (auto& [i, name] : hidden) element.names[i] = std::move(name);
+        hidden.clear();
         element.names.resize(o.sharedSlots);
         if (const auto it = own.find(id); it != own.end()) {
             requirements = it->second;
             for (const Requirement& r : requirements) {
-                // The element's own name hides a global of that name (NameSlots::find takes the first).
-                for (std::size_t i = globalsBegin; i < o.sharedSlots; ++i)
-                    if (element.names[i] == r.name) element.names[i].clear();
+                const int global = element.find(r.name);
+                if (global >= 0) hidden.emplace_back(std::size_t(global), std::exchange(element.names[std::size_t(global)], std::string()));
                 element.add(r.name);
             }
         }

@@ -134,6 +134,7 @@ Production readProduction(ReaderContext& c, const std::string& name, const YamlN
     const YamlNode& motherId = c.required(mother, "id", what + " mother graph");
     c.declareId(motherId, what + " mother graph");
     MotherIds ids;
+    c.countScope(globals.size() + 2, node, what);
     readMotherGraph(c, mother, what + " mother graph", globals, p, ids);
     if (const YamlNode* cond = node.find("conditions"); cond && cond->kind != YamlNode::Kind::Null) {
         c.mapping(*cond, what + " conditions");  // only .geometric_ordering is read (the original reads no other key)
@@ -144,7 +145,9 @@ Production readProduction(ReaderContext& c, const std::string& name, const YamlN
         }
     }
     if (const YamlNode* vs = node.find("vectors"); vs && vs->kind != YamlNode::Kind::Null) {
-        for (const auto& [k, ref] : c.mapping(*vs, what + " vectors").entries) {
+        if (c.mapping(*vs, what + " vectors").entries.size() > kMaxOptionNames)
+            c.fail(*vs, what + ": more than " + std::to_string(kMaxOptionNames) + " vectors");
+        for (const auto& [k, ref] : vs->entries) {
             Production::Vector v;
             v.name = c.keyText(k, what + " vectors");
             const std::string vwhat = what + ", vector '" + shortened(v.name) + "'";

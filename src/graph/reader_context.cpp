@@ -118,6 +118,13 @@ void ReaderContext::declareId(const YamlNode& idNode, const std::string& what) {
                          std::to_string(it->second.first) + "); ids must be unique in the whole file");
 }
 
+void ReaderContext::countScope(std::size_t names, const YamlNode& at, const std::string& what) {
+    scopeNames_ += names;
+    if (scopeNames_ > kMaxNamesInScopes)
+        fail(at, what + ": the file's productions and options see more than " + std::to_string(kMaxNamesInScopes) +
+                     " names in all (every option sees every global variable); use fewer global variables or options");
+}
+
 namespace {
 
 bool continuesCharacter(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }

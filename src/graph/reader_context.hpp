@@ -12,6 +12,15 @@
 
 namespace shapevo::graph::reading {
 
+/// Bounds on names, so that reading (and setting up a derivation) stays near linear in the
+/// file's size whatever it holds: a name is looked up by a scan of its place's names, and every
+/// option sees every global variable.
+inline constexpr std::size_t kMaxGlobalVariables = 1000;
+/// Vectors, requirements for all and variables of one option; own requirements of one element.
+inline constexpr std::size_t kMaxOptionNames = 1000;
+/// The names every production's conditions and every option's expressions see, summed.
+inline constexpr std::size_t kMaxNamesInScopes = 2'000'000;
+
 /// Where a message points: the node, and what the node is ("production 'Grow', daughter vertex 12").
 struct Place {
     const YamlNode* node;
@@ -47,6 +56,9 @@ public:
     /// Registers a file id (graph, vertex, edge, production, option, mapping); a second use of
     /// one id is an error naming both places.
     void declareId(const YamlNode& idNode, const std::string& what);
+    /// Counts the `names` one more place (a production's conditions, an option) sees against
+    /// kMaxNamesInScopes; an error at `at` past it.
+    void countScope(std::size_t names, const YamlNode& at, const std::string& what);
     /// Compiles an expression; an error names the place and the column inside the expression.
     CompiledExpression compile(const YamlNode& n, const NameSlots& slots, const std::string& what) const;
 
@@ -62,6 +74,7 @@ private:
     std::string path_;
     AttrNames& names_;
     std::string_view source_;
+    std::size_t scopeNames_ = 0;
     std::map<std::int64_t, std::pair<int, std::string>> ids_;  // id -> line, what
 };
 

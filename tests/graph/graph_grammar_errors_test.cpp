@@ -359,6 +359,31 @@ TEST(GraphReaderNames, AnElementsOwnRequirementHidesAGlobalOfTheSameName) {
     EXPECT_EQ(r.steps, 1);
 }
 
+TEST(GraphGrammarErrors, TooManyNamesInOneOption) {
+    // Two vectors and 999 variables: the 999th is the 1001st name (names are bounded so that
+    // reading stays linear; kMaxOptionNames).
+    std::string variables;
+    for (int i = 0; i < 999; ++i) variables += "      - [v" + std::to_string(i) + ", '1', application]\n";
+    expectRefused("      - [step,", variables + "      - [step,", "1044:10", {"option 20: more than 1000 vectors, requirements for all and variables"});
+}
+
+TEST(GraphGrammarErrors, TooManyNamesInAllOptions) {
+    // 1000 global variables, seen by each production's conditions and its option (2 + 1000 names
+    // each): the 999th production passes 2,000,000 names.
+    std::string globals = "global_vars:\n";
+    for (int i = 0; i < 1000; ++i) globals += "  g" + std::to_string(i) + ": '1'\n";
+    std::string productions = "productions:\n";
+    for (int k = 0; k < 1000; ++k) {
+        const std::string b = std::to_string(1000 + 10 * k);
+        productions += "  P" + std::to_string(k) + ": {id: " + b + "1, mother_graph: {id: " + b + "2}, mappings: [{id: " + b + "3}]}\n";
+    }
+    const Refused r = parseError("host_graphs: {H: {id: 1}}\nresult_graphs: {}\n" + globals + productions);
+    ASSERT_TRUE(r.thrown);
+    EXPECT_EQ(r.where, "2003:9") << r.message;
+    EXPECT_NE(r.message.find("production 'P998': the file's productions and options see more than 2000000 names"), std::string::npos)
+        << r.message;
+}
+
 // --- errors while deriving -----------------------------------------------------------------
 
 Refused deriveError(const std::string& text, const DeriveLimits& limits = {}) {
