@@ -2,8 +2,8 @@
 // 192 steps (the paper's), per derivation; the original takes 3.2–5.1 s per derivation on this
 // kind of machine (graph-grammar README, section 5). (2) Koch to 100,000 steps (600,006
 // elements): a step's cost must not grow with the graph. The SVG text is measured with the
-// 192-step flake (BM_KochFlake192WithSvg). (3) Each shipped grammar of
-// grammars/graph/ to its end (or its step limit). The original's files are read from
+// 192-step flake (BM_KochFlake192WithSvg). (3) Each shipped grammar of grammars/graph/ to its
+// end (or its step limit). The original's files are read from
 // ../shared/graph-grammar/original-examples (never copied); a benchmark whose file is absent is
 // skipped with a message.
 //
@@ -67,6 +67,9 @@ BENCHMARK(BM_KochFlake192)->Unit(benchmark::kMillisecond);
 void BM_KochFlake192WithSvg(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 192, true); }
 BENCHMARK(BM_KochFlake192WithSvg)->Unit(benchmark::kMillisecond);
 
+void BM_KochFlake10k(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 10'000); }
+BENCHMARK(BM_KochFlake10k)->Unit(benchmark::kMillisecond)->Iterations(10);
+
 void BM_KochFlake100k(benchmark::State& state) { deriveSteps(state, original("koch_flake.yml"), 100'000); }
 BENCHMARK(BM_KochFlake100k)->Unit(benchmark::kMillisecond)->Iterations(3);
 
@@ -78,6 +81,19 @@ BENCHMARK(BM_PatternCircle)->Unit(benchmark::kMillisecond);
 
 void BM_PatternSquare(benchmark::State& state) { deriveSteps(state, original("pattern_square.yml"), 500); }
 BENCHMARK(BM_PatternSquare)->Unit(benchmark::kMillisecond);
+
+// shapevo's own grammars (grammars/graph/), each to its end or its file's step limit.
+std::string own(const char* name) { return std::string(SHAPEVO_SOURCE_DIR "/grammars/graph/") + name; }
+void BM_OwnKoch(benchmark::State& state) { deriveSteps(state, own("koch.yml"), 0); }
+BENCHMARK(BM_OwnKoch)->Unit(benchmark::kMillisecond);
+void BM_OwnTree(benchmark::State& state) { deriveSteps(state, own("tree.yml"), 0); }
+BENCHMARK(BM_OwnTree)->Unit(benchmark::kMillisecond);
+void BM_OwnRadial(benchmark::State& state) { deriveSteps(state, own("radial.yml"), 0); }
+BENCHMARK(BM_OwnRadial)->Unit(benchmark::kMillisecond);
+void BM_OwnTiled(benchmark::State& state) { deriveSteps(state, own("tiled.yml"), 0); }
+BENCHMARK(BM_OwnTiled)->Unit(benchmark::kMillisecond);
+void BM_OwnFacade(benchmark::State& state) { deriveSteps(state, own("facade.yml"), 0); }
+BENCHMARK(BM_OwnFacade)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

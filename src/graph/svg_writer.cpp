@@ -26,7 +26,9 @@ using AttributeViews = std::vector<std::pair<std::string_view, std::string_view>
 
 /// `<tag a="1" b="2" />` with the attributes sorted by name (svgwrite's order).
 void writeElement(std::string& out, std::string_view tag, AttributeViews& attributes, bool close = true) {
-    std::stable_sort(attributes.begin(), attributes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // Insertion sort, stable and without the buffer std::stable_sort allocates (a shape has few).
+    for (std::size_t i = 1; i < attributes.size(); ++i)
+        for (std::size_t j = i; j > 0 && attributes[j].first < attributes[j - 1].first; --j) std::swap(attributes[j], attributes[j - 1]);
     out += '<';
     out += tag;
     for (const auto& [name, value] : attributes) {

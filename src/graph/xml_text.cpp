@@ -13,7 +13,18 @@ bool isXmlName(std::string_view n) {
 }
 
 void appendEscaped(std::string& out, std::string_view text) {
-    for (const char c : text) {
+    // Runs of plain characters are appended whole (most values have nothing to escape).
+    auto plain = [](char c) {
+        return c != '&' && c != '<' && c != '>' && c != '"' && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+    };
+    std::size_t i = 0;
+    while (i < text.size()) {
+        std::size_t j = i;
+        while (j < text.size() && plain(text[j])) ++j;
+        out.append(text.data() + i, j - i);
+        if (j == text.size()) return;
+        const char c = text[j];
+        i = j + 1;
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
@@ -23,8 +34,7 @@ void appendEscaped(std::string& out, std::string_view text) {
         case '\n': out += "&#10;"; break;
         case '\r': out += "&#13;"; break;
         default:
-            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) out += "\xEF\xBF\xBD";
-            else out += c;
+            out += "\xEF\xBF\xBD";  // another control character
         }
     }
 }

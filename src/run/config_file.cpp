@@ -25,6 +25,7 @@
 #include "island/migration_section.hpp"
 #include "run/output_folder.hpp"
 #include "run/run_limit.hpp"
+#include "graph/graph_section.hpp"
 #include "score/score_section.hpp"
 #include "score/target_kinds.hpp"
 #include "search/search_sections.hpp"
@@ -482,6 +483,7 @@ RunSettings parseConfig(const std::string& text, const std::string& path, const 
     readGrammarSection(config.section("grammar"), r);
     r.target = readTargetSettings(config);
     readScoreSection(config.section("score"), r.fitness, r.incremental);
+    graph::readGraphSection(config.section("graph"), r.graphLimits);
     readGenomeSection(config.section("genome"), r.limits);
     readGaSection(config.section("ga"), r.population, r.ga);
     r.generationsGiven = rd.find("ga", "generations") != nullptr;

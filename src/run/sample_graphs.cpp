@@ -89,13 +89,16 @@ void sampleGraphs(const SampleRequest& r, std::ostream& out) {
     refuseTreeOptions(r);
     const std::uint64_t seed = parseSeed(r.seed, "--seed", UINT64_MAX);
     const std::uint32_t count = parseCount(r.count, kMaxSampleCount);
-    const std::int64_t steps = parseSteps(r.steps);
+    std::int64_t steps = parseSteps(r.steps);
     const double margin = parseMargin(r.margin);
     const bool png = requireOutputFormat(r.output, kGraphFormats, "-o") == "png";
     if (!r.tileSize.empty() && !png) throw InputError("--size", "", "sizes a PNG picture: use it with -o FILE.png");
     const std::optional<PictureSize> size =
         r.tileSize.empty() ? std::nullopt : std::optional<PictureSize>(parsePictureSize(r.tileSize));
     const graph::GraphGrammar g = graph::readGraphGrammar(r.grammarPath);
+    // A grammar that may never end (a Koch curve) and no limit anywhere: a default cap, said below.
+    const bool defaultCap = steps == 0 && g.globalLimit == 0;
+    if (defaultCap) steps = kDefaultGraphSampleSteps;
     for (std::uint32_t k = 1; k <= count; ++k) refuseExisting(numberedPath(r.output, k, count));
     // Every derivation is made and drawn once before anything is written, so one that fails
     // leaves no files behind; the second time repeats the first exactly.
@@ -117,6 +120,9 @@ void sampleGraphs(const SampleRequest& r, std::ostream& out) {
             << h.liveVertices() << (h.liveVertices() == 1 ? " vertex, " : " vertices, ") << h.liveEdges()
             << (h.liveEdges() == 1 ? " edge (" : " edges (") << h.danglingEdges() << " dangling), " << h.elements()
             << (h.elements() == 1 ? " element -> " : " elements -> ") << path << "\n";
+        if (defaultCap && d.result.stop == graph::DeriveResult::Stop::StepLimit)
+            out << "  stopped at " << steps << " steps, sample's default limit for a file without options.max_derivations "
+                   "(--steps N for another)\n";
     }
 }
 

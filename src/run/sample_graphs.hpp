@@ -5,6 +5,7 @@
 // is checked and every derivation made and drawn before anything is written, so bad input leaves
 // no files behind; an existing file is never replaced.
 #pragma once
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -18,6 +19,10 @@ bool isGraphGrammarPath(const std::string& path);
 /// The margin `sample` adds around a graph grammar's vertices, in model units, when --margin is
 /// not given (the shapes on the border stay whole; --margin 0 is the original's canvas).
 inline constexpr double kDefaultGraphMargin = 0.5;
+
+/// The steps `sample` allows a derivation when neither --steps nor the file's
+/// options.max_derivations.all limits it (a grammar that never ends stops here, and says so).
+inline constexpr std::int64_t kDefaultGraphSampleSteps = 1000;
 
 /// Derives, draws and writes what `request` asks for; prints one line per file ("koch.yml seed
 /// 1: 192 steps, 579 vertices, 579 edges (0 dangling), 1158 elements -> koch.svg").

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "genome/chromosome.hpp"
+#include "graph/derive.hpp"
 #include "checkpoint/checkpoint_settings.hpp"
 #include "island/migration_settings.hpp"
 #include "score/fitness_settings.hpp"
@@ -26,6 +27,7 @@ struct RunSettings {
     std::string configText;   ///< its text, with --set overrides applied, as stored in outputs
     std::string name = "run";
     std::uint64_t seed = 1;
+    graph::DeriveLimits graphLimits;  ///< [graph]: 2D graph grammar derivations
     int threads = 0;          ///< 0 = all hardware threads
     std::string out;          ///< output folder; empty = runs/<name>[-N]
     double wallTime = 0;      ///< stop (with a checkpoint) after this many seconds; 0 = no limit

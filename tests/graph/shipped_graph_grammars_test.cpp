@@ -310,7 +310,7 @@ TEST(ShippedGraphGrammars, FacadeHasFloorsTimesWindowsPerFloorWindowsAndExactlyO
         for (const HostVertex* w : parts.windows)  // no window in the door's bay on the ground floor
             EXPECT_FALSE(w->position.y < 3.0 && std::abs(w->position.x - parts.doors[0]->position.x) < 1.25) << "seed " << seed;
         EXPECT_EQ(r.steps, 2 + floors + 2 * floors * perFloor) << "seed " << seed;
-        EXPECT_EQ(r.graph.elements(), std::size_t(5 + 2 * floors + 4 * floors * perFloor)) << "seed " << seed;
+        EXPECT_EQ(r.graph.elements(), std::size_t(7 + 2 * floors + 4 * floors * perFloor)) << "seed " << seed;
     }
     EXPECT_GE(shapes.size(), 6u) << "floors and windows per floor vary with the seed";
 }

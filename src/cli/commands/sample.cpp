@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "run/sample_graphs.hpp"
 #include "run/sample_models.hpp"
 
 namespace shapevo {
@@ -46,8 +47,8 @@ void SampleCommand::addOptions(CLI::App& command) {
     command.add_option("--attr", o.attrs, "tree grammars: replace an attr of the grammar, NAME=VALUE (repeatable), as "
                                           "[grammar.attr] does in a config");
     command.add_option("--steps", o.steps, "graph grammars: stop each derivation after N steps (default: the file's "
-                                           "options.max_derivations, or when no production applies; a grammar that never "
-                                           "ends needs it)");
+                                           "options.max_derivations.all, else " + std::to_string(kDefaultGraphSampleSteps) +
+                                           "; a derivation also stops when no production applies)");
     command.add_option("--margin", o.margin, "graph grammars: space around the vertices' box in model units (default 0.5, "
                                              "so shapes on the border stay whole; 0: the original's canvas)");
     command.add_option("--count", o.count, "write N variations, 1 to " + std::to_string(kMaxSampleCount) +
