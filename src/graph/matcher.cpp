@@ -121,8 +121,9 @@ void Matcher::countSearchStep(std::size_t p) {
     if (++searchSteps_ > budget_.maxSearchSteps)
         throw InputError(grammar_.path, "", "production '" + grammar_.productions[p].name + "': matching tried more than " +
                                                 std::to_string(budget_.maxSearchSteps) +
-                                                " element bindings in one step (a mother graph of many unconstrained vertices "
-                                                "matches in combinatorially many ways); give its vertices conditions or edges");
+                                                " element bindings in one step, the search budget (a mother graph of many "
+                                                "unconstrained vertices matches in combinatorially many ways); give its vertices "
+                                                "conditions or edges, or raise the budget");
 }
 
 bool Matcher::vertexFits(std::size_t p, int mother, ElementId host) {

@@ -2,6 +2,7 @@
 // options.max_derivations, the SVG preamble — and the productions through read_production.cpp.
 #include "graph/read_graph_grammar.hpp"
 
+#include <fstream>
 #include <set>
 
 #include "base/input_error.hpp"
@@ -10,17 +11,6 @@
 namespace shapevo::graph {
 
 namespace reading {
-
-namespace {
-
-bool isHelperNode(const YamlNode& attrs) {
-    const YamlNode* h = attrs.find(".helper_node");
-    if (!h) return false;
-    return !(h->kind == YamlNode::Kind::Null || (h->kind == YamlNode::Kind::Bool && !h->boolean) ||
-             (h->kind == YamlNode::Kind::String && h->text.empty()) || (h->kind == YamlNode::Kind::Int && h->integer == 0));
-}
-
-}  // namespace
 
 HostGraph readHostGraph(ReaderContext& c, const std::string& name, const YamlNode& node, const GraphGrammar::Keys& keys) {
     const std::string what = "host graph '" + shortened(name) + "'";
@@ -35,10 +25,10 @@ HostGraph readHostGraph(ReaderContext& c, const std::string& name, const YamlNod
             c.mapping(v, what + " vertex");
             c.onlyKeys(v, {"id", "attr"}, what + " vertex");
             const YamlNode& idNode = c.required(v, "id", what + " vertex");
-            const std::string vwhat = what + ", vertex " + idNode.text;
+            const std::string vwhat = what + ", vertex " + idText(idNode);
             c.declareId(idNode, vwhat);
             const YamlNode& attrs = c.mapping(c.required(v, "attr", vwhat), vwhat + " attr");
-            if (isHelperNode(attrs)) {
+            if (isHelperVertex(v)) {
                 helpers.insert(idNode.integer);
                 continue;
             }
@@ -60,14 +50,14 @@ HostGraph readHostGraph(ReaderContext& c, const std::string& name, const YamlNod
             c.mapping(e, what + " edge");
             c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, what + " edge");
             const YamlNode& idNode = c.required(e, "id", what + " edge");
-            const std::string ewhat = what + ", edge " + idNode.text;
+            const std::string ewhat = what + ", edge " + idText(idNode);
             c.declareId(idNode, ewhat);
             ElementId ends[2] = {kNoVertex, kNoVertex};
             for (int end = 0; end < 2; ++end) {
                 const char* key = end == 0 ? "vertex1" : "vertex2";
                 const YamlNode* ref = e.find(key);
                 if (!ref || ref->kind == YamlNode::Kind::Null) continue;
-                const std::int64_t id = c.integer(*ref, ewhat + " " + key);
+                const std::int64_t id = c.id(*ref, ewhat + " " + key);
                 if (helpers.count(id)) continue;  // an editor helper: the end dangles
                 const auto it = vertexIds.find(id);
                 if (it == vertexIds.end()) c.fail(*ref, ewhat + ": " + key + " " + std::to_string(id) + " is not a vertex of this graph");
@@ -97,13 +87,14 @@ void readLimits(ReaderContext& c, const YamlNode& options, GraphGrammar& g) {
     const YamlNode* md = options.find("max_derivations");
     if (!md || md->kind == YamlNode::Kind::Null) return;
     for (const auto& [k, v] : c.mapping(*md, "options.max_derivations").entries) {
-        const std::int64_t n = c.integer(v, "options.max_derivations." + k.text);
-        if (n < 0) c.fail(v, "options.max_derivations." + k.text + " must be 0 or more");
+        const std::int64_t n = c.integer(v, "options.max_derivations." + shortened(k.text));
+        if (n < 0) c.fail(v, "options.max_derivations." + shortened(k.text) + " must be 0 or more");
         if (k.isScalar() && k.text == "all") {
             g.globalLimit = n;
             continue;
         }
         const std::int64_t priority = c.integer(k, "options.max_derivations: a key (a priority or 'all')");
+        if (priority < -1'000'000 || priority > 1'000'000) c.fail(k, "options.max_derivations: a priority must be within ±1000000");
         g.priorityLimits.emplace_back(int(priority), n);
     }
 }
@@ -126,7 +117,7 @@ void readPreamble(ReaderContext& c, const YamlNode& svg, GraphGrammar& g) {
             p.tag = c.keyText(tag, what);
             if (kwargs.kind != YamlNode::Kind::Null)
                 for (const auto& [name, value] : c.mapping(kwargs, what + " " + p.tag).entries)
-                    p.attributes.emplace_back(c.keyText(name, what), c.expressionText(value, what + " " + name.text));
+                    p.attributes.emplace_back(c.keyText(name, what), c.expressionText(value, what + " " + shortened(name.text)));
             f.primitives.push_back(std::move(p));
         }
         g.filters.push_back(std::move(f));
@@ -139,7 +130,7 @@ void readPreamble(ReaderContext& c, const YamlNode& svg, GraphGrammar& g) {
 
 namespace {
 
-GraphGrammar grammarOf(const YamlNode& root, const std::string& path) {
+GraphGrammar grammarOf(const YamlNode& root, const std::string& path, std::string_view source) {
     using namespace reading;
     GraphGrammar g;
     g.path = path;
@@ -147,7 +138,8 @@ GraphGrammar grammarOf(const YamlNode& root, const std::string& path) {
     g.keys.directed = g.names.intern(".directed");
     g.keys.svgTag = g.names.intern(".svg_tag");
     g.keys.helperNode = g.names.intern(".helper_node");
-    ReaderContext c(path, g.names);
+    ReaderContext c(path, g.names, source);
+    if (root.kind == YamlNode::Kind::Null && root.text.empty()) c.fail(root, "the file is empty (a graph grammar file is a mapping with host_graphs and productions)");
     if (root.kind != YamlNode::Kind::Mapping) c.fail(root, "a graph grammar file must be a mapping with host_graphs and productions, not " + root.describe());
     c.onlyKeys(root, {"host_graphs", "productions", "result_graphs", "global_vars", "options", "svg", "extra"}, "the file");
     const YamlNode& hosts = c.mapping(c.required(root, "host_graphs", "the file"), "host_graphs");
@@ -161,6 +153,8 @@ GraphGrammar grammarOf(const YamlNode& root, const std::string& path) {
     std::vector<std::string> globalNames;
     if (const YamlNode* globals = root.find("global_vars"); globals && globals->kind != YamlNode::Kind::Null) {
         const NameSlots none;
+        if (globals->entries.size() > kMaxGlobalVariables)
+            c.fail(*globals, "global_vars: more than " + std::to_string(kMaxGlobalVariables) + " global variables");
         for (const auto& [name, expr] : c.mapping(*globals, "global_vars").entries) {
             const std::string n = c.keyText(name, "global_vars");
             g.globals.push_back({n, c.compile(expr, none, "global variable '" + shortened(n) + "'"), c.filePlace(expr)});
@@ -176,8 +170,22 @@ GraphGrammar grammarOf(const YamlNode& root, const std::string& path) {
 
 }  // namespace
 
-GraphGrammar parseGraphGrammar(std::string_view text, const std::string& path) { return grammarOf(parseYaml(text, path), path); }
+GraphGrammar parseGraphGrammar(std::string_view text, const std::string& path) { return grammarOf(parseYaml(text, path), path, text); }
 
-GraphGrammar readGraphGrammar(const std::string& path) { return grammarOf(readYamlFile(path), path); }
+GraphGrammar readGraphGrammar(const std::string& path) {
+    const YamlNode root = readYamlFile(path);  // the size limit, read errors
+    // The text again, for expression errors' columns; none if it grew past the limit meanwhile.
+    std::string text;
+    std::ifstream in(path, std::ios::binary);
+    char block[1 << 16];
+    while (in.read(block, sizeof block) || in.gcount() > 0) {
+        text.append(block, std::size_t(in.gcount()));
+        if (text.size() > YamlLimits{}.maxBytes) {
+            text.clear();
+            break;
+        }
+    }
+    return grammarOf(root, path, text);
+}
 
 }  // namespace shapevo::graph

@@ -1,8 +1,10 @@
 // readOption: one daughter option of a production — its daughter graph, the partial morphism
 // from the mother graph, attr_requirements, var_calc_instructions and weight — and the slot
 // layout its expressions are compiled against (graph-grammar README, section 2.5).
+#include <functional>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "base/input_error.hpp"
 #include "graph/reader_context.hpp"
@@ -66,13 +68,13 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
     c.onlyKeys(node, {"id", "mother_graph", "daughter_graph", "mapping", "weight", "attr_requirements", "conditions", "var_calc_instructions"},
                production + " option");
     const YamlNode& idNode = c.required(node, "id", production + " option");
-    const std::string what = production + ", option " + idNode.text;
+    const std::string what = production + ", option " + idText(idNode);
     c.declareId(idNode, what);
     ProductionOption o;
     o.place = c.filePlace(node, idNode.integer);
     if (const YamlNode* mg = node.find("mother_graph"); mg && mg->kind != YamlNode::Kind::Null)
-        if (c.integer(*mg, what + " mother_graph") != motherGraphId)
-            c.fail(*mg, what + ": mother_graph " + mg->text + " is not this production's mother graph (" + std::to_string(motherGraphId) + ")");
+        if (c.id(*mg, what + " mother_graph") != motherGraphId)
+            c.fail(*mg, what + ": mother_graph " + idText(*mg) + " is not this production's mother graph (" + std::to_string(motherGraphId) + ")");
     if (const YamlNode* w = node.find("weight"); w && w->kind != YamlNode::Kind::Null) {
         o.weight = c.integer(*w, what + " weight");
         if (o.weight < 0 || o.weight > (std::int64_t(1) << 40)) c.fail(*w, what + ": weight must be 0 to 2^40");
@@ -96,10 +98,8 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
                 c.mapping(v, dwhat + " vertex");
                 c.onlyKeys(v, {"id", "attr"}, dwhat + " vertex");
                 const YamlNode& vid = c.required(v, "id", dwhat + " vertex");
-                c.declareId(vid, dwhat + ", vertex " + vid.text);
-                const YamlNode* attrs = v.find("attr");
-                const YamlNode* helper = attrs && attrs->kind == YamlNode::Kind::Mapping ? attrs->find(".helper_node") : nullptr;
-                if (helper && !(helper->kind == YamlNode::Kind::Bool && !helper->boolean) && helper->kind != YamlNode::Kind::Null) {
+                c.declareId(vid, dwhat + ", vertex " + idText(vid));
+                if (isHelperVertex(v)) {
                     ids.helpers[vid.integer] = 0;
                     continue;
                 }
@@ -111,7 +111,7 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
                 c.mapping(e, dwhat + " edge");
                 c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, dwhat + " edge");
                 const YamlNode& eid = c.required(e, "id", dwhat + " edge");
-                c.declareId(eid, dwhat + ", edge " + eid.text);
+                c.declareId(eid, dwhat + ", edge " + idText(eid));
                 ids.edges[eid.integer] = int(edgeNodes.size());
                 edgeNodes.push_back(&e);
             }
@@ -126,19 +126,19 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         if (const YamlNode* mid = mapping->find("id")) c.declareId(*mid, what + " mapping");
         if (const YamlNode* dict = mapping->find("dict"); dict && dict->kind != YamlNode::Kind::Null)
             for (const auto& [from, to] : c.mapping(*dict, what + " mapping dict").entries) {
-                const std::int64_t m = c.integer(from, what + " mapping: a mother element id");
-                const std::int64_t d = c.integer(to, what + " mapping: a daughter element id");
+                const std::int64_t m = c.id(from, what + " mapping: a mother element id");
+                const std::int64_t d = c.id(to, what + " mapping: a daughter element id");
                 const auto mv = motherVertexIds.find(m), me = motherEdgeIds.find(m);
                 if (mv == motherVertexIds.end() && me == motherEdgeIds.end())
-                    c.fail(from, what + " mapping: " + from.text + " is not a vertex or edge of the mother graph");
+                    c.fail(from, what + " mapping: " + idText(from) + " is not a vertex or edge of the mother graph");
                 const bool vertex = mv != motherVertexIds.end();
                 const auto& targets = vertex ? ids.vertices : ids.edges;
                 const auto t = targets.find(d);
                 if (t == targets.end())
-                    c.fail(to, what + " mapping: " + to.text + " is not a " + (vertex ? "vertex" : "edge") + " of the daughter graph (the mother " +
-                                   (vertex ? "vertex " : "edge ") + from.text + " must map to one)");
+                    c.fail(to, what + " mapping: " + idText(to) + " is not a " + (vertex ? "vertex" : "edge") + " of the daughter graph (the mother " +
+                                   (vertex ? "vertex " : "edge ") + idText(from) + " must map to one)");
                 int& mother = vertex ? o.vertices[std::size_t(t->second)].mother : o.edges[std::size_t(t->second)].mother;
-                if (mother >= 0) c.fail(to, what + " mapping: two mother elements map to daughter element " + to.text + " (merging is not supported)");
+                if (mother >= 0) c.fail(to, what + " mapping: two mother elements map to daughter element " + idText(to) + " (merging is not supported)");
                 mother = vertex ? mv->second : me->second;
             }
     }
@@ -148,6 +148,8 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
     NameSlots& s = o.slots;
     std::set<std::string> taken;
     auto add = [&](const std::string& name, const YamlNode& at, const std::string& kind) {
+        if (s.names.size() >= kMaxOptionNames + 2)
+            c.fail(at, what + ": more than " + std::to_string(kMaxOptionNames) + " vectors, requirements for all and variables");
         if (!taken.insert(name).second) c.fail(at, what + ": the name '" + shortened(name) + "' (" + kind + ") is already used by another name of this option");
         s.add(name);
     };
@@ -155,7 +157,7 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
     s.add("old");
     taken = {"self_", "old"};
     for (const Production::Vector& v : p.vectors) {
-        if (!taken.insert(v.name).second) c.fail(node, what + ": vector '" + v.name + "' uses a reserved name");
+        if (!taken.insert(v.name).second) c.fail(node, what + ": vector '" + shortened(v.name) + "' uses a reserved name");
         s.add(v.name);
     }
     const std::size_t vectorsEnd = s.names.size();
@@ -165,11 +167,11 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
             if (target.isScalar() && target.text == "all") {
                 for (const auto& [name, ref] : c.mapping(names, what + " attr_requirements all").entries) {
                     const std::string n = c.keyText(name, what);
-                    const std::int64_t m = c.integer(ref, what + " attr_requirements");
+                    const std::int64_t m = c.id(ref, what + " attr_requirements");
                     Requirement r{n, motherVertexIds.count(m) > 0, 0};
                     if (r.motherIsVertex) r.motherIndex = motherVertexIds.at(m);
                     else if (motherEdgeIds.count(m)) r.motherIndex = motherEdgeIds.at(m);
-                    else c.fail(ref, what + " attr_requirements: " + ref.text + " is not a vertex or edge of the mother graph");
+                    else c.fail(ref, what + " attr_requirements: " + idText(ref) + " is not a vertex or edge of the mother graph");
                     add(n, name, "a requirement for all");
                     o.requirementsForAll.push_back(std::move(r));
                 }
@@ -184,7 +186,9 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         for (const YamlNode& v : c.sequence(*vars, what + " var_calc_instructions").items) {
             if (v.kind != YamlNode::Kind::Sequence || v.items.size() != 3)
                 c.fail(v, what + " var_calc_instructions: each is [name, expression, run | application]");
-            const std::string kind = c.keyText(v.items[2], what);
+            for (const YamlNode& item : {std::cref(v.items[0]), std::cref(v.items[2])})
+                if (!item.isScalar()) c.fail(item, what + " var_calc_instructions: a name and a kind are single words, not " + item.describe());
+            const std::string kind = v.items[2].text;
             if (kind != "run" && kind != "application")
                 c.fail(v.items[2], what + " var_calc_instructions: '" + shortened(kind) + "' is neither run nor application");
             OptionVariable var;
@@ -206,40 +210,61 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         s.add(g);
     }
     o.sharedSlots = s.names.size();
+    c.countScope(o.sharedSlots, node, what);
     // Variables: application ones see the vectors, the `all` requirements and earlier application
     // variables; run ones see the globals and earlier run variables.
+    // One layout per kind, each variable's name made visible once it is compiled (no copy per
+    // variable: a file of many variables reads in linear time).
+    NameSlots runVisible = visibleOnly(s, {{globalsBegin, o.sharedSlots}}), appVisible = visibleOnly(s, {{2, allEnd}});
     std::size_t appSeen = appBegin, runSeen = runBegin;
     for (std::size_t i = 0; i < o.variables.size(); ++i) {
         OptionVariable& var = o.variables[i];
-        const NameSlots visible = var.perRun ? visibleOnly(s, {{runBegin, runSeen}, {globalsBegin, o.sharedSlots}})
-                                             : visibleOnly(s, {{2, allEnd}, {appBegin, appSeen}});
+        NameSlots& visible = var.perRun ? runVisible : appVisible;
         var.expression = c.compile(*variableNodes[i].second, visible, what + ", variable '" + shortened(var.name) + "'");
-        (var.perRun ? runSeen : appSeen)++;
+        std::size_t& seen = var.perRun ? runSeen : appSeen;
+        visible.names[seen] = s.names[seen];
+        ++seen;
     }
     (void)vectorsEnd;
 
     // Daughter elements: own requirements after the shared slots, then the attribute expressions.
     std::map<std::int64_t, std::vector<Requirement>> own;
     for (const auto& [target, names] : ownRequirements) {
-        const std::int64_t d = c.integer(*target, what + " attr_requirements: a daughter element id");
+        const std::int64_t d = c.id(*target, what + " attr_requirements: a daughter element id");
         if (!ids.vertices.count(d) && !ids.edges.count(d))
-            c.fail(*target, what + " attr_requirements: " + target->text + " is not a vertex or edge of the daughter graph");
-        for (const auto& [name, ref] : c.mapping(*names, what + " attr_requirements " + target->text).entries) {
-            const std::int64_t m = c.integer(ref, what + " attr_requirements");
+            c.fail(*target, what + " attr_requirements: " + idText(*target) + " is not a vertex or edge of the daughter graph");
+        for (const auto& [name, ref] : c.mapping(*names, what + " attr_requirements " + idText(*target)).entries) {
+            const std::int64_t m = c.id(ref, what + " attr_requirements");
             Requirement r{c.keyText(name, what), motherVertexIds.count(m) > 0, 0};
             if (r.motherIsVertex) r.motherIndex = motherVertexIds.at(m);
             else if (motherEdgeIds.count(m)) r.motherIndex = motherEdgeIds.at(m);
-            else c.fail(ref, what + " attr_requirements: " + ref.text + " is not a vertex or edge of the mother graph");
-            if (taken.count(r.name)) c.fail(name, what + ": the requirement '" + shortened(r.name) + "' has the name of another name of this option");
-            own[d].push_back(std::move(r));
+            else c.fail(ref, what + " attr_requirements: " + idText(ref) + " is not a vertex or edge of the mother graph");
+            if (taken.count(r.name))
+                c.fail(name, what + ": the requirement '" + shortened(r.name) +
+                                 "' has the name of a vector, a requirement for all or a variable of this option");
+            std::vector<Requirement>& list = own[d];
+            if (list.size() >= kMaxOptionNames)
+                c.fail(name, what + " attr_requirements: more than " + std::to_string(kMaxOptionNames) + " requirements for one element");
+            list.push_back(std::move(r));
         }
     }
-    auto slotsFor = [&](std::int64_t id, std::vector<Requirement>& requirements) {
-        NameSlots element = s;
+    // An element's layout: the shared slots, then its own requirements, which hide a global of
+    // the same name (NameSlots::find takes the first). One working layout, restored after each
+    // element: no copy per element.
+    NameSlots element = s;
+    element.names.resize(o.sharedSlots);
+    std::vector<std::pair<std::size_t, std::string>> hidden;
+    auto slotsFor = [&](std::int64_t id, std::vector<Requirement>& requirements) -> const NameSlots& {
+        for (auto& [i, name] : hidden) element.names[i] = std::move(name);
+        hidden.clear();
         element.names.resize(o.sharedSlots);
         if (const auto it = own.find(id); it != own.end()) {
             requirements = it->second;
-            for (const Requirement& r : requirements) element.add(r.name);
+            for (const Requirement& r : requirements) {
+                const int global = element.find(r.name);
+                if (global >= 0) hidden.emplace_back(std::size_t(global), std::exchange(element.names[std::size_t(global)], std::string()));
+                element.add(r.name);
+            }
         }
         return element;
     };
@@ -263,7 +288,7 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
             const YamlNode* ref = e.find(key);
             int& slot = end == 0 ? d.vertex1 : d.vertex2;
             if (!ref || ref->kind == YamlNode::Kind::Null) continue;
-            const std::int64_t vid = c.integer(*ref, ewhat + " " + key);
+            const std::int64_t vid = c.id(*ref, ewhat + " " + key);
             if (ids.helpers.count(vid)) continue;
             const auto it = ids.vertices.find(vid);
             if (it == ids.vertices.end()) c.fail(*ref, ewhat + ": " + key + " " + ref->text + " is not a vertex of the daughter graph");

@@ -15,25 +15,6 @@ struct MotherIds {
     std::map<std::int64_t, int> helpers;          // editor helper vertices (dropped)
 };
 
-bool truthyScalar(const YamlNode& n) {
-    switch (n.kind) {
-        case YamlNode::Kind::Null: return false;
-        case YamlNode::Kind::Bool: return n.boolean;
-        case YamlNode::Kind::Int: return n.integer != 0;
-        case YamlNode::Kind::Float: return n.number != 0;
-        case YamlNode::Kind::String: return !n.text.empty();  // 'False' is truthy, as in Python
-        default: return true;
-    }
-}
-
-bool isHelper(ReaderContext& c, const YamlNode& v) {
-    const YamlNode* attrs = v.find("attr");
-    if (!attrs || attrs->kind != YamlNode::Kind::Mapping) return false;
-    const YamlNode* h = attrs->find(".helper_node");
-    (void)c;
-    return h && truthyScalar(*h);
-}
-
 /// The ids of a graph's vertex list, declared; helper vertices set aside.
 void readVertexIds(ReaderContext& c, const YamlNode& graph, const std::string& what, std::map<std::int64_t, int>& ids,
                    std::map<std::int64_t, int>& helpers, std::vector<const YamlNode*>& nodes) {
@@ -43,12 +24,12 @@ void readVertexIds(ReaderContext& c, const YamlNode& graph, const std::string& w
         c.mapping(v, what + " vertex");
         c.onlyKeys(v, {"id", "attr"}, what + " vertex");
         const YamlNode& idNode = c.required(v, "id", what + " vertex");
-        c.declareId(idNode, what + ", vertex " + idNode.text);
-        if (isHelper(c, v)) {
+        c.declareId(idNode, what + ", vertex " + idText(idNode));
+        if (isHelperVertex(v)) {
             helpers[idNode.integer] = 0;
             continue;
         }
-        ids[c.integer(idNode, "an id")] = int(nodes.size());
+        ids[idNode.integer] = int(nodes.size());
         nodes.push_back(&v);
     }
 }
@@ -57,7 +38,7 @@ int endOf(ReaderContext& c, const YamlNode& edge, const char* key, const std::ma
           const std::map<std::int64_t, int>& helpers, const std::string& what) {
     const YamlNode* ref = edge.find(key);
     if (!ref || ref->kind == YamlNode::Kind::Null) return -1;
-    const std::int64_t id = c.integer(*ref, what + " " + key);
+    const std::int64_t id = c.id(*ref, what + " " + key);
     if (helpers.count(id)) return -1;
     const auto it = vertices.find(id);
     if (it == vertices.end()) c.fail(*ref, what + ": " + key + " " + std::to_string(id) + " is not a vertex of this graph");
@@ -99,7 +80,7 @@ void readMotherGraph(ReaderContext& c, const YamlNode& graph, const std::string&
     readVertexIds(c, graph, what, ids.vertices, ids.helpers, vertexNodes);
     const NameSlots slots = conditionSlots(globals);
     for (const YamlNode* v : vertexNodes) {
-        const std::string vwhat = what + ", vertex " + v->find("id")->text;
+        const std::string vwhat = what + ", vertex " + idText(*v->find("id"));
         const YamlNode& attrs = c.mapping(c.required(*v, "attr", vwhat), vwhat + " attr");
         MotherVertex m;
         m.position = positionOf(c, attrs, vwhat);
@@ -112,7 +93,7 @@ void readMotherGraph(ReaderContext& c, const YamlNode& graph, const std::string&
             c.mapping(e, what + " edge");
             c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, what + " edge");
             const YamlNode& idNode = c.required(e, "id", what + " edge");
-            const std::string ewhat = what + ", edge " + idNode.text;
+            const std::string ewhat = what + ", edge " + idText(idNode);
             c.declareId(idNode, ewhat);
             MotherEdge m;
             m.vertex1 = endOf(c, e, "vertex1", ids.vertices, ids.helpers, ewhat);
@@ -127,7 +108,7 @@ void readMotherGraph(ReaderContext& c, const YamlNode& graph, const std::string&
 
 /// A mother element named by id: {isVertex, index}.
 std::pair<bool, int> motherElement(ReaderContext& c, const YamlNode& ref, const MotherIds& ids, const std::string& what) {
-    const std::int64_t id = c.integer(ref, what);
+    const std::int64_t id = c.id(ref, what);
     if (const auto it = ids.vertices.find(id); it != ids.vertices.end()) return {true, it->second};
     if (const auto it = ids.edges.find(id); it != ids.edges.end()) return {false, it->second};
     c.fail(ref, what + ": " + std::to_string(id) + " is not a vertex or edge of the production's mother graph");
@@ -153,6 +134,7 @@ Production readProduction(ReaderContext& c, const std::string& name, const YamlN
     const YamlNode& motherId = c.required(mother, "id", what + " mother graph");
     c.declareId(motherId, what + " mother graph");
     MotherIds ids;
+    c.countScope(globals.size() + 2, node, what);
     readMotherGraph(c, mother, what + " mother graph", globals, p, ids);
     if (const YamlNode* cond = node.find("conditions"); cond && cond->kind != YamlNode::Kind::Null) {
         c.mapping(*cond, what + " conditions");  // only .geometric_ordering is read (the original reads no other key)
@@ -163,13 +145,15 @@ Production readProduction(ReaderContext& c, const std::string& name, const YamlN
         }
     }
     if (const YamlNode* vs = node.find("vectors"); vs && vs->kind != YamlNode::Kind::Null) {
-        for (const auto& [k, ref] : c.mapping(*vs, what + " vectors").entries) {
+        if (c.mapping(*vs, what + " vectors").entries.size() > kMaxOptionNames)
+            c.fail(*vs, what + ": more than " + std::to_string(kMaxOptionNames) + " vectors");
+        for (const auto& [k, ref] : vs->entries) {
             Production::Vector v;
             v.name = c.keyText(k, what + " vectors");
             const std::string vwhat = what + ", vector '" + shortened(v.name) + "'";
             auto vertexIndex = [&](const YamlNode& r) {
                 const auto [isVertex, index] = motherElement(c, r, ids, vwhat);
-                if (!isVertex) c.fail(r, vwhat + ": " + r.text + " is an edge; a vector names mother vertices");
+                if (!isVertex) c.fail(r, vwhat + ": " + idText(r) + " is an edge; a vector names mother vertices");
                 return index;
             };
             if (ref.kind == YamlNode::Kind::Sequence) {
@@ -187,7 +171,7 @@ Production readProduction(ReaderContext& c, const std::string& name, const YamlN
     const YamlNode& mappings = c.sequence(c.required(node, "mappings", what), what + " mappings");
     if (mappings.items.empty()) c.fail(mappings, what + " has no option in 'mappings' (one daughter graph at least)");
     for (const YamlNode& option : mappings.items)
-        p.options.push_back(readOption(c, option, what, p, c.integer(motherId, "an id"), ids.vertices, ids.edges, globals));
+        p.options.push_back(readOption(c, option, what, p, motherId.integer, ids.vertices, ids.edges, globals));
     return p;
 }
 

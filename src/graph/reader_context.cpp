@@ -1,6 +1,7 @@
 // ReaderContext: located errors, id table, scalar conversions and compilation for the reader.
 #include "graph/reader_context.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -62,6 +63,11 @@ std::int64_t ReaderContext::integer(const YamlNode& n, const std::string& what) 
     fail(n, what + " must be a whole number, not " + n.describe());
 }
 
+std::int64_t ReaderContext::id(const YamlNode& n, const std::string& what) const {
+    if (n.kind != YamlNode::Kind::Int) fail(n, what + " must be a whole number (an id), not " + n.describe());
+    return n.integer;
+}
+
 double ReaderContext::number(const YamlNode& n, const std::string& what) const {
     switch (n.kind) {
         case YamlNode::Kind::Int: return double(n.integer);
@@ -105,11 +111,55 @@ std::string ReaderContext::expressionText(const YamlNode& n, const std::string& 
 }
 
 void ReaderContext::declareId(const YamlNode& idNode, const std::string& what) {
-    const std::int64_t id = integer(idNode, what + "'s id");
+    const std::int64_t id = this->id(idNode, what + "'s id");
     const auto [it, fresh] = ids_.emplace(id, std::make_pair(idNode.line, what));
     if (!fresh)
         fail(idNode, what + ": id " + std::to_string(id) + " is already the id of " + it->second.second + " (line " +
                          std::to_string(it->second.first) + "); ids must be unique in the whole file");
+}
+
+void ReaderContext::countScope(std::size_t names, const YamlNode& at, const std::string& what) {
+    scopeNames_ += names;
+    if (scopeNames_ > kMaxNamesInScopes)
+        fail(at, what + ": the file's productions and options see more than " + std::to_string(kMaxNamesInScopes) +
+                     " names in all (every option sees every global variable); use fewer global variables or options");
+}
+
+namespace {
+
+bool continuesCharacter(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+/// Characters (UTF-8) in `s`.
+std::size_t characters(std::string_view s) {
+    std::size_t n = 0;
+    for (char c : s) n += continuesCharacter(c) ? 0 : 1;
+    return n;
+}
+
+}  // namespace
+
+std::string ReaderContext::placeInside(const YamlNode& n, const std::string& text, std::size_t offset) const {
+    if (source_.empty() || n.line < 1 || n.column < 1 || offset > text.size() || text.find('\n') != std::string::npos) return "";
+    // The node's line, then its column (counted in characters), past an opening quote.
+    std::size_t at = 0;
+    for (int line = 1; line < n.line; ++line) {
+        at = source_.find('\n', at);
+        if (at == std::string_view::npos) return "";
+        ++at;
+    }
+    for (int column = 1; column < n.column; ++column) {
+        if (at >= source_.size() || source_[at] == '\n') return "";
+        ++at;
+        while (at < source_.size() && continuesCharacter(source_[at])) ++at;
+    }
+    int column = n.column;
+    if (n.quoted) {
+        if (at >= source_.size() || (source_[at] != '\'' && source_[at] != '"')) return "";  // a block scalar
+        ++at, ++column;
+    }
+    const std::size_t lineEnd = std::min(source_.find('\n', at), source_.size());
+    if (source_.substr(at, std::min(text.size(), lineEnd - at)) != text) return "";  // folded or escaped
+    return std::to_string(n.line) + ":" + std::to_string(column + int(characters(std::string_view(text).substr(0, offset))));
 }
 
 CompiledExpression ReaderContext::compile(const YamlNode& n, const NameSlots& slots, const std::string& what) const {
@@ -117,15 +167,35 @@ CompiledExpression ReaderContext::compile(const YamlNode& n, const NameSlots& sl
     try {
         return compileExpression(text, slots, names_);
     } catch (const ExpressionError& e) {
-        // The column inside a one-line scalar; a folded or quoted scalar: the offset in its text.
-        const bool sameLine = !n.quoted && text.find('\n') == std::string::npos && n.text == text;
-        const std::string where =
-            sameLine ? std::to_string(n.line) + ":" + std::to_string(n.column + int(e.offset()))
-                     : n.where();
+        // The column inside the expression where the source shows it as is; otherwise the
+        // scalar's start, and the offset in its text.
+        const std::string inside = placeInside(n, text, e.offset());
         std::string message = what + ": " + e.what();
-        if (!sameLine) message += " (at character " + std::to_string(e.offset() + 1) + " of '" + shortened(text, 60) + "')";
-        throw InputError(path_, where, message);
+        if (inside.empty()) message += " (at character " + std::to_string(characters(std::string_view(text).substr(0, e.offset())) + 1) + " of '" + shortened(text, 60) + "')";
+        throw InputError(path_, inside.empty() ? n.where() : inside, message);
     }
+}
+
+std::string idText(const YamlNode& n) { return n.kind == YamlNode::Kind::Int ? std::to_string(n.integer) : shortened(n.text); }
+
+bool truthyScalar(const YamlNode& n) {
+    switch (n.kind) {
+        case YamlNode::Kind::Null: return false;
+        case YamlNode::Kind::Bool: return n.boolean;
+        case YamlNode::Kind::Int: return n.integer != 0;
+        case YamlNode::Kind::Float: return n.number != 0;
+        case YamlNode::Kind::String: return !n.text.empty();
+        case YamlNode::Kind::Sequence: return !n.items.empty();
+        case YamlNode::Kind::Mapping: return !n.entries.empty();
+    }
+    return true;
+}
+
+bool isHelperVertex(const YamlNode& vertex) {
+    const YamlNode* attrs = vertex.find("attr");
+    if (!attrs || attrs->kind != YamlNode::Kind::Mapping) return false;
+    const YamlNode* h = attrs->find(".helper_node");
+    return h && truthyScalar(*h);
 }
 
 }  // namespace shapevo::graph::reading

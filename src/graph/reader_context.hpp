@@ -12,6 +12,15 @@
 
 namespace shapevo::graph::reading {
 
+/// Bounds on names, so that reading (and setting up a derivation) stays near linear in the
+/// file's size whatever it holds: a name is looked up by a scan of its place's names, and every
+/// option sees every global variable.
+inline constexpr std::size_t kMaxGlobalVariables = 1000;
+/// Vectors, requirements for all and variables of one option; own requirements of one element.
+inline constexpr std::size_t kMaxOptionNames = 1000;
+/// The names every production's conditions and every option's expressions see, summed.
+inline constexpr std::size_t kMaxNamesInScopes = 2'000'000;
+
 /// Where a message points: the node, and what the node is ("production 'Grow', daughter vertex 12").
 struct Place {
     const YamlNode* node;
@@ -20,7 +29,9 @@ struct Place {
 
 class ReaderContext {
 public:
-    ReaderContext(std::string path, AttrNames& names) : path_(std::move(path)), names_(names) {}
+    /// `source`: the file's text (may be empty), to place an expression's error at its column.
+    ReaderContext(std::string path, AttrNames& names, std::string_view source = {})
+        : path_(std::move(path)), names_(names), source_(source) {}
 
     [[noreturn]] void fail(const YamlNode& at, const std::string& message) const;
     [[noreturn]] void fail(const Place& at, const std::string& message) const;
@@ -32,6 +43,9 @@ public:
     void onlyKeys(const YamlNode& map, std::initializer_list<std::string_view> allowed, const std::string& what) const;
     std::string keyText(const YamlNode& key, const std::string& what) const;
     std::int64_t integer(const YamlNode& n, const std::string& what) const;
+    /// A file id, declared or referred to: a YAML integer only (the original's ids are ints, and
+    /// '7' never equals 7 there, so a quoted id is an error, not an alias of 7).
+    std::int64_t id(const YamlNode& n, const std::string& what) const;
     /// A number given as a number or as a string ('-4', '6.93'), as Python's float() reads it.
     double number(const YamlNode& n, const std::string& what) const;
     /// A scalar as plain data (host graph attributes).
@@ -42,6 +56,9 @@ public:
     /// Registers a file id (graph, vertex, edge, production, option, mapping); a second use of
     /// one id is an error naming both places.
     void declareId(const YamlNode& idNode, const std::string& what);
+    /// Counts the `names` one more place (a production's conditions, an option) sees against
+    /// kMaxNamesInScopes; an error at `at` past it.
+    void countScope(std::size_t names, const YamlNode& at, const std::string& what);
     /// Compiles an expression; an error names the place and the column inside the expression.
     CompiledExpression compile(const YamlNode& n, const NameSlots& slots, const std::string& what) const;
 
@@ -50,10 +67,24 @@ public:
     AttrNames& names() { return names_; }
 
 private:
+    /// "line:column" of byte `offset` of the expression `text` that node `n` holds, if the source
+    /// shows the text there unchanged (one line, no escapes); "" otherwise.
+    std::string placeInside(const YamlNode& n, const std::string& text, std::size_t offset) const;
+
     std::string path_;
     AttrNames& names_;
+    std::string_view source_;
+    std::size_t scopeNames_ = 0;
     std::map<std::int64_t, std::pair<int, std::string>> ids_;  // id -> line, what
 };
+
+/// An id node for a message: its integer, or its text shortened (not an id yet: the error says so).
+std::string idText(const YamlNode& n);
+/// Python's truth of a scalar ('False' and '0' are truthy strings; a collection is truthy).
+bool truthyScalar(const YamlNode& n);
+/// A vertex whose attr has a truthy `.helper_node`: an editor placeholder, dropped on load (its
+/// edges' ends dangle). One rule for host, mother and daughter graphs.
+bool isHelperVertex(const YamlNode& vertex);
 
 /// Reads one production (read_production.cpp); `globals` are the global variables' names.
 Production readProduction(ReaderContext& context, const std::string& name, const YamlNode& node,
