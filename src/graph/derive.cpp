@@ -21,7 +21,7 @@ std::vector<Value> evaluateGlobals(const GraphGrammar& g, DrawSource& draws) {
             values.push_back(v.expression.evaluate(frame));
         } catch (const EvaluationError& e) {
             throw InputError(g.path, std::to_string(v.place.line) + ":" + std::to_string(v.place.column),
-                             "global variable '" + v.name + "': " + e.what());
+                             "global variable '" + shortened(v.name) + "': " + e.what());
         }
     }
     return values;
@@ -110,7 +110,7 @@ DeriveResult deriveGraph(const GraphGrammar& grammar, std::size_t host, DrawSour
         ++chosenLevel->steps;
         if (graph.elements() > limits.maxElements)
             throw InputError(grammar.path, "", "the derivation passed " + std::to_string(limits.maxElements) + " elements at step " +
-                                                   std::to_string(result.steps) + " (production '" + P.name +
+                                                   std::to_string(result.steps) + " (production '" + shortened(P.name) +
                                                    "'); give fewer steps or raise the element limit");
         matcher.update(rewriter.changedVertices(), rewriter.changedEdges());
     }

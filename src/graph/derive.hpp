@@ -18,8 +18,8 @@ namespace shapevo::graph {
 struct DeriveLimits {
     std::int64_t maxSteps = 0;               // 0: the file's options.max_derivations.all, or none
     std::size_t maxElements = 1'000'000;     // a derivation that would exceed it stops with an error
-    std::size_t maxMatches = 1'000'000;      // matches one production may hold at once
-    std::size_t maxSearchSteps = 50'000'000; // element bindings one step's matching may try
+    std::size_t maxMatches = 500'000;        // matches one production may hold at once (~100 MB)
+    std::size_t maxSearchSteps = 20'000'000; // element bindings one step's matching may try (~1 s)
     // The original's quirks are reproduced by default (they change results); each fix is a switch.
     bool fixGeometricOrdering = false;       // compare with the nearest mapped vertex after, not the farthest
     bool drawOptionOnce = false;             // one option draw filters the matches and is applied

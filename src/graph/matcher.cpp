@@ -24,12 +24,24 @@ Matcher::Matcher(const GraphGrammar& grammar, const HostGraph& graph, const std:
         PerProduction& pp = productions_[p];
         pp.vertexCount = production.motherVertices.size();
         pp.edgeCount = production.motherEdges.size();
+        // Each mother vertex's rank along x and along y (stable: ties in file order).
+        for (int axis = 0; axis < 2; ++axis) {
+            auto coordinate = [&](std::size_t i) {
+                const Vec2 q = production.motherVertices[i].position;
+                return axis == 0 ? q.x : q.y;
+            };
+            std::vector<std::size_t> order(pp.vertexCount);
+            std::iota(order.begin(), order.end(), std::size_t(0));
+            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return coordinate(a) < coordinate(b); });
+            pp.axisRanks[std::size_t(axis)].resize(pp.vertexCount);
+            for (std::size_t r = 0; r < order.size(); ++r) pp.axisRanks[std::size_t(axis)][order[r]] = std::uint32_t(r);
+        }
         if (production.geometricOrdering) {
             EvaluationFrame frame{globals.data(), globals.size(), &grammar.names, &draws};
             try {
                 pp.geometric = truthy(production.geometricOrdering->evaluate(frame));
             } catch (const EvaluationError& e) {
-                throw InputError(grammar.path, "", "production '" + production.name + "', .geometric_ordering: " + e.what());
+                throw InputError(grammar.path, "", "production '" + shortened(production.name) + "', .geometric_ordering: " + e.what());
             }
         }
     }
@@ -111,7 +123,7 @@ bool Matcher::conditionsHold(const std::vector<MatchCondition>& conditions, cons
             return false;
         } catch (const EvaluationError& e) {
             throw InputError(grammar_.path, std::to_string(c.place.line) + ":" + std::to_string(c.place.column),
-                             "production '" + production.name + "', condition on '" + grammar_.names.name(c.key) + "': " + e.what());
+                             "production '" + shortened(production.name) + "', condition on '" + shortened(grammar_.names.name(c.key)) + "': " + e.what());
         }
     }
     return true;
@@ -119,7 +131,7 @@ bool Matcher::conditionsHold(const std::vector<MatchCondition>& conditions, cons
 
 void Matcher::countSearchStep(std::size_t p) {
     if (++searchSteps_ > budget_.maxSearchSteps)
-        throw InputError(grammar_.path, "", "production '" + grammar_.productions[p].name + "': matching tried more than " +
+        throw InputError(grammar_.path, "", "production '" + shortened(grammar_.productions[p].name) + "': matching tried more than " +
                                                 std::to_string(budget_.maxSearchSteps) +
                                                 " element bindings in one step, the search budget (a mother graph of many "
                                                 "unconstrained vertices matches in combinatorially many ways); give its vertices "
@@ -156,19 +168,14 @@ bool Matcher::edgeFits(std::size_t p, int mother, ElementId host, std::uint8_t s
 }
 
 bool Matcher::geometricOrderHolds(std::size_t p) const {
-    const Production& production = grammar_.productions[p];
-    const std::size_t n = production.motherVertices.size();
+    const PerProduction& pp = productions_[p];
+    const std::size_t n = pp.vertexCount;
     for (int axis = 0; axis < 2; ++axis) {
-        auto mother = [&](std::size_t i) { return axis == 0 ? production.motherVertices[i].position.x : production.motherVertices[i].position.y; };
+        const std::vector<std::uint32_t>& rank = pp.axisRanks[std::size_t(axis)];
         auto host = [&](std::size_t i) {
             const Vec2 q = graph_.vertex(boundVertices_[i]).position;
             return axis == 0 ? q.x : q.y;
         };
-        // Rank of each mother vertex along the axis (stable: ties in file order).
-        std::vector<std::size_t> order(n), rank(n);
-        std::iota(order.begin(), order.end(), std::size_t(0));
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return mother(a) < mother(b); });
-        for (std::size_t r = 0; r < n; ++r) rank[order[r]] = r;
         // Vertices mapped in file order; each compared with the nearest mapped one before it and
         // (the original's quirk) the farthest mapped one after it — or the nearest, when fixed.
         for (std::size_t k = 1; k < n; ++k) {
@@ -209,7 +216,7 @@ void Matcher::record(std::size_t p, std::uint32_t rank) {
     }
     if (pp.geometric && !geometricOrderHolds(p)) return;
     if (pp.all.size() >= budget_.maxMatches)
-        throw InputError(grammar_.path, "", "production '" + production.name + "' has more than " + std::to_string(budget_.maxMatches) +
+        throw InputError(grammar_.path, "", "production '" + shortened(production.name) + "' has more than " + std::to_string(budget_.maxMatches) +
                                                 " matches at once (a mother graph of unconstrained vertices matches in combinatorially "
                                                 "many ways); give its vertices conditions or edges, or raise the budget");
     std::uint32_t slot;

@@ -8,6 +8,7 @@
 // production may hold and what one update may search (a mother graph of many wildcard vertices
 // matches combinatorially many ways): exceeding it is an error naming the production.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -19,8 +20,8 @@
 namespace shapevo::graph {
 
 struct MatchBudget {
-    std::size_t maxMatches = 1'000'000;     // per production, held at once
-    std::size_t maxSearchSteps = 50'000'000;  // element bindings tried in one update
+    std::size_t maxMatches = 500'000;       // per production, held at once
+    std::size_t maxSearchSteps = 20'000'000;  // element bindings tried in one update
 };
 
 /// One match, as views into the matcher's storage (valid until the next update).
@@ -66,6 +67,7 @@ private:
     struct PerProduction {
         std::size_t vertexCount = 0, edgeCount = 0;
         bool geometric = false;
+        std::array<std::vector<std::uint32_t>, 2> axisRanks;  // per mother vertex, its rank along x and y
         std::vector<std::vector<Step>> plans;  // per anchor: mother vertices, then mother edges
         std::vector<Stored> stored;
         std::vector<ElementId> images;          // stride vertexCount + edgeCount

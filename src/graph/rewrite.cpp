@@ -66,9 +66,9 @@ Value Rewriter::evaluate(const CompiledExpression& e, std::vector<Value>& slots,
     } catch (const EvaluationError& error) {
         std::string what = where.kind;
         if (where.id) what += " " + std::to_string(where.id);
-        if (where.name) what += std::string(", ") + where.nameKind + " '" + *where.name + "'";
+        if (where.name) what += std::string(", ") + where.nameKind + " '" + shortened(*where.name) + "'";
         throw InputError(grammar_.path, placeText(place),
-                         "production '" + p.name + "', option " + std::to_string(o.place.id) + ", " + what + ": " + error.what());
+                         "production '" + shortened(p.name) + "', option " + std::to_string(o.place.id) + ", " + what + ": " + error.what());
     }
 }
 
@@ -219,7 +219,7 @@ void Rewriter::runExpressions(HostGraph& graph, const Production& P, const Produ
             double x = 0;
             if (!numberOf(value, x))
                 throw InputError(grammar_.path, placeText(d.place),
-                                 "production '" + P.name + "', daughter vertex " + std::to_string(d.place.id) + ", " + name + ": a number expected, not " + typeName(value));
+                                 "production '" + shortened(P.name) + "', option " + std::to_string(O.place.id) + ", daughter vertex " + std::to_string(d.place.id) + ", " + name + ": a number expected, not " + typeName(value));
             return x;
         };
         static const std::string kNewX = "new_x", kNewY = "new_y", kNewPos = ".new_pos";
@@ -230,7 +230,7 @@ void Rewriter::runExpressions(HostGraph& graph, const Production& P, const Produ
             const Vec2* p = value.asVec();
             if (!p)
                 throw InputError(grammar_.path, placeText(d.place),
-                                 "production '" + P.name + "', daughter vertex " + std::to_string(d.place.id) + ", .new_pos: a vector (Vec) expected, not " + typeName(value));
+                                 "production '" + shortened(P.name) + "', option " + std::to_string(O.place.id) + ", daughter vertex " + std::to_string(d.place.id) + ", .new_pos: a vector (Vec) expected, not " + typeName(value));
             v.position = *p;
         }
     }
