@@ -59,34 +59,9 @@ std::vector<DaughterAttr> readDaughterAttrs(ReaderContext& c, const YamlNode* at
     return out;
 }
 
-}  // namespace
-
-ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::string& production, const Production& p,
-                            std::int64_t motherGraphId, const std::map<std::int64_t, int>& motherVertexIds,
-                            const std::map<std::int64_t, int>& motherEdgeIds, const std::vector<std::string>& globals) {
-    c.mapping(node, production + " option");
-    c.onlyKeys(node, {"id", "mother_graph", "daughter_graph", "mapping", "weight", "attr_requirements", "conditions", "var_calc_instructions"},
-               production + " option");
-    const YamlNode& idNode = c.required(node, "id", production + " option");
-    const std::string what = production + ", option " + idText(idNode);
-    c.declareId(idNode, what);
-    ProductionOption o;
-    o.place = c.filePlace(node, idNode.integer);
-    if (const YamlNode* mg = node.find("mother_graph"); mg && mg->kind != YamlNode::Kind::Null)
-        if (c.id(*mg, what + " mother_graph") != motherGraphId)
-            c.fail(*mg, what + ": mother_graph " + idText(*mg) + " is not this production's mother graph (" + std::to_string(motherGraphId) + ")");
-    if (const YamlNode* w = node.find("weight"); w && w->kind != YamlNode::Kind::Null) {
-        o.weight = c.integer(*w, what + " weight");
-        if (o.weight < 0 || o.weight > (std::int64_t(1) << 40)) c.fail(*w, what + ": weight must be 0 to 2^40");
-    }
-    if (const YamlNode* cond = node.find("conditions"); cond && cond->kind != YamlNode::Kind::Null) {
-        c.mapping(*cond, what + " conditions");  // only `generation: oldest` has an effect, as in the original
-        if (const YamlNode* g = cond->find("generation"); g && g->isScalar() && g->text == "oldest") o.oldest = true;
-    }
-
-    // The daughter graph's elements (ids first: the morphism and requirements refer to them).
-    DaughterIds ids;
-    std::vector<const YamlNode*> vertexNodes, edgeNodes;
+/// The daughter graph's element ids (declared; helper vertices set aside) and nodes, in file order.
+void readDaughterIds(ReaderContext& c, const YamlNode& node, const std::string& what, DaughterIds& ids,
+                     std::vector<const YamlNode*>& vertexNodes, std::vector<const YamlNode*>& edgeNodes) {
     const YamlNode* daughter = node.find("daughter_graph");
     const std::string dwhat = what + " daughter graph";
     if (daughter && daughter->kind != YamlNode::Kind::Null) {
@@ -116,10 +91,12 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
                 edgeNodes.push_back(&e);
             }
     }
-    o.vertices.resize(vertexNodes.size());
-    o.edges.resize(edgeNodes.size());
+}
 
-    // The morphism: mother element -> daughter element of the same kind, one to one.
+/// The morphism: mother element -> daughter element of the same kind, one to one.
+void readMorphism(ReaderContext& c, const YamlNode& node, const std::string& what, const DaughterIds& ids,
+                  const std::map<std::int64_t, int>& motherVertexIds, const std::map<std::int64_t, int>& motherEdgeIds,
+                  ProductionOption& o) {
     if (const YamlNode* mapping = node.find("mapping"); mapping && mapping->kind != YamlNode::Kind::Null) {
         c.mapping(*mapping, what + " mapping");
         c.onlyKeys(*mapping, {"id", "dict"}, what + " mapping");
@@ -142,6 +119,93 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
                 mother = vertex ? mv->second : me->second;
             }
     }
+
+}
+
+/// An option's weight, `generation: oldest` and its mother graph reference.
+void readOptionHeader(ReaderContext& c, const YamlNode& node, const std::string& what, std::int64_t motherGraphId,
+                      ProductionOption& o) {
+    if (const YamlNode* mg = node.find("mother_graph"); mg && mg->kind != YamlNode::Kind::Null)
+        if (c.id(*mg, what + " mother_graph") != motherGraphId)
+            c.fail(*mg, what + ": mother_graph " + idText(*mg) + " is not this production's mother graph (" + std::to_string(motherGraphId) + ")");
+    if (const YamlNode* w = node.find("weight"); w && w->kind != YamlNode::Kind::Null) {
+        o.weight = c.integer(*w, what + " weight");
+        if (o.weight < 0 || o.weight > (std::int64_t(1) << 40)) c.fail(*w, what + ": weight must be 0 to 2^40");
+    }
+    if (const YamlNode* cond = node.find("conditions"); cond && cond->kind != YamlNode::Kind::Null) {
+        c.mapping(*cond, what + " conditions");  // only `generation: oldest` has an effect, as in the original
+        if (const YamlNode* g = cond->find("generation"); g && g->isScalar() && g->text == "oldest") o.oldest = true;
+    }
+
+}
+
+/// Each daughter element's own attr_requirements, checked, by the element's id.
+std::map<std::int64_t, std::vector<Requirement>> readOwnRequirements(
+    ReaderContext& c, const std::vector<std::pair<const YamlNode*, const YamlNode*>>& ownRequirements, const std::string& what,
+    const DaughterIds& ids, const std::map<std::int64_t, int>& motherVertexIds, const std::map<std::int64_t, int>& motherEdgeIds,
+    const std::set<std::string>& taken) {
+    std::map<std::int64_t, std::vector<Requirement>> own;
+    for (const auto& [target, names] : ownRequirements) {
+        const std::int64_t d = c.id(*target, what + " attr_requirements: a daughter element id");
+        if (!ids.vertices.count(d) && !ids.edges.count(d))
+            c.fail(*target, what + " attr_requirements: " + idText(*target) + " is not a vertex or edge of the daughter graph");
+        for (const auto& [name, ref] : c.mapping(*names, what + " attr_requirements " + idText(*target)).entries) {
+            const std::int64_t m = c.id(ref, what + " attr_requirements");
+            Requirement r{c.keyText(name, what), motherVertexIds.count(m) > 0, 0};
+            if (r.motherIsVertex) r.motherIndex = motherVertexIds.at(m);
+            else if (motherEdgeIds.count(m)) r.motherIndex = motherEdgeIds.at(m);
+            else c.fail(ref, what + " attr_requirements: " + idText(ref) + " is not a vertex or edge of the mother graph");
+            if (taken.count(r.name))
+                c.fail(name, what + ": the requirement '" + shortened(r.name) +
+                                 "' has the name of a vector, a requirement for all or a variable of this option");
+            std::vector<Requirement>& list = own[d];
+            if (list.size() >= kMaxOptionNames)
+                c.fail(name, what + " attr_requirements: more than " + std::to_string(kMaxOptionNames) + " requirements for one element");
+            list.push_back(std::move(r));
+        }
+    }
+    return own;
+}
+
+/// A daughter edge's ends as daughter vertex indices (-1: none, or an editor helper).
+void readDaughterEdgeEnds(ReaderContext& c, const YamlNode& e, const std::string& ewhat, const DaughterIds& ids, DaughterEdge& d) {
+    for (int end = 0; end < 2; ++end) {
+        const char* key = end == 0 ? "vertex1" : "vertex2";
+        const YamlNode* ref = e.find(key);
+        int& slot = end == 0 ? d.vertex1 : d.vertex2;
+        if (!ref || ref->kind == YamlNode::Kind::Null) continue;
+        const std::int64_t vid = c.id(*ref, ewhat + " " + key);
+        if (ids.helpers.count(vid)) continue;
+        const auto it = ids.vertices.find(vid);
+        if (it == ids.vertices.end()) c.fail(*ref, ewhat + ": " + key + " " + ref->text + " is not a vertex of the daughter graph");
+        slot = it->second;
+    }
+}
+
+}  // namespace
+
+ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::string& production, const Production& p,
+                            std::int64_t motherGraphId, const std::map<std::int64_t, int>& motherVertexIds,
+                            const std::map<std::int64_t, int>& motherEdgeIds, const std::vector<std::string>& globals) {
+    c.mapping(node, production + " option");
+    c.onlyKeys(node, {"id", "mother_graph", "daughter_graph", "mapping", "weight", "attr_requirements", "conditions", "var_calc_instructions"},
+               production + " option");
+    const YamlNode& idNode = c.required(node, "id", production + " option");
+    const std::string what = production + ", option " + idText(idNode);
+    c.declareId(idNode, what);
+    ProductionOption o;
+    o.place = c.filePlace(node, idNode.integer);
+    readOptionHeader(c, node, what, motherGraphId, o);
+
+    // The daughter graph's elements (ids first: the morphism and requirements refer to them).
+    DaughterIds ids;
+    std::vector<const YamlNode*> vertexNodes, edgeNodes;
+    readDaughterIds(c, node, what, ids, vertexNodes, edgeNodes);
+    const std::string dwhat = what + " daughter graph";
+    o.vertices.resize(vertexNodes.size());
+    o.edges.resize(edgeNodes.size());
+
+    readMorphism(c, node, what, ids, motherVertexIds, motherEdgeIds, o);
 
     // The option's one frame: self_, old, vectors, `all` requirements, application variables, run
     // variables, globals; then each element's own requirements.
@@ -228,26 +292,8 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
     (void)vectorsEnd;
 
     // Daughter elements: own requirements after the shared slots, then the attribute expressions.
-    std::map<std::int64_t, std::vector<Requirement>> own;
-    for (const auto& [target, names] : ownRequirements) {
-        const std::int64_t d = c.id(*target, what + " attr_requirements: a daughter element id");
-        if (!ids.vertices.count(d) && !ids.edges.count(d))
-            c.fail(*target, what + " attr_requirements: " + idText(*target) + " is not a vertex or edge of the daughter graph");
-        for (const auto& [name, ref] : c.mapping(*names, what + " attr_requirements " + idText(*target)).entries) {
-            const std::int64_t m = c.id(ref, what + " attr_requirements");
-            Requirement r{c.keyText(name, what), motherVertexIds.count(m) > 0, 0};
-            if (r.motherIsVertex) r.motherIndex = motherVertexIds.at(m);
-            else if (motherEdgeIds.count(m)) r.motherIndex = motherEdgeIds.at(m);
-            else c.fail(ref, what + " attr_requirements: " + idText(ref) + " is not a vertex or edge of the mother graph");
-            if (taken.count(r.name))
-                c.fail(name, what + ": the requirement '" + shortened(r.name) +
-                                 "' has the name of a vector, a requirement for all or a variable of this option");
-            std::vector<Requirement>& list = own[d];
-            if (list.size() >= kMaxOptionNames)
-                c.fail(name, what + " attr_requirements: more than " + std::to_string(kMaxOptionNames) + " requirements for one element");
-            list.push_back(std::move(r));
-        }
-    }
+    const std::map<std::int64_t, std::vector<Requirement>> own =
+        readOwnRequirements(c, ownRequirements, what, ids, motherVertexIds, motherEdgeIds, taken);
     // An element's layout: the shared slots, then its own requirements, which hide a global of
     // the same name (NameSlots::find takes the first). One working layout, restored after each
     // element: no copy per element.
@@ -283,17 +329,7 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         const std::int64_t id = e.find("id")->integer;
         const std::string ewhat = dwhat + ", edge " + std::to_string(id);
         DaughterEdge& d = o.edges[index];
-        for (int end = 0; end < 2; ++end) {
-            const char* key = end == 0 ? "vertex1" : "vertex2";
-            const YamlNode* ref = e.find(key);
-            int& slot = end == 0 ? d.vertex1 : d.vertex2;
-            if (!ref || ref->kind == YamlNode::Kind::Null) continue;
-            const std::int64_t vid = c.id(*ref, ewhat + " " + key);
-            if (ids.helpers.count(vid)) continue;
-            const auto it = ids.vertices.find(vid);
-            if (it == ids.vertices.end()) c.fail(*ref, ewhat + ": " + key + " " + ref->text + " is not a vertex of the daughter graph");
-            slot = it->second;
-        }
+        readDaughterEdgeEnds(c, e, ewhat, ids, d);
         d.attrs = readDaughterAttrs(c, e.find("attr"), slotsFor(id, d.requirements), ewhat, nullptr);
         d.place = c.filePlace(e, id);
     }
