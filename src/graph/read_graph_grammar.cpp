@@ -22,11 +22,8 @@ HostGraph readHostGraph(ReaderContext& c, const std::string& name, const YamlNod
     std::set<std::int64_t> helpers;
     if (const YamlNode* vs = node.find("vertices"); vs && vs->kind != YamlNode::Kind::Null) {
         for (const YamlNode& v : c.sequence(*vs, what + " vertices").items) {
-            c.mapping(v, what + " vertex");
-            c.onlyKeys(v, {"id", "attr"}, what + " vertex");
-            const YamlNode& idNode = c.required(v, "id", what + " vertex");
-            const std::string vwhat = what + ", vertex " + idText(idNode);
-            c.declareId(idNode, vwhat);
+            std::string vwhat;
+            const YamlNode& idNode = c.elementEntry(v, true, what, vwhat);
             const YamlNode& attrs = c.mapping(c.required(v, "attr", vwhat), vwhat + " attr");
             if (isHelperVertex(v)) {
                 helpers.insert(idNode.integer);
@@ -47,11 +44,8 @@ HostGraph readHostGraph(ReaderContext& c, const std::string& name, const YamlNod
     }
     if (const YamlNode* es = node.find("edges"); es && es->kind != YamlNode::Kind::Null) {
         for (const YamlNode& e : c.sequence(*es, what + " edges").items) {
-            c.mapping(e, what + " edge");
-            c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, what + " edge");
-            const YamlNode& idNode = c.required(e, "id", what + " edge");
-            const std::string ewhat = what + ", edge " + idText(idNode);
-            c.declareId(idNode, ewhat);
+            std::string ewhat;
+            c.elementEntry(e, false, what, ewhat);
             ElementId ends[2] = {kNoVertex, kNoVertex};
             for (int end = 0; end < 2; ++end) {
                 const char* key = end == 0 ? "vertex1" : "vertex2";

@@ -70,10 +70,8 @@ void readDaughterIds(ReaderContext& c, const YamlNode& node, const std::string& 
         c.declareId(c.required(*daughter, "id", dwhat), dwhat);
         if (const YamlNode* vs = daughter->find("vertices"); vs && vs->kind != YamlNode::Kind::Null)
             for (const YamlNode& v : c.sequence(*vs, dwhat + " vertices").items) {
-                c.mapping(v, dwhat + " vertex");
-                c.onlyKeys(v, {"id", "attr"}, dwhat + " vertex");
-                const YamlNode& vid = c.required(v, "id", dwhat + " vertex");
-                c.declareId(vid, dwhat + ", vertex " + idText(vid));
+                std::string vwhat;
+                const YamlNode& vid = c.elementEntry(v, true, dwhat, vwhat);
                 if (isHelperVertex(v)) {
                     ids.helpers[vid.integer] = 0;
                     continue;
@@ -83,10 +81,8 @@ void readDaughterIds(ReaderContext& c, const YamlNode& node, const std::string& 
             }
         if (const YamlNode* es = daughter->find("edges"); es && es->kind != YamlNode::Kind::Null)
             for (const YamlNode& e : c.sequence(*es, dwhat + " edges").items) {
-                c.mapping(e, dwhat + " edge");
-                c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, dwhat + " edge");
-                const YamlNode& eid = c.required(e, "id", dwhat + " edge");
-                c.declareId(eid, dwhat + ", edge " + idText(eid));
+                std::string ewhat;
+                const YamlNode& eid = c.elementEntry(e, false, dwhat, ewhat);
                 ids.edges[eid.integer] = int(edgeNodes.size());
                 edgeNodes.push_back(&e);
             }

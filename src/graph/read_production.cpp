@@ -21,10 +21,8 @@ void readVertexIds(ReaderContext& c, const YamlNode& graph, const std::string& w
     const YamlNode* vs = graph.find("vertices");
     if (!vs || vs->kind == YamlNode::Kind::Null) return;
     for (const YamlNode& v : c.sequence(*vs, what + " vertices").items) {
-        c.mapping(v, what + " vertex");
-        c.onlyKeys(v, {"id", "attr"}, what + " vertex");
-        const YamlNode& idNode = c.required(v, "id", what + " vertex");
-        c.declareId(idNode, what + ", vertex " + idText(idNode));
+        std::string vwhat;
+        const YamlNode& idNode = c.elementEntry(v, true, what, vwhat);
         if (isHelperVertex(v)) {
             helpers[idNode.integer] = 0;
             continue;
@@ -90,11 +88,8 @@ void readMotherGraph(ReaderContext& c, const YamlNode& graph, const std::string&
     }
     if (const YamlNode* es = graph.find("edges"); es && es->kind != YamlNode::Kind::Null) {
         for (const YamlNode& e : c.sequence(*es, what + " edges").items) {
-            c.mapping(e, what + " edge");
-            c.onlyKeys(e, {"id", "vertex1", "vertex2", "attr"}, what + " edge");
-            const YamlNode& idNode = c.required(e, "id", what + " edge");
-            const std::string ewhat = what + ", edge " + idText(idNode);
-            c.declareId(idNode, ewhat);
+            std::string ewhat;
+            const YamlNode& idNode = c.elementEntry(e, false, what, ewhat);
             MotherEdge m;
             m.vertex1 = endOf(c, e, "vertex1", ids.vertices, ids.helpers, ewhat);
             m.vertex2 = endOf(c, e, "vertex2", ids.vertices, ids.helpers, ewhat);

@@ -110,6 +110,18 @@ std::string ReaderContext::expressionText(const YamlNode& n, const std::string& 
     }
 }
 
+const YamlNode& ReaderContext::elementEntry(const YamlNode& entry, bool vertex, const std::string& graphWhat,
+                                            std::string& elementWhat) {
+    const std::string kind = vertex ? " vertex" : " edge";
+    mapping(entry, graphWhat + kind);
+    if (vertex) onlyKeys(entry, {"id", "attr"}, graphWhat + kind);
+    else onlyKeys(entry, {"id", "vertex1", "vertex2", "attr"}, graphWhat + kind);
+    const YamlNode& idNode = required(entry, "id", graphWhat + kind);
+    elementWhat = graphWhat + "," + kind + " " + idText(idNode);
+    declareId(idNode, elementWhat);
+    return idNode;
+}
+
 void ReaderContext::declareId(const YamlNode& idNode, const std::string& what) {
     const std::int64_t id = this->id(idNode, what + "'s id");
     const auto [it, fresh] = ids_.emplace(id, std::make_pair(idNode.line, what));

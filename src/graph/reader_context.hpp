@@ -53,6 +53,9 @@ public:
     /// A scalar's Python str() (the text an expression place compiles: 'True' for a YAML bool).
     std::string expressionText(const YamlNode& n, const std::string& what) const;
 
+    /// A graph's vertex or edge entry ({id, attr} or {id, vertex1, vertex2, attr}): checked, its id
+    /// declared; returns the id node and sets `elementWhat` ("<graph>, vertex 12") for messages.
+    const YamlNode& elementEntry(const YamlNode& entry, bool vertex, const std::string& graphWhat, std::string& elementWhat);
     /// Registers a file id (graph, vertex, edge, production, option, mapping); a second use of
     /// one id is an error naming both places.
     void declareId(const YamlNode& idNode, const std::string& what);
