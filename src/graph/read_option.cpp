@@ -220,7 +220,6 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         if (!taken.insert(v.name).second) c.fail(node, what + ": vector '" + shortened(v.name) + "' uses a reserved name");
         s.add(v.name);
     }
-    const std::size_t vectorsEnd = s.names.size();
     std::vector<std::pair<const YamlNode*, const YamlNode*>> ownRequirements;  // (daughter id node, names)
     if (const YamlNode* req = node.find("attr_requirements"); req && req->kind != YamlNode::Kind::Null)
         for (const auto& [target, names] : c.mapping(*req, what + " attr_requirements").entries) {
@@ -285,7 +284,6 @@ ProductionOption readOption(ReaderContext& c, const YamlNode& node, const std::s
         visible.names[seen] = s.names[seen];
         ++seen;
     }
-    (void)vectorsEnd;
 
     // Daughter elements: own requirements after the shared slots, then the attribute expressions.
     const std::map<std::int64_t, std::vector<Requirement>> own =
