@@ -12,16 +12,14 @@
 #include "graph/derive.hpp"
 #include "graph/matcher.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "seeded_derivation.hpp"
 
 namespace derive_rules_more_test {
 
 using namespace shapevo::graph;
 
 DeriveResult run(const std::string& text, std::uint64_t seed, std::int64_t steps = 0, DeriveLimits limits = {}) {
-    const GraphGrammar g = parseGraphGrammar(text, "rules.yml");
-    SeededDraws draws(seed);
-    limits.maxSteps = steps;
-    return deriveGraph(g, 0, draws, limits);
+    return test_support::deriveSeeded(parseGraphGrammar(text, "rules.yml"), seed, steps, limits);
 }
 
 // Host: a -e- b. The production deletes the vertex labelled 'cut' but keeps the edge.

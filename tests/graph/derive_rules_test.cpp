@@ -10,6 +10,7 @@
 #include "base/input_error.hpp"
 #include "graph/derive.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "seeded_derivation.hpp"
 
 namespace derive_rules_test {
 
@@ -17,12 +18,7 @@ using namespace shapevo::graph;
 
 GraphGrammar grammarOf(const std::string& text) { return parseGraphGrammar(text, "test.yml"); }
 
-DeriveResult derive(const GraphGrammar& g, std::uint64_t seed, std::int64_t steps = 0) {
-    SeededDraws draws(seed);
-    DeriveLimits limits;
-    limits.maxSteps = steps;
-    return deriveGraph(g, 0, draws, limits);
-}
+using test_support::deriveSeeded;
 
 const Value* attrOf(const GraphGrammar& g, const AttrMap& m, const char* key) { return m.find(g.names.find(key)); }
 
@@ -65,7 +61,7 @@ result_graphs: {}
 TEST(GraphDeriveRules, PushOutDeletesTheUnmappedEdgeAndCreatesTheDaughtersNewElements) {
     const GraphGrammar g = grammarOf(kSplit);
     for (std::int64_t steps : {1, 2, 5, 17}) {
-        const DeriveResult r = derive(g, 7, steps);
+        const DeriveResult r = deriveSeeded(g, 7, steps);
         EXPECT_EQ(r.steps, steps);
         EXPECT_EQ(r.graph.liveVertices(), std::size_t(2 + steps));
         EXPECT_EQ(r.graph.liveEdges(), std::size_t(1 + steps));
@@ -79,7 +75,7 @@ TEST(GraphDeriveRules, AutomaticPositionFollowsTheFirstDirectedEdge) {
     // one half-length to the left. The host edge (0,0)->(3,4) is turned by atan2(4,3) and, per axis
     // after rotation, scaled by host extent / mother extent.
     const GraphGrammar g = grammarOf(kSplit);
-    const DeriveResult r = derive(g, 1, 1);
+    const DeriveResult r = deriveSeeded(g, 1, 1);
     const HostVertex& m = r.graph.vertex(2);
     const double angle = std::atan2(4.0, 3.0);
     // Rotated mother: (0,0) and (2cos, 2sin) -> extents (1.2, 1.6); host extents (3, 4): scale 2.5.
@@ -90,7 +86,7 @@ TEST(GraphDeriveRules, AutomaticPositionFollowsTheFirstDirectedEdge) {
 
 TEST(GraphDeriveRules, NewElementsAreOneGenerationOlderThanTheirMatch) {
     const GraphGrammar g = grammarOf(kSplit);
-    const DeriveResult r = derive(g, 3, 3);
+    const DeriveResult r = deriveSeeded(g, 3, 3);
     std::int64_t highest = 0;
     for (const HostEdge& e : r.graph.edges())
         if (e.alive) highest = std::max(highest, e.generation);
@@ -104,7 +100,7 @@ TEST(GraphDeriveRules, NewElementsAreOneGenerationOlderThanTheirMatch) {
 
 TEST(GraphDeriveRules, OneSeedGivesOneGraph) {
     const GraphGrammar g = grammarOf(kSplit);
-    const DeriveResult a = derive(g, 42, 40), b = derive(g, 42, 40), c = derive(g, 43, 40);
+    const DeriveResult a = deriveSeeded(g, 42, 40), b = deriveSeeded(g, 42, 40), c = deriveSeeded(g, 43, 40);
     ASSERT_EQ(a.graph.vertices().size(), b.graph.vertices().size());
     bool allSame = true, differsFromOtherSeed = false;
     for (std::size_t i = 0; i < a.graph.vertices().size(); ++i) {

@@ -9,6 +9,7 @@
 #include "base/input_error.hpp"
 #include "graph/derive.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "seeded_derivation.hpp"
 
 namespace derive_scope_test {
 
@@ -25,10 +26,7 @@ struct Derived {
 
 Derived derive(const std::string& yaml, std::uint64_t seed = 1, std::int64_t steps = 0) {
     Derived d{parseGraphGrammar(yaml, "scope.yml"), {}};
-    SeededDraws draws(seed);
-    DeriveLimits limits;
-    limits.maxSteps = steps;
-    d.result = deriveGraph(d.grammar, 0, draws, limits);
+    d.result = test_support::deriveSeeded(d.grammar, seed, steps);
     return d;
 }
 

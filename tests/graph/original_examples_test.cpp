@@ -8,6 +8,7 @@
 
 #include "graph/derive.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "seeded_derivation.hpp"
 
 namespace original_examples_test {
 
@@ -21,12 +22,7 @@ std::string examplePath(const std::string& name) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "the original example " << path << " is absent (it is read, " \
                                                         "never copied into the project)"
 
-DeriveResult deriveSteps(const GraphGrammar& g, std::uint64_t seed, std::int64_t steps) {
-    SeededDraws draws(seed);
-    DeriveLimits limits;
-    limits.maxSteps = steps;
-    return deriveGraph(g, 0, draws, limits);
-}
+using test_support::deriveSeeded;
 
 std::size_t firedOf(const GraphGrammar& g, const DeriveResult& r, const std::string& name) {
     for (std::size_t p = 0; p < g.productions.size(); ++p)
@@ -42,7 +38,7 @@ TEST(GraphOriginalExamples, KochFlakeHasSixPlusSixElementsPerStep) {
     for (std::uint64_t seed : {1, 2, 3, 99})
         for (std::int64_t steps : {0, 1, 7, 64, 192}) {
             if (steps == 0) continue;
-            const DeriveResult r = deriveSteps(g, seed, steps);
+            const DeriveResult r = deriveSeeded(g, seed, steps);
             EXPECT_EQ(r.steps, steps);
             EXPECT_EQ(r.graph.elements(), std::size_t(6 + 6 * steps)) << "seed " << seed << ", " << steps << " steps";
             EXPECT_EQ(r.graph.liveVertices(), r.graph.liveEdges());
@@ -56,7 +52,7 @@ TEST(GraphOriginalExamples, TreeHasThreePlusFourElementsPerStepAndTenTrunkSteps)
     const GraphGrammar g = readGraphGrammar(path);
     for (std::uint64_t seed : {1, 2, 3, 4, 5})
         for (std::int64_t steps : {60, 120, 200}) {
-            const DeriveResult r = deriveSteps(g, seed, steps);
+            const DeriveResult r = deriveSeeded(g, seed, steps);
             EXPECT_EQ(r.steps, steps);
             EXPECT_EQ(r.graph.elements(), std::size_t(3 + 4 * steps)) << "seed " << seed;
             EXPECT_EQ(firedOf(g, r, "Grow Trunk"), 10u) << "seed " << seed << ", " << steps << " steps";
@@ -68,7 +64,7 @@ TEST(GraphOriginalExamples, CircleRunsThreeNPlusOneStepsToTwoNPlusTwoElements) {
     SKIP_WITHOUT(path);
     const GraphGrammar g = readGraphGrammar(path);
     for (std::uint64_t seed = 1; seed <= 30; ++seed) {
-        const DeriveResult r = deriveSteps(g, seed, 0);
+        const DeriveResult r = deriveSeeded(g, seed, 0);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
         ASSERT_EQ((r.steps - 1) % 3, 0) << "seed " << seed << ": " << r.steps << " steps";
         const std::int64_t n = (r.steps - 1) / 3;
@@ -84,7 +80,7 @@ TEST(GraphOriginalExamples, SquareStepsAndElementsFollowItsTwoGlobals) {
     const GraphGrammar g = readGraphGrammar(path);
     int seen = 0;
     for (std::uint64_t seed = 1; seed <= 24; ++seed) {
-        const DeriveResult r = deriveSteps(g, seed, 500);
+        const DeriveResult r = deriveSeeded(g, seed, 500);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal) << "seed " << seed;
         // steps = 54 + 16L + 32D and elements = 160 + 48(L-1) + 64D for some L in [1,4], D in [0,2].
         bool found = false;

@@ -11,6 +11,7 @@
 
 #include "graph/derive.hpp"
 #include "graph/read_graph_grammar.hpp"
+#include "seeded_derivation.hpp"
 
 namespace shipped_graph_grammars_test {
 
@@ -20,12 +21,7 @@ GraphGrammar shipped(const std::string& name) {
     return readGraphGrammar(std::string(SHAPEVO_SOURCE_DIR) + "/grammars/graph/" + name);
 }
 
-DeriveResult deriveSeed(const GraphGrammar& g, std::uint64_t seed, std::int64_t steps = 0) {
-    SeededDraws draws(seed);
-    DeriveLimits limits;
-    limits.maxSteps = steps;
-    return deriveGraph(g, 0, draws, limits);
-}
+using test_support::deriveSeeded;
 
 std::int64_t firedOf(const GraphGrammar& g, const DeriveResult& r, const std::string& name) {
     for (std::size_t p = 0; p < g.productions.size(); ++p)
@@ -64,7 +60,7 @@ TEST(ShippedGraphGrammars, KochHasSixPlusSixElementsPerStepAndStopsAtItsLimit) {
     const GraphGrammar g = shipped("koch.yml");
     for (std::uint64_t seed = 1; seed <= 50; ++seed)
         for (std::int64_t steps : {0, 1, 7, 200}) {
-            const DeriveResult r = deriveSeed(g, seed, steps);
+            const DeriveResult r = deriveSeeded(g, seed, steps);
             const std::int64_t expected = steps == 0 ? 63 : steps;  // 0: the file's max_derivations.all
             EXPECT_EQ(r.stop, DeriveResult::Stop::StepLimit);
             EXPECT_EQ(r.steps, expected);
@@ -76,7 +72,7 @@ TEST(ShippedGraphGrammars, KochHasSixPlusSixElementsPerStepAndStopsAtItsLimit) {
 TEST(ShippedGraphGrammars, KochOutlineStaysOneClosedDirectedLoop) {
     const GraphGrammar g = shipped("koch.yml");
     for (std::uint64_t seed : {1, 2, 3}) {
-        const DeriveResult r = deriveSeed(g, seed, 100);
+        const DeriveResult r = deriveSeeded(g, seed, 100);
         const HostGraph& graph = r.graph;
         std::vector<int> out(graph.vertices().size(), 0), in(graph.vertices().size(), 0);
         std::vector<ElementId> next(graph.vertices().size(), kNoVertex);
@@ -100,7 +96,7 @@ TEST(ShippedGraphGrammars, KochSegmentsAreThirdsAndEachEarlyLevelIsCompletedOlde
     const double side = 3.0 * std::sqrt(3.0);
     for (std::uint64_t seed : {1, 5, 9}) {
         // Every segment is side / 3^k: the apex sits at the true Koch height.
-        const DeriveResult r = deriveSeed(g, seed, 255);
+        const DeriveResult r = deriveSeeded(g, seed, 255);
         for (const HostEdge& e : r.graph.edges()) {
             if (!e.alive) continue;
             const double level = std::log(side / lengthOf(r.graph, e)) / std::log(3.0);
@@ -108,7 +104,7 @@ TEST(ShippedGraphGrammars, KochSegmentsAreThirdsAndEachEarlyLevelIsCompletedOlde
         }
         // After 3 and 3 + 12 steps, level 1 and level 2 are complete: all segments equal.
         for (std::int64_t steps : {3, 15}) {
-            const DeriveResult full = deriveSeed(g, seed, steps);
+            const DeriveResult full = deriveSeeded(g, seed, steps);
             const double expected = side / (steps == 3 ? 3.0 : 9.0);
             for (const HostEdge& e : full.graph.edges())
                 if (e.alive) EXPECT_NEAR(lengthOf(full.graph, e), expected, 1e-9) << "seed " << seed << ", " << steps << " steps";
@@ -121,7 +117,7 @@ TEST(ShippedGraphGrammars, KochSegmentsAreThirdsAndEachEarlyLevelIsCompletedOlde
 TEST(ShippedGraphGrammars, TreeGrowsItsTrunkSevenTimesCrownsOnceAndEndsAfter143Steps) {
     const GraphGrammar g = shipped("tree.yml");
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
         EXPECT_EQ(r.steps, 143) << "seed " << seed;
         EXPECT_EQ(firedOf(g, r, "Grow trunk"), 7);
@@ -130,14 +126,14 @@ TEST(ShippedGraphGrammars, TreeGrowsItsTrunkSevenTimesCrownsOnceAndEndsAfter143S
         EXPECT_EQ(r.graph.elements(), std::size_t(3 + 4 * r.steps));
     }
     for (std::int64_t steps : {1, 8, 50, 100})  // a step limit stops it part way, 4 elements a step
-        EXPECT_EQ(deriveSeed(g, 3, steps).graph.elements(), std::size_t(3 + 4 * steps));
+        EXPECT_EQ(deriveSeeded(g, 3, steps).graph.elements(), std::size_t(3 + 4 * steps));
 }
 
 TEST(ShippedGraphGrammars, TreeBranchesGetThinnerAndEndInLeaves) {
     const GraphGrammar g = shipped("tree.yml");
     const AttrKey width = g.names.find(".svg_stroke_width");
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         const HostGraph& graph = r.graph;
         std::vector<ElementId> incoming(graph.vertices().size(), kNoVertex);
         std::vector<int> outgoing(graph.vertices().size(), 0);
@@ -169,7 +165,7 @@ TEST(ShippedGraphGrammars, RadialHasAsManyPetalsAsItsGlobalDraws) {
     const GraphGrammar g = shipped("radial.yml");
     std::set<std::int64_t> seen;
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         const AttrMap& centre = r.graph.vertex(0).attrs;
         const std::int64_t n = std::int64_t(numberAttr(g, centre, "target"));
         seen.insert(n);
@@ -193,7 +189,7 @@ TEST(ShippedGraphGrammars, RadialPetalTipsAreEvenlySpacedOnACircle) {
     const GraphGrammar g = shipped("radial.yml");
     const double pi = std::acos(-1.0);
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         const Vec2 c = r.graph.vertex(0).position;
         std::vector<double> angles;
         for (const HostEdge& e : r.graph.edges()) {
@@ -214,7 +210,7 @@ TEST(ShippedGraphGrammars, TiledTilesCoverTheSheetWithoutOverlapping) {
     const GraphGrammar g = shipped("tiled.yml");
     std::set<std::size_t> counts;
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
         struct Box {
             Vec2 lo, hi;
@@ -254,7 +250,7 @@ TEST(ShippedGraphGrammars, TiledTilesCoverTheSheetWithoutOverlapping) {
 TEST(ShippedGraphGrammars, TiledEveryTileGetsOneGlazeAndOneMotifAtItsCentre) {
     const GraphGrammar g = shipped("tiled.yml");
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         std::multiset<std::pair<double, double>> centres, glazes, motifs;
         for (const HostEdge& e : r.graph.edges())
             if (e.alive && textAttrIs(g, e.attrs, "kind", "tile")) {
@@ -297,7 +293,7 @@ TEST(ShippedGraphGrammars, FacadeHasFloorsTimesWindowsPerFloorWindowsAndExactlyO
     const GraphGrammar g = shipped("facade.yml");
     std::set<std::pair<int, int>> shapes;
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
         const AttrMap& building = r.graph.vertex(0).attrs;
         const int floors = int(numberAttr(g, building, "floors")), perFloor = int(numberAttr(g, building, "per_floor"));
@@ -319,7 +315,7 @@ TEST(ShippedGraphGrammars, FacadeHangsExactlyOneBlindInEachWindow) {
     const GraphGrammar g = shipped("facade.yml");
     int open = 0, lowered = 0;
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
-        const DeriveResult r = deriveSeed(g, seed);
+        const DeriveResult r = deriveSeeded(g, seed);
         const HostGraph& graph = r.graph;
         const FacadeParts parts = partsOf(g, graph);
         EXPECT_EQ(parts.blinds.size(), parts.windows.size());
