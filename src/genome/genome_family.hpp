@@ -57,6 +57,8 @@ public:
     virtual std::unique_ptr<GenomeOperators> makeOperators(const GenomeLimits& limits) const = 0;
     /// Empty if `c` is a valid genome of this family within `limits`; otherwise what is wrong first.
     virtual std::string check(const Chromosome& c, const GenomeLimits& limits) const = 0;
+    /// The text a genome file's hash names (genome/genome_file.hpp): the grammar file's text.
+    virtual const std::string& sourceText() const = 0;
     /// The tree grammar (SMC, SOSMC, RJMCMC, diversity); nullptr for a family without one.
     virtual const Grammar* treeGrammar() const = 0;
 };
