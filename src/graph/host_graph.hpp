@@ -23,6 +23,10 @@ struct HostVertex {
     std::int64_t generation = 0;
     bool alive = true;
     std::vector<ElementId> edges;  // incident live edges, in the order they were attached
+    // Lineage (lineage_key.hpp), for keyed derivations: the element's key, the seed and event
+    // (step, 0 = the start) of the event that made it.
+    std::uint64_t key = 0, seed = 0;
+    std::uint32_t birth = 0;
 };
 
 struct HostEdge {
@@ -30,6 +34,8 @@ struct HostEdge {
     ElementId vertex1 = kNoVertex, vertex2 = kNoVertex;  // kNoVertex: a dangling end
     std::int64_t generation = 0;
     bool alive = true;
+    std::uint64_t key = 0, seed = 0;  // lineage, as HostVertex's
+    std::uint32_t birth = 0;
 };
 
 class HostGraph {

@@ -2,10 +2,12 @@
 #include "graph/matcher.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
 #include "base/input_error.hpp"
+#include "graph/lineage_key.hpp"
 
 namespace shapevo::graph {
 
@@ -15,7 +17,8 @@ constexpr std::uint32_t kUnranked = std::numeric_limits<std::uint32_t>::max();
 
 Matcher::Matcher(const GraphGrammar& grammar, const HostGraph& graph, const std::vector<Value>& globals, DrawSource& draws,
                  const MatchBudget& budget, bool fixGeometricOrdering)
-    : grammar_(grammar), graph_(graph), draws_(draws), budget_(budget), fixGeometricOrdering_(fixGeometricOrdering) {
+    : grammar_(grammar), graph_(graph), draws_(draws), budget_(budget), fixGeometricOrdering_(fixGeometricOrdering), keyed_(draws.keyed()) {
+    clocks_.assign(grammar.productions.size(), 0.0);
     conditionFrame_.resize(2 + globals.size());
     std::copy(globals.begin(), globals.end(), conditionFrame_.begin() + 2);
     productions_.resize(grammar.productions.size());
@@ -145,6 +148,7 @@ bool Matcher::vertexFits(std::size_t p, int mother, ElementId host) {
     for (ElementId b : boundVertices_)
         if (b == host) return false;
     const MotherVertex& m = grammar_.productions[p].motherVertices[std::size_t(mother)];
+    if (keyed_ && !m.conditions.empty()) enterConditionContext(p, v.key, v.seed, v.birth);
     return conditionsHold(m.conditions, v.attrs, ElementRef{&v.attrs, true, v.position}, grammar_.productions[p]);
 }
 
@@ -164,6 +168,7 @@ bool Matcher::edgeFits(std::size_t p, int mother, ElementId host, std::uint8_t s
         const ElementId bound = boundVertices_[std::size_t(u)];
         if (bound != kNoVertex && bound != hv) return false;
     }
+    if (keyed_ && !m.conditions.empty()) enterConditionContext(p, h.key, h.seed, h.birth);
     return conditionsHold(m.conditions, h.attrs, ElementRef{&h.attrs, false, {}}, grammar_.productions[p]);
 }
 
@@ -237,6 +242,7 @@ void Matcher::record(std::size_t p, std::uint32_t rank) {
     std::copy(boundVertices_.begin(), boundVertices_.end(), images);
     std::copy(boundEdges_.begin(), boundEdges_.end(), images + pp.vertexCount);
     std::copy(boundSwapped_.begin(), boundSwapped_.end(), pp.swapped.begin() + std::ptrdiff_t(std::size_t(slot) * pp.edgeCount));
+    if (keyed_) keyMatch(p, s);
     s.positionInAll = std::uint32_t(pp.all.size());
     pp.all.push_back(slot);
     std::vector<std::uint32_t>& bucket = pp.buckets[generations];
@@ -397,6 +403,45 @@ void Matcher::update(const std::vector<ElementId>& changedVertices, const std::v
         if (graph_.edge(e).alive && edgeRank_[e] != kUnranked) searchFrom(false, e, edgeRank_[e]);
     for (ElementId v : changedVertices) vertexRank_[v] = kUnranked;
     for (ElementId e : changedEdges) edgeRank_[e] = kUnranked;
+}
+
+void Matcher::enterConditionContext(std::size_t p, std::uint64_t elementKey, std::uint64_t seed, std::uint32_t birth) {
+    draws_.enterContext(mixKey(mixKey(key_tag::kCondition, elementKey), p), DrawContext{seed, birth});
+}
+
+void Matcher::keyMatch(std::size_t p, Stored& s) {
+    // The key names the production, what each mother element maps to and how each edge lies.
+    // The match belongs to its youngest element's event (the first of the youngest on ties).
+    std::uint64_t key = mixKey(key_tag::kMatch, p);
+    std::uint64_t seed = 0;
+    std::uint32_t birth = 0;
+    bool first = true;
+    auto take = [&](std::uint64_t elementKey, std::uint64_t elementSeed, std::uint32_t elementBirth) {
+        key = mixKey(key, elementKey);
+        if (first || elementBirth > birth) seed = elementSeed, birth = elementBirth;
+        first = false;
+    };
+    for (ElementId v : boundVertices_) take(graph_.vertex(v).key, graph_.vertex(v).seed, graph_.vertex(v).birth);
+    for (std::size_t j = 0; j < boundEdges_.size(); ++j) {
+        const HostEdge& e = graph_.edge(boundEdges_[j]);
+        take(e.key, e.seed, e.birth);
+        key = mixKey(key, boundSwapped_[j]);
+    }
+    if (first) seed = draws_.rootSeed();  // an empty mother graph
+    s.key = key;
+    const std::uint64_t w = draws_.word(mixKey(mixKey(key, firings(key)), key_tag::kFire), DrawContext{seed, birth});
+    s.level = clocks_[p] - std::log1p(-wordUniform(w));  // an exponential draw of mean 1
+}
+
+std::uint32_t Matcher::earliest(std::size_t p) const {
+    const PerProduction& pp = productions_[p];
+    std::uint32_t best = pp.all.front();
+    for (std::uint32_t slot : pp.all) {
+        const Stored& a = pp.stored[slot];
+        const Stored& b = pp.stored[best];
+        if (a.level < b.level || (a.level == b.level && (a.key < b.key || (a.key == b.key && slot < best)))) best = slot;
+    }
+    return best;
 }
 
 MatchView Matcher::view(std::size_t p, std::uint32_t slot) const {

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "graph/draw_source.hpp"
@@ -50,6 +51,28 @@ public:
     std::size_t oldestCount(std::size_t production) const;
     MatchView oldest(std::size_t production, std::size_t i) const;
 
+    // --- keyed derivations (the DrawSource is keyed): firing levels -------------------------
+    // Every match gets a key (lineage_key.hpp: production, images' keys, swaps, earlier firings of
+    // the same match) and, when found, a firing level on its production's clock: the clock then
+    // plus an exponential draw of its own. The match with the lowest level fires first; derive.hpp
+    // advances the clocks so that each step picks uniformly among the applicable productions and
+    // then uniformly among a production's matches, as the sequential derivation does.
+    /// The live slot of `production` with the lowest level (ties: the lower key, then slot).
+    std::uint32_t earliest(std::size_t production) const;
+    MatchView slotView(std::size_t production, std::uint32_t slot) const { return view(production, slot); }
+    double level(std::size_t production, std::uint32_t slot) const { return productions_[production].stored[slot].level; }
+    std::uint64_t key(std::size_t production, std::uint32_t slot) const { return productions_[production].stored[slot].key; }
+    /// The slots with the lowest generation sum.
+    const std::vector<std::uint32_t>& oldestSlots(std::size_t production) const { return productions_[production].buckets.begin()->second; }
+    double clock(std::size_t production) const { return clocks_[production]; }
+    void advanceClock(std::size_t production, double by) { clocks_[production] += by; }
+    /// How many times the match of key `matchKey` fired so far; fired() counts one more.
+    std::uint32_t firings(std::uint64_t matchKey) const {
+        const auto it = fired_.find(matchKey);
+        return it == fired_.end() ? 0 : it->second;
+    }
+    void fired(std::uint64_t matchKey) { ++fired_[matchKey]; }
+
 private:
     /// One binding of a search plan (from an anchor, the rest of the mother graph).
     struct Step {
@@ -63,6 +86,8 @@ private:
         std::uint32_t serial = 0;
         std::int64_t generationSum = 0;
         std::uint32_t positionInAll = 0, positionInBucket = 0;
+        std::uint64_t key = 0;  // keyed derivations: the match's key and firing level
+        double level = 0;
     };
     struct PerProduction {
         std::size_t vertexCount = 0, edgeCount = 0;
@@ -90,6 +115,10 @@ private:
     bool vertexFits(std::size_t p, int mother, ElementId host);
     bool edgeFits(std::size_t p, int mother, ElementId host, std::uint8_t swapped);
     bool conditionsHold(const std::vector<MatchCondition>& conditions, const AttrMap& attrs, ElementRef element, const Production& production);
+    /// Keyed: condition draws of production `p` on an element belong to the element.
+    void enterConditionContext(std::size_t p, std::uint64_t elementKey, std::uint64_t seed, std::uint32_t birth);
+    /// Keyed: the key and firing level of the match being recorded.
+    void keyMatch(std::size_t p, Stored& s);
     bool geometricOrderHolds(std::size_t p) const;
     void record(std::size_t p, std::uint32_t rank);
     void remove(std::size_t p, std::uint32_t slot);
@@ -111,6 +140,9 @@ private:
     std::vector<ElementId> boundVertices_, boundEdges_;
     std::vector<std::uint8_t> boundSwapped_;
     std::size_t searchSteps_ = 0;
+    bool keyed_ = false;
+    std::vector<double> clocks_;                            // keyed: per production
+    std::unordered_map<std::uint64_t, std::uint32_t> fired_;  // keyed: firings per match key
     std::uint32_t currentRank_ = 0;  // the rank of the anchor being searched from
 };
 

@@ -5,6 +5,7 @@
 
 #include "base/input_error.hpp"
 #include "graph/auto_position.hpp"
+#include "graph/lineage_key.hpp"
 
 namespace shapevo::graph {
 
@@ -73,7 +74,7 @@ Value Rewriter::evaluate(const CompiledExpression& e, std::vector<Value>& slots,
 }
 
 void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t option, const ElementId* vertexImages,
-                     const ElementId* edgeImages, const std::uint8_t* swapped) {
+                     const ElementId* edgeImages, const std::uint8_t* swapped, std::uint64_t eventKey, const DrawContext& event) {
     const Production& P = grammar_.productions[production];
     const ProductionOption& O = P.options[option];
     OptionFrame& F = frames_[production][option];
@@ -164,6 +165,10 @@ void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t optio
             if (F.readsOld) oldCopies_.push_back(graph.vertex(vertexIds[i]).attrs);
         } else {
             vertexIds[i] = graph.addVertex(autoPositions[i], newAttrs(d.attrs), generation);
+            HostVertex& v = graph.vertex(vertexIds[i]);
+            v.key = daughterKey(eventKey, i, false);
+            v.seed = event.seed;
+            v.birth = event.event;
             changedVertices_.push_back(vertexIds[i]);
         }
     }
@@ -181,6 +186,10 @@ void Rewriter::apply(HostGraph& graph, std::size_t production, std::size_t optio
                 if (ends[k] != kNoVertex) graph.setEnd(e, k ^ s, ends[k]);
         } else {
             edgeIds[i] = graph.addEdge(ends[0], ends[1], newAttrs(d.attrs), generation);
+            HostEdge& e = graph.edge(edgeIds[i]);
+            e.key = daughterKey(eventKey, i, true);
+            e.seed = event.seed;
+            e.birth = event.event;
             changedEdges_.push_back(edgeIds[i]);
         }
     }

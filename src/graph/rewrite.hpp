@@ -19,9 +19,12 @@ public:
     Rewriter(const GraphGrammar& grammar, const std::vector<Value>& globals, DrawSource& draws);
 
     /// Applies option `option` of production `production` at the match (per mother vertex and
-    /// edge). Throws InputError naming the place of an expression that fails.
+    /// edge). The elements it creates take their lineage from the event: key
+    /// daughterKey(eventKey, index), `event`'s seed and step. Throws InputError naming the place of
+    /// an expression that fails.
     void apply(HostGraph& graph, std::size_t production, std::size_t option, const ElementId* vertexImages,
-               const ElementId* edgeImages, const std::uint8_t* swapped);
+               const ElementId* edgeImages, const std::uint8_t* swapped, std::uint64_t eventKey = 0,
+               const DrawContext& event = {});
 
     /// What the last apply changed (kept, new, deleted, re-attached, left dangling).
     const std::vector<ElementId>& changedVertices() const { return changedVertices_; }
