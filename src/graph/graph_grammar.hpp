@@ -131,6 +131,7 @@ struct SvgFilter {
 
 struct GraphGrammar {
     std::string path;
+    std::string source;  // the file's text (a run stores it; a genome file hashes it)
     AttrNames names;
     struct Host {
         std::string name;

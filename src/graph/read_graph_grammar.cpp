@@ -127,6 +127,7 @@ namespace {
 GraphGrammar grammarOf(const YamlNode& root, const std::string& path, std::string_view source) {
     using namespace reading;
     GraphGrammar g;
+    g.source = std::string(source);
     g.path = path;
     g.keys.generation = g.names.intern(".generation");
     g.keys.directed = g.names.intern(".directed");
