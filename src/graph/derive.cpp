@@ -122,14 +122,14 @@ StepChoice chooseKeyed(const GraphGrammar& grammar, const HostGraph& graph, cons
     const std::uint64_t rootSeed = draws.rootSeed();
     std::uint64_t matchKey = matcher.key(c.production, slot);
     DrawContext parent = parentOf(graph, P, matcher.slotView(c.production, slot), rootSeed);
-    const std::size_t filterOption = optionOf(P, draws.word(mixKey(matchKey, key_tag::kFilterOption), parent));
+    const std::size_t filterOption = optionOf(P, draws.word(mixKey(matchKey, key_tag::kFilterOption), parent, DrawPurpose::Option));
     if (P.options[filterOption].oldest) {
         std::uint64_t best = 0;
         bool first = true;
         for (std::uint32_t s : matcher.oldestSlots(c.production)) {
             const std::uint64_t key = matcher.key(c.production, s);
             const DrawContext at = parentOf(graph, P, matcher.slotView(c.production, s), rootSeed);
-            const std::uint64_t w = draws.word(mixKey(key, key_tag::kOldest), at);
+            const std::uint64_t w = draws.word(mixKey(key, key_tag::kOldest), at, DrawPurpose::Match);
             if (first || w < best || (w == best && key < matchKey)) best = w, slot = s, matchKey = key, parent = at;
             first = false;
         }
@@ -139,7 +139,7 @@ StepChoice chooseKeyed(const GraphGrammar& grammar, const HostGraph& graph, cons
     matcher.fired(matchKey);
     c.event.event = event;
     c.event.seed = draws.eventSeed(c.eventKey, mixKey(c.eventKey, key_tag::kSalt), parent.seed, event, parent.event);
-    c.option = limits.drawOptionOnce ? filterOption : optionOf(P, draws.word(mixKey(c.eventKey, key_tag::kApplyOption), c.event));
+    c.option = limits.drawOptionOnce ? filterOption : optionOf(P, draws.word(mixKey(c.eventKey, key_tag::kApplyOption), c.event, DrawPurpose::Option));
     draws.enterContext(mixKey(c.eventKey, key_tag::kExpressions), c.event);
     return c;
 }

@@ -34,9 +34,9 @@ public:
     virtual bool keyed() const { return false; }
     /// The seed of the start (the host graph, the global and run variables).
     virtual std::uint64_t rootSeed() { return 0; }
-    /// The 64 random bits of decision `key`, made in `context`.
-    virtual std::uint64_t word(std::uint64_t key, const DrawContext& context) {
-        (void)key, (void)context;
+    /// The 64 random bits of decision `key`, made in `context`, about `purpose`.
+    virtual std::uint64_t word(std::uint64_t key, const DrawContext& context, DrawPurpose purpose) {
+        (void)key, (void)context, (void)purpose;
         return 0;
     }
     /// The seed of event `event` whose salt key is `saltKey`, whose lineage parent has seed

@@ -26,8 +26,8 @@ KeyedDraws::KeyedDraws(std::uint64_t seed, std::span<const std::uint32_t> overri
     }
 }
 
-std::uint64_t KeyedDraws::word(std::uint64_t key, const DrawContext& context) {
-    if (record_) record_->decisions.push_back(DecisionRecord::Decision{key, context.event});
+std::uint64_t KeyedDraws::word(std::uint64_t key, const DrawContext& context, DrawPurpose purpose) {
+    if (record_) record_->decisions.push_back(DecisionRecord::Decision{key, context.event, purpose});
     const std::ptrdiff_t i = findOverride(overrides_, key);
     return i >= 0 ? overrideWord(overrides_, std::size_t(i)) : defaultWord(context.seed, key);
 }
@@ -43,6 +43,6 @@ std::uint64_t KeyedDraws::eventSeed(std::uint64_t eventKey, std::uint64_t saltKe
     return seed;
 }
 
-std::uint64_t KeyedDraws::next() { return word(mixKey(contextKey_, counter_++), context_); }
+std::uint64_t KeyedDraws::next(DrawPurpose purpose) { return word(mixKey(contextKey_, counter_++), context_, purpose); }
 
 }  // namespace shapevo::graph

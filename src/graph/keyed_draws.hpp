@@ -26,6 +26,7 @@ struct DecisionRecord {
     struct Decision {
         std::uint64_t key = 0;
         std::uint32_t event = 0;
+        DrawPurpose purpose = DrawPurpose::Match;  ///< Match: a firing level or a pick among the oldest
     };
     std::vector<Event> events;        ///< index = event (step; 0 = the start)
     std::vector<Decision> decisions;  ///< in the order they were made (a key may repeat)
@@ -50,11 +51,11 @@ public:
     /// `overrides` must outlive the derivation; `record` (may be null) is cleared and filled.
     KeyedDraws(std::uint64_t seed, std::span<const std::uint32_t> overrides, DecisionRecord* record = nullptr);
 
-    double uniform(DrawPurpose) override { return wordUniform(next()); }
-    std::uint64_t below(std::uint64_t n, DrawPurpose) override { return wordBelow(next(), n); }
+    double uniform(DrawPurpose purpose) override { return wordUniform(next(purpose)); }
+    std::uint64_t below(std::uint64_t n, DrawPurpose purpose) override { return wordBelow(next(purpose), n); }
     bool keyed() const override { return true; }
     std::uint64_t rootSeed() override { return seed_; }
-    std::uint64_t word(std::uint64_t key, const DrawContext& context) override;
+    std::uint64_t word(std::uint64_t key, const DrawContext& context, DrawPurpose purpose) override;
     std::uint64_t eventSeed(std::uint64_t eventKey, std::uint64_t saltKey, std::uint64_t inherited, std::uint32_t event,
                             std::uint32_t parentEvent) override;
     void enterContext(std::uint64_t key, const DrawContext& context) override {
@@ -64,7 +65,7 @@ public:
     }
 
 private:
-    std::uint64_t next();
+    std::uint64_t next(DrawPurpose purpose);
 
     std::uint64_t seed_;
     std::span<const std::uint32_t> overrides_;

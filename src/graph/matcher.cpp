@@ -429,7 +429,7 @@ void Matcher::keyMatch(std::size_t p, Stored& s) {
     }
     if (first) seed = draws_.rootSeed();  // an empty mother graph
     s.key = key;
-    const std::uint64_t w = draws_.word(mixKey(mixKey(key, firings(key)), key_tag::kFire), DrawContext{seed, birth});
+    const std::uint64_t w = draws_.word(mixKey(mixKey(key, firings(key)), key_tag::kFire), DrawContext{seed, birth}, DrawPurpose::Match);
     s.level = clocks_[p] - std::log1p(-wordUniform(w));  // an exponential draw of mean 1
 }
 

@@ -30,8 +30,15 @@ public:
         if (c.genes >= limits_.maxGenes) return false;
         const DecisionRecord& r = recordOf(c, first_);
         if (r.decisions.empty()) return false;
+        // Most firing levels only reorder steps that all happen anyway: three grows in four
+        // change an option or an expression's draw, where the derivation made any.
+        choices_.clear();
+        for (std::uint32_t i = 0; i < r.decisions.size(); ++i)
+            if (r.decisions[i].purpose != graph::DrawPurpose::Match) choices_.push_back(i);
+        const bool drawn = !choices_.empty() && rng.uniform() < 0.75;
         for (int attempt = 0; attempt < 8; ++attempt) {
-            const std::uint64_t key = r.decisions[rng.below(std::uint32_t(r.decisions.size()))].key;
+            const std::uint32_t pick = drawn ? choices_[rng.below(std::uint32_t(choices_.size()))] : rng.below(std::uint32_t(r.decisions.size()));
+            const std::uint64_t key = r.decisions[pick].key;
             if (graph::findOverride(graphOverrides(c), key) >= 0) continue;
             setGraphOverride(c, key, rng.next());
             return true;
@@ -149,6 +156,7 @@ private:
     DecisionRecord first_, second_;
     std::vector<std::uint64_t> keysA_, keysB_;
     std::vector<char> below_;
+    std::vector<std::uint32_t> choices_;
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // by a key naming what it acts on (graph/lineage_key.hpp), so one override changes only the
 // descendants of what its decision acts on. Operators:
 //   grow    an override for a decision the parent's derivation made and no override names yet
+//           (an option or an expression's draw three times in four, where there is one)
 //   cut     drop an override (the decision goes back to its seed's value)
 //   alter   redraw an override's word
 //   nudge   move an override's value a small step (a fraction of [0, 1) drawn log-uniformly in
