@@ -92,10 +92,14 @@ struct PieceBuilder {
             add(p, n1x, n1y, h);
             add(p, n2x, n2y, h);
         } else {
-            ConvexPiece& p = begin(o, {o, c1, c2});
+            ConvexPiece& p = begin(o, {o, c1, c2, {o.x - h, o.y - h}, {o.x + h, o.y + h}});
             add(p, -d1.ux, -d1.uy, 0);
             add(p, d2.ux, d2.uy, 0);
             add(p, n1x + n2x, n1y + n2y, h * (1 + nn));
+            add(p, 1, 0, h);
+            add(p, -1, 0, h);
+            add(p, 0, 1, h);
+            add(p, 0, -1, h);
         }
     }
 };

@@ -13,6 +13,9 @@
 //       miter when limit*limit * (1 + (u1.x*u2.x + u1.y*u2.y)) / 2 >= 1 (miter length / width <=
 //       limit): n1.v <= h and n2.v <= h (the quad vertex, outer corners, miter tip);
 //       else bevel: (n1+n2).v <= h * (1 + (n1.x*n2.x + n1.y*n2.y)) (the triangle vertex, corners)
+//       and |v.x| <= h and |v.y| <= h (true of the triangle anyway; at a turn of nearly 180
+//       degrees rounding can make the chord's bound 0 while n1+n2 is not, and the box keeps the
+//       piece the sliver it is instead of a half-plane)
 //   a subpath whose points all coincide, drawn (not a lone M): round cap -> its disc, square cap
 //     -> |v.x| <= h and |v.y| <= h, butt -> nothing.
 // Which pieces: consecutive equal points are merged (a closed subpath's last points equal to its
@@ -36,7 +39,7 @@ struct HalfPlane {
 /// The points meeting all its half-planes. `bounds` is its box (user units), for rows only.
 struct ConvexPiece {
     Vec2 origin;
-    HalfPlane planes[4];
+    HalfPlane planes[7];
     int count = 0;
     Vec2 boundsMin, boundsMax;
 };
