@@ -224,6 +224,11 @@ TEST(NoAllocation, RasterizingGraphGrammarDrawingsAllocatesNothingOnceWarm) {
             drawings.push_back(graph::drawingOf(r.graph, g.names, file));
         }
     }
+    graph::Shape path;  // a filled and stroked path of curves too (the grammars draw none)
+    path.kind = graph::ShapeKind::Path;
+    path.attributes = {{"d", "M0 0 C50 80 100 -20 150 60 Q80 120 20 90 Z M30 30 L60 40 L40 70 Z"},
+                       {"fill", "red"}, {"stroke", "black"}, {"stroke-linejoin", "round"}, {"stroke-width", "3"}};
+    drawings.back().shapes.push_back(path);
     const graph::RasterFrame frame = graph::frameFitting(graph::canvasOf(drawings[0], 0.5), 256, 256);
     graph::DrawingRaster raster;
     for (int warm = 0; warm < 2; ++warm)

@@ -419,6 +419,41 @@ TEST(DrawingRaster, DrawingDefaultsAndHiddenShapesEqualBruteForce) {
     expectExact(compareRandom(6, [](Maker& m) { return m.defaultsOrHidden(); }));
 }
 
+// Boundaries through pixel centres: paths and circles on the half-integer grid of a 1-pixel-per-
+// unit frame, with whole-number half widths, so that a centre lies exactly on a stroke's edge, a
+// cap, a disc's rim, a fill edge or a vertex's row in nearly every drawing: the inclusive and
+// half-open choices of the rule must be made alike.
+TEST(DrawingRaster, BoundariesThroughPixelCentresEqualBruteForce) {
+    std::mt19937_64 rng(7);
+    const auto grid = [&] { return Maker::num(double(rng() % 48) + 8.5); };
+    static const char* caps[] = {"butt", "round", "square"};
+    static const char* joins[] = {"miter", "round", "bevel"};
+    DrawingRaster raster;
+    Tally tally;
+    for (int k = 0; k < 1000; ++k) {
+        Drawing d;
+        Shape s;
+        s.kind = ShapeKind::Path;
+        std::string path = "M" + grid() + " " + grid();
+        for (int c = 0, n = 1 + int(rng() % 4); c < n; ++c) path += (rng() % 2 ? " H" : " V") + grid();
+        if (rng() % 2) path += " L" + grid() + " " + grid();
+        if (rng() % 2) path += " Z";
+        s.attributes = {{"d", path}, {"fill", rng() % 2 ? "red" : "none"}, {"fill-rule", rng() % 2 ? "evenodd" : "nonzero"},
+                        {"stroke", "black"}, {"stroke-width", std::to_string(2 * (1 + rng() % 3))},
+                        {"stroke-linecap", caps[rng() % 3]}, {"stroke-linejoin", joins[rng() % 3]}};
+        d.shapes.push_back(s);
+        compare(d, {0, 0, 1, 64, 64}, raster, tally);
+        // A circle at the user origin (exact) seen with pixel centres on whole numbers: rims of
+        // whole-number radii pass through centres (3-4-5 and the axes).
+        Shape c;
+        c.kind = ShapeKind::Circle;
+        c.attributes = {{"r", std::to_string(1 + rng() % 12)}, {"fill", rng() % 2 ? "red" : "none"}, {"stroke", "black"},
+                        {"stroke-width", std::to_string(2 * (rng() % 3))}};
+        compare(Drawing{{c}}, {-32.5, -32.5, 1, 64, 64}, raster, tally);
+    }
+    expectExact(tally);
+}
+
 TEST(DrawingRaster, DerivedTreeAndKochDrawingsEqualBruteForce) {
     DrawingRaster raster;
     Tally tally;
