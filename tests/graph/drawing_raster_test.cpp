@@ -536,3 +536,19 @@ TEST(DrawingRaster, EvenOddLeavesTheHoleOfTwoNestedSquares) {
 }
 
 }  // namespace shapevo::graph
+
+namespace shapevo::graph {
+// The stroke of a circle is closed on both rims: r 5, stroke-width 2 covers distances 4 to 6.
+TEST(DrawingRaster, CircleStrokeIncludesBothRims) {
+    Shape c;
+    c.kind = ShapeKind::Circle;
+    c.attributes = {{"r", "5"}, {"fill", "none"}, {"stroke", "black"}, {"stroke-width", "2"}};
+    DrawingRaster raster;
+    raster.rasterize(Drawing{{c}}, {-32.5, -32.5, 1, 64, 64});  // pixel (32 + a, 32 + b) centred at (a, b)
+    EXPECT_TRUE(raster.covered(32 + 4, 32));
+    EXPECT_TRUE(raster.covered(32 + 6, 32));
+    EXPECT_FALSE(raster.covered(32 + 3, 32));
+    EXPECT_FALSE(raster.covered(32 + 7, 32));
+    EXPECT_TRUE(raster.covered(32 + 3, 32 + 4));  // 3-4-5: on the circle
+}
+}  // namespace shapevo::graph
