@@ -73,8 +73,15 @@ struct Scanner {
 }  // namespace path_data_parts
 
 PathData parsePathData(std::string_view d) {
-    using namespace path_data_parts;
     PathData out;
+    parsePathData(d, out);
+    return out;
+}
+
+void parsePathData(std::string_view d, PathData& out) {
+    using namespace path_data_parts;
+    out.segments.clear();
+    out.complete = true;
     Scanner sc{d};
     Vec2 current, subpathStart, lastControl;
     char previous = 0;  // the previous command (upper case), for T and S reflections
@@ -177,7 +184,6 @@ PathData parsePathData(std::string_view d) {
         out.segments.push_back(seg);
         previous = op;
     }
-    return out;
 }
 
 }  // namespace shapevo::graph

@@ -28,5 +28,7 @@ struct PathData {
 };
 
 PathData parsePathData(std::string_view d);
+/// The same into `out` (cleared first): its capacity is reused, so a warm `out` allocates nothing.
+void parsePathData(std::string_view d, PathData& out);
 
 }  // namespace shapevo::graph

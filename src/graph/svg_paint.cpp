@@ -142,13 +142,24 @@ std::optional<double> parseLength(std::string_view text) {
 
 std::optional<Paint> parsePaint(std::string_view text) {
     using namespace svg_paint_parts;
-    const std::string t = lowered(trimmed(text));
+    // Lower case in a stack buffer (no allocation for any colour text up to 64 characters).
+    const std::string_view given = trimmed(text);
+    char buffer[64];
+    std::string longText;
+    std::string_view t;
+    if (given.size() <= sizeof buffer) {
+        for (std::size_t i = 0; i < given.size(); ++i) buffer[i] = char(std::tolower(static_cast<unsigned char>(given[i])));
+        t = std::string_view(buffer, given.size());
+    } else {
+        longText = lowered(given);
+        t = longText;
+    }
     if (t == "none" || t == "transparent") return Paint{true};
     if (t == "currentcolor") return Paint{};
-    if (!t.empty() && t[0] == '#') return hexPaint(std::string_view(t).substr(1));
-    if (t.starts_with("rgb(") && t.back() == ')') return functionalPaint(std::string_view(t).substr(4, t.size() - 5));
+    if (!t.empty() && t[0] == '#') return hexPaint(t.substr(1));
+    if (t.starts_with("rgb(") && t.back() == ')') return functionalPaint(t.substr(4, t.size() - 5));
     const auto it = std::lower_bound(std::begin(kNamedColours), std::end(kNamedColours), t,
-                                     [](const NamedColour& c, const std::string& n) { return c.name < n; });
+                                     [](const NamedColour& c, std::string_view n) { return c.name < n; });
     if (it != std::end(kNamedColours) && it->name == t) return fromRgb(it->rgb);
     return std::nullopt;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "graph/path_data.hpp"
+#include "graph/shape_style.hpp"
 #include "graph/svg_paint.hpp"
 #include "image/png_writer.hpp"
 
@@ -94,14 +95,10 @@ bool addOutline(cairo_t* cr, const Shape& s) {
     return false;
 }
 
+/// What SVG reads from the shape's attributes (graph/shape_style.hpp) and its dashes.
 struct Look {
-    graph::Paint fill, stroke;
-    double fillOpacity = 1, strokeOpacity = 1, opacity = 1, strokeWidth = 1, miterLimit = 4;
-    cairo_line_cap_t cap = CAIRO_LINE_CAP_BUTT;
-    cairo_line_join_t join = CAIRO_LINE_JOIN_MITER;
-    cairo_fill_rule_t fillRule = CAIRO_FILL_RULE_WINDING;
+    graph::ShapeStyle style;
     std::vector<double> dashes;
-    bool hidden = false;
 };
 
 /// stroke-dasharray: lengths separated by commas or spaces; 'none', a negative length or all
@@ -128,34 +125,23 @@ std::vector<double> parseDashes(const std::string& text) {
     return out;
 }
 
+cairo_line_cap_t cairoCap(graph::LineCap c) {
+    return c == graph::LineCap::Round ? CAIRO_LINE_CAP_ROUND : c == graph::LineCap::Square ? CAIRO_LINE_CAP_SQUARE : CAIRO_LINE_CAP_BUTT;
+}
+cairo_line_join_t cairoJoin(graph::LineJoin j) {
+    return j == graph::LineJoin::Round ? CAIRO_LINE_JOIN_ROUND : j == graph::LineJoin::Bevel ? CAIRO_LINE_JOIN_BEVEL : CAIRO_LINE_JOIN_MITER;
+}
+
 Look lookOf(const Shape& s) {
-    Look l;
-    l.fill = graph::Paint{false, 0, 0, 0};
-    l.stroke = graph::Paint{true};
-    if (auto p = attributeValue<graph::Paint>(s, "fill", graph::parsePaint)) l.fill = *p;
-    if (auto p = attributeValue<graph::Paint>(s, "stroke", graph::parsePaint)) l.stroke = *p;
-    l.fillOpacity = attributeValue<double>(s, "fill-opacity", graph::parseOpacity).value_or(1);
-    l.strokeOpacity = attributeValue<double>(s, "stroke-opacity", graph::parseOpacity).value_or(1);
-    l.opacity = attributeValue<double>(s, "opacity", graph::parseOpacity).value_or(1);
-    if (auto w = attributeValue<double>(s, "stroke-width", graph::parseLength); w && *w >= 0) l.strokeWidth = *w;
-    if (const std::string* m = s.attribute("stroke-miterlimit"))
-        if (auto v = graph::parseLength(*m); v && *v >= 1) l.miterLimit = *v;
-    if (const std::string* c = s.attribute("stroke-linecap"))
-        l.cap = *c == "round" ? CAIRO_LINE_CAP_ROUND : *c == "square" ? CAIRO_LINE_CAP_SQUARE : CAIRO_LINE_CAP_BUTT;
-    if (const std::string* j = s.attribute("stroke-linejoin"))
-        l.join = *j == "round" ? CAIRO_LINE_JOIN_ROUND : *j == "bevel" ? CAIRO_LINE_JOIN_BEVEL : CAIRO_LINE_JOIN_MITER;
-    if (const std::string* r = s.attribute("fill-rule"); r && *r == "evenodd") l.fillRule = CAIRO_FILL_RULE_EVEN_ODD;
+    Look l{graph::styleOf(s), {}};
     if (const std::string* d = s.attribute("stroke-dasharray")) l.dashes = parseDashes(*d);
-    const std::string* display = s.attribute("display");
-    const std::string* visibility = s.attribute("visibility");
-    l.hidden = (display && *display == "none") || (visibility && (*visibility == "hidden" || *visibility == "collapse"));
-    if (s.kind == ShapeKind::Line) l.fill.none = true;  // a line has no inside
     return l;
 }
 
 void paintShape(cairo_t* cr, const Shape& s) {
-    const Look l = lookOf(s);
-    if (l.hidden || l.opacity <= 0) return;
+    const Look look = lookOf(s);
+    const graph::ShapeStyle& l = look.style;
+    if (!l.visible()) return;
     if (s.kind == ShapeKind::Image) {  // a placeholder: the image file is not read
         if (!addOutline(cr, s)) return;
         cairo_set_source_rgba(cr, 0.75, 0.75, 0.75, 0.5 * l.opacity);
@@ -168,18 +154,18 @@ void paintShape(cairo_t* cr, const Shape& s) {
     const bool group = l.opacity < 1;
     if (group) cairo_push_group(cr);
     if (addOutline(cr, s)) {
-        if (!l.fill.none && l.fillOpacity > 0) {
-            cairo_set_fill_rule(cr, l.fillRule);
+        if (l.paintsFill()) {
+            cairo_set_fill_rule(cr, l.fillRule == graph::FillRule::EvenOdd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
             cairo_set_source_rgba(cr, l.fill.r, l.fill.g, l.fill.b, l.fillOpacity);
             cairo_fill_preserve(cr);
         }
-        if (!l.stroke.none && l.strokeOpacity > 0 && l.strokeWidth > 0) {
+        if (l.paintsStroke()) {
             cairo_set_source_rgba(cr, l.stroke.r, l.stroke.g, l.stroke.b, l.strokeOpacity);
             cairo_set_line_width(cr, l.strokeWidth);
-            cairo_set_line_cap(cr, l.cap);
-            cairo_set_line_join(cr, l.join);
+            cairo_set_line_cap(cr, cairoCap(l.cap));
+            cairo_set_line_join(cr, cairoJoin(l.join));
             cairo_set_miter_limit(cr, l.miterLimit);
-            cairo_set_dash(cr, l.dashes.data(), int(l.dashes.size()), 0);
+            cairo_set_dash(cr, look.dashes.data(), int(look.dashes.size()), 0);
             cairo_stroke_preserve(cr);
         }
     }

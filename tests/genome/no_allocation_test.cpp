@@ -11,6 +11,9 @@
 #include "../score/silhouette_test_util.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
+#include "graph/derive.hpp"
+#include "graph/drawing_raster.hpp"
+#include "graph/read_graph_grammar.hpp"
 #include "grammar/front_ends.hpp"
 #include "score/volume/vdb_target_file.hpp"
 #include "score/image/image_scorer.hpp"
@@ -206,6 +209,36 @@ TEST(NoAllocation, SilhouettesOfEveryPrimitiveKindAllocateNothingOnceWarm) {
         EXPECT_EQ(gAllocations.load() - before, 0) << scene.name;
         EXPECT_GT(covered, 0u);
     }
+}
+
+// The raster for scoring graph-grammar drawings (graph/drawing_raster.hpp): derived trees and
+// Koch flakes of every seed, rasterized again and again into one frame.
+TEST(NoAllocation, RasterizingGraphGrammarDrawingsAllocatesNothingOnceWarm) {
+    std::vector<graph::Drawing> drawings;
+    for (const char* name : {"tree.yml", "koch.yml"}) {
+        const std::string file = test::sourcePath(std::string("grammars/graph/") + name);
+        const graph::GraphGrammar g = graph::readGraphGrammar(file);
+        for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+            graph::SeededDraws draws(seed);
+            const graph::DeriveResult r = graph::deriveGraph(g, 0, draws, graph::DeriveLimits{});
+            drawings.push_back(graph::drawingOf(r.graph, g.names, file));
+        }
+    }
+    graph::Shape path;  // a filled and stroked path of curves too (the grammars draw none)
+    path.kind = graph::ShapeKind::Path;
+    path.attributes = {{"d", "M0 0 C50 80 100 -20 150 60 Q80 120 20 90 Z M30 30 L60 40 L40 70 Z"},
+                       {"fill", "red"}, {"stroke", "black"}, {"stroke-linejoin", "round"}, {"stroke-width", "3"}};
+    drawings.back().shapes.push_back(path);
+    const graph::RasterFrame frame = graph::frameFitting(graph::canvasOf(drawings[0], 0.5), 256, 256);
+    graph::DrawingRaster raster;
+    for (int warm = 0; warm < 2; ++warm)
+        for (const graph::Drawing& d : drawings) raster.rasterize(d, frame);
+    const long before = gAllocations.load();
+    std::int64_t covered = 0;
+    for (int round = 0; round < 5; ++round)
+        for (const graph::Drawing& d : drawings) covered += raster.rasterize(d, frame);
+    EXPECT_EQ(gAllocations.load() - before, 0);
+    EXPECT_GT(covered, 0);
 }
 
 }  // namespace
