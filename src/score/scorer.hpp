@@ -79,7 +79,9 @@ public:
     /// A hint that `c` is scored next on this thread: bring what it will read towards the
     /// processor's cache (no result depends on it).
     virtual void prepare(const Chromosome& c) const { (void)c; }
-    virtual const Grammar& grammar() const = 0;
+    /// The derivation-tree grammar a tree scorer derives with (deriveCounted). A scorer of another
+    /// model family (score/image/drawing_scorer.hpp) derives its own way and never calls it.
+    virtual const Grammar& grammar() const { throw std::logic_error("this scorer's model family has no derivation-tree grammar"); }
 
     /// Incremental scoring (score.incremental, score.cache_mb): each workspace made from now on
     /// keeps the rows its primitives drew in a PrimitiveCache of about `bytes` (0: off, every
