@@ -12,6 +12,7 @@
 #include "grammar/front_ends.hpp"
 #include "island/async_control.hpp"
 #include "island/island_meeting.hpp"
+#include "genome/families/tree_family.hpp"
 #include "island/ring_migration.hpp"
 
 namespace shapevo {

@@ -68,6 +68,8 @@ TEST(SearchMethodFamilies, MethodsThatNeedATreeAreRefusedForAFamilyWithoutOne) {
         SearchSettings s;
         s.method = std::string(m.name);
         SCOPED_TRACE(s.method);
+        const bool tree = s.method == "smc" || s.method == "sosmc" || s.method == "rjmcmc";
+        ASSERT_EQ(m.needsTree, tree) << "the table says which methods need a tree";
         if (!m.needsTree) {
             EXPECT_EQ(methodFamilyProblem(s, family), "");
             EXPECT_NE(makeSearchMethod(s, sizes, ga, family, GenomeLimits{10}, 1, "run.toml"), nullptr);
