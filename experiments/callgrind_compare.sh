@@ -8,12 +8,17 @@
 # evaluations included; not the target's loading, whose TBB threads spin a varying number of
 # instructions). Prints one line per case: OLD and NEW instructions and NEW/OLD - 1.
 #
-#   experiments/callgrind_compare.sh OLD_BUILD NEW_BUILD
+#   experiments/callgrind_compare.sh OLD_BUILD NEW_BUILD [CASES]
 # OLD_BUILD and NEW_BUILD are build folders (their bench/ programs are run), e.g. a second build
-# folder of the commit before the change. Needs valgrind.
+# folder of the commit before the change; CASES, a grep -E pattern, picks cases by name. Needs
+# valgrind. incremental-recording counts the GA run that bench_incremental records spaceship's
+# children of generations 11-60 with (SHAPEVO_BENCH_FROM=10), evaluations included; its timed
+# part (scoring the recorded children) calls no search method.
 set -euf  # -f: the function patterns below are not file globs
 old=$1
 new=$2
+pick=${3:-.}
+export SHAPEVO_BENCH_FROM=10 SHAPEVO_BENCH_WARM=5
 cd "$(dirname "$0")/.."
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -25,7 +30,8 @@ search-ga|bench_search_methods|BM_SearchRun/method:1/|1|$step
 search-smc|bench_search_methods|BM_SearchRun/method:2/|1|$step
 search-rjmcmc|bench_search_methods|BM_SearchRun/method:4/|1|$step
 operators|bench_operators|.|200|*BM_*
-derive|bench_derive|.|20|*BM_*"
+derive|bench_derive|.|20|*BM_*
+incremental-recording|bench_incremental|scene:3/incremental:1|1|$step"
 
 instructions() {  # build program filter repetitions functions -> instructions inside those functions
     toggles=""
@@ -38,7 +44,7 @@ instructions() {  # build program filter repetitions functions -> instructions i
 }
 
 echo "case old new change"
-echo "$cases" | while IFS='|' read -r name program filter reps functions; do
+echo "$cases" | grep -E "^($pick)[|]" | while IFS='|' read -r name program filter reps functions; do
     a=$(instructions "$old" "$program" "$filter" "$reps" "$functions")
     b=$(instructions "$new" "$program" "$filter" "$reps" "$functions")
     awk -v n="$name" -v a="$a" -v b="$b" 'BEGIN { printf "%s %.0f %.0f %+.3f%%\n", n, a, b, (b / a - 1) * 100 }'
