@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "score/volume/volume_scorer.hpp"
@@ -22,6 +23,7 @@ using namespace shapevo;
 void BM_GaRun(benchmark::State& state) {
     const RunSettings s = loadConfig(SHAPEVO_SOURCE_DIR "/configs/spaceship.toml");
     const Grammar grammar = loadGrammar(s.grammarPath);
+    const TreeFamily family(grammar);
     const auto& volume = static_cast<const VolumeTargetSettings&>(*s.target);  // spaceship.toml is a volume config
     const VolumeTarget target = loadVolumeTarget(volume.targets, volume.grid ? &*volume.grid : nullptr);
     const VolumeScorer scorer(grammar, target, s.fitness);
@@ -29,7 +31,7 @@ void BM_GaRun(benchmark::State& state) {
     std::uint64_t evaluations = 0;
     double best = 0;
     for (auto _ : state) {
-        GeneticAlgorithm ga(grammar, s.population, s.ga, s.limits, s.seed);
+        GeneticAlgorithm ga(family, s.population, s.ga, s.limits, s.seed);
         ga.initialize(evaluator);
         while (ga.generation() < s.population.generations) ga.step(evaluator);
         evaluations += ga.evaluations();

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "bench_main.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
@@ -88,7 +89,9 @@ Recording& recording(int scene) {
     RunSettings on = r.settings;
     on.incremental.enabled = true;
     r.incremental = Scene::load(on, *r.grammar);
-    auto method = makeSearchMethod(r.settings.search, r.settings.population, r.settings.ga, *r.grammar, r.settings.limits, r.settings.seed);
+    const TreeFamily family(*r.grammar);
+    auto method = makeSearchMethod(r.settings.search, r.settings.population, r.settings.ga, family, r.settings.limits,
+                                   r.settings.seed, r.settings.configPath);
     Evaluator evaluator(r.incremental->scorer(), 1);
     method->initialize(evaluator);
     const std::uint32_t from = fromGeneration();

@@ -15,6 +15,7 @@
 
 #include <cstdio>
 
+#include "genome/families/tree_family.hpp"
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
 #include "island/async_control.hpp"
@@ -67,7 +68,8 @@ void BM_SyncMigration(benchmark::State& state) {
     MigrationSettings m;
     m.interval = 1;
     m.count = 5;
-    RingMigration migration(*gMpi, m, g, limits);
+    const TreeFamily family(g);
+    RingMigration migration(*gMpi, m, family, limits);
     MPI_Barrier(MPI_COMM_WORLD);
     std::uint32_t generation = 0;
     for (auto _ : state) migration.afterGeneration(pop, ++generation, pop.size());

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "score/volume/volume_kind.hpp"
@@ -28,6 +29,7 @@ void BM_SearchRun(benchmark::State& state) {
     s.search.rjmcmc.delayedRejection = i == methods.size();
     state.SetLabel(std::string(s.search.method) + (s.search.rjmcmc.delayedRejection ? " +DR" : ""));
     const Grammar grammar = loadGrammar(s.grammarPath);
+    const TreeFamily family(grammar);
     const auto& volume = static_cast<const VolumeTargetSettings&>(*s.target);  // spaceship.toml is a volume config
     const VolumeTarget target = loadVolumeTarget(volume.targets, volume.grid ? &*volume.grid : nullptr);
     const VolumeScorer scorer(grammar, target, s.fitness);
@@ -35,7 +37,7 @@ void BM_SearchRun(benchmark::State& state) {
     std::uint64_t evaluations = 0;
     double best = 0;
     for (auto _ : state) {
-        auto method = makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, s.seed);
+        auto method = makeSearchMethod(s.search, s.population, s.ga, family, s.limits, s.seed, s.configPath);
         method->initialize(evaluator);
         while (method->generation() < s.population.generations) method->step(evaluator);
         evaluations += method->evaluations();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "test_support.hpp"
 
@@ -14,10 +15,11 @@ namespace shapevo::test {
 /// Islands of a checkpoint must match: chromosomes, fitness bits, RNG, curve (but seconds).
 inline void expectSameIslands(const std::string& a, const std::string& b, int ranks) {
     const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
+    const TreeFamily family(g);
     const GenomeLimits limits{100};
     for (int r = 0; r < ranks; ++r) {
-        const IslandState x = readIslandFile(a + "/" + islandFileName(r), g, limits);
-        const IslandState y = readIslandFile(b + "/" + islandFileName(r), g, limits);
+        const IslandState x = readIslandFile(a + "/" + islandFileName(r), family, limits);
+        const IslandState y = readIslandFile(b + "/" + islandFileName(r), family, limits);
         EXPECT_EQ(x.generation, y.generation);
         EXPECT_EQ(x.evaluations, y.evaluations);
         EXPECT_EQ(x.rng, y.rng);

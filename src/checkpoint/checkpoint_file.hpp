@@ -13,6 +13,7 @@
 
 #include "checkpoint/island_state.hpp"
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 #include "grammar/attr_overrides.hpp"
 
 namespace shapevo {
@@ -30,9 +31,9 @@ inline constexpr std::uint32_t kOldestReadableSchemaVersion = 2;
 /// std::invalid_argument for a state that could not be read back (fitness count differs from
 /// the population size, non-finite fitness, curve evaluations above 2^53).
 void writeIslandFile(const std::string& path, const IslandState& s);
-/// Read an island file; checks every dataset's stored checksum and every chromosome against the
-/// grammar. Throws InputError naming the file and the dataset on any problem.
-IslandState readIslandFile(const std::string& path, const Grammar& g, const GenomeLimits& limits);
+/// Read an island file; checks every dataset's stored checksum and every chromosome with the
+/// model family's check(). Throws InputError naming the file and the dataset on any problem.
+IslandState readIslandFile(const std::string& path, const GenomeFamily& family, const GenomeLimits& limits);
 
 /// Write run.h5, flushed and fsynced. schema_version is always kCheckpointSchemaVersion (the
 /// layout this code writes), whatever m.schemaVersion says. Throws std::runtime_error on I/O

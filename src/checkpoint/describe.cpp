@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
@@ -48,6 +49,7 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
     // The checkpoint carries its own grammar; chromosomes are checked against it. The genome
     // length limit is a run setting, not stored here, so any length is accepted for display.
     const Grammar grammar = parseGrammar(m.grammarText, m.grammarPath, attrs);
+    const TreeFamily family(grammar);
     const GenomeLimits anyLength{UINT32_MAX};
 
     std::ostringstream out;
@@ -74,7 +76,7 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
     out << "  island  individuals         best         mean      genes  curve rows  arriving   file size\n";
     for (int r = 0; r < m.ranks; ++r) {
         const std::string path = (fs::path(folder) / islandFileName(r)).string();
-        const IslandState s = readIslandFile(path, grammar, anyLength);
+        const IslandState s = readIslandFile(path, family, anyLength);
         if (s.rank != r) throw InputError(path, "/@rank", "says rank " + std::to_string(s.rank) + ", expected " + std::to_string(r));
         std::uint64_t genes = 0;
         double sum = 0;

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "base/little_endian.hpp"
-#include "genome/validate.hpp"
+#include "genome/genome_family.hpp"
 #include "base/input_error.hpp"
 
 namespace shapevo {
@@ -129,9 +129,9 @@ struct PopulationView {
 };
 
 /// Decode and validate `individuals` individuals (shapes, offsets, values, then every chromosome
-/// as a derivation of the grammar). Throws InputError naming the dataset.
-Population decodePopulation(const PopulationView& v, std::uint64_t individuals, const Grammar& g, const GenomeLimits& limits,
-                            const std::string& path) {
+/// as a genome of the family: its check()). Throws InputError naming the dataset.
+Population decodePopulation(const PopulationView& v, std::uint64_t individuals, const GenomeFamily& family,
+                            const GenomeLimits& limits, const std::string& path) {
     // 1. Shapes, all against the count, before anything is allocated.
     const std::size_t offsets = elements(v.offsets, 8, path, v.offsetsName, "u64");
     if (offsets == 0 || offsets - 1 != individuals)
@@ -166,7 +166,7 @@ Population decodePopulation(const PopulationView& v, std::uint64_t individuals, 
                                                          ", over the limit of " + std::to_string(limits.maxGenes));
     }
 
-    // 4. Build, validating every chromosome as a derivation of the grammar.
+    // 4. Build, validating every chromosome as a genome of the family (a tree: a derivation of the grammar).
     Population pop;
     pop.individuals.resize(n);
     pop.fitness.resize(n);
@@ -176,7 +176,7 @@ Population decodePopulation(const PopulationView& v, std::uint64_t individuals, 
         c.words.resize(std::size_t(offset(i + 1) - offset(i)));
         for (std::size_t w = 0; w < c.words.size(); ++w)
             c.words[w] = le::load<std::uint32_t>(v.genes.data() + 4 * (std::size_t(offset(i)) + w));
-        const std::string problem = validateChromosome(g, c, limits);
+        const std::string problem = family.check(c, limits);
         if (!problem.empty()) throw InputError(path, v.genesName, "individual " + std::to_string(i) + ": " + problem);
         pop.fitness[i] = le::load<double>(v.fitness.data() + 8 * i);
     }
@@ -185,7 +185,7 @@ Population decodePopulation(const PopulationView& v, std::uint64_t individuals, 
 
 }  // namespace
 
-IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
+IslandState decodeIsland(const IslandBytesView& v, const GenomeFamily& family, const GenomeLimits& limits,
                          const std::string& path) {
     expectElements(v.rng, 8, 4, path, kRng, "u64", "the xoshiro256** state");
     IslandState s;
@@ -193,13 +193,13 @@ IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const Genom
     s.generation = v.generation;
     s.evaluations = v.evaluations;
     s.population = decodePopulation({v.genes, v.offsets, v.geneCounts, v.fitness, kGenes, kOffsets, kGeneCounts, kFitness},
-                                    v.individuals, g, limits, path);
+                                    v.individuals, family, limits, path);
     const bool arrivals = !(v.arrivalGenes.empty() && v.arrivalOffsets.empty() && v.arrivalGeneCounts.empty() &&
                             v.arrivalFitness.empty());
     if (arrivals)  // as many as the offsets say: each is validated like the population
         s.arrivals = decodePopulation({v.arrivalGenes, v.arrivalOffsets, v.arrivalGeneCounts, v.arrivalFitness, kArrivalGenes,
                                        kArrivalOffsets, kArrivalGeneCounts, kArrivalFitness},
-                                      v.arrivalOffsets.size() / 8 == 0 ? 0 : v.arrivalOffsets.size() / 8 - 1, g, limits, path);
+                                      v.arrivalOffsets.size() / 8 == 0 ? 0 : v.arrivalOffsets.size() / 8 - 1, family, limits, path);
     for (std::size_t k = 0; k < 4; ++k) s.rng[k] = le::load<std::uint64_t>(v.rng.data() + 8 * k);
     s.curve = decodeCurve(v.curve, path, kCurve, v.curveWidth);
     return s;

@@ -1,6 +1,6 @@
 // Island codec: an IslandState as the raw little-endian bytes of its datasets, and back.
 // The decoder is where an island's content is validated (shapes, offsets, every chromosome
-// against the grammar, finite fitness, representable curve values); island_file.cpp only moves
+// by its model family's check(), finite fitness, representable curve values); island_file.cpp only moves
 // these bytes between memory and HDF5 and checks their checksums. Keeping the decoder free of
 // HDF5 lets the fuzzer (tests/fuzz/fuzz_checkpoint_reader.cpp) feed it arbitrary bytes directly.
 #pragma once
@@ -11,6 +11,7 @@
 
 #include "checkpoint/island_state.hpp"
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 
 namespace shapevo {
 
@@ -72,8 +73,9 @@ struct IslandBytes {
 /// so such a bug shows when the checkpoint is written, not when a run is resumed.
 IslandBytes encodeIsland(const IslandState& s);
 
-/// Decode and validate. Throws InputError(path, dataset name, what is wrong).
-IslandState decodeIsland(const IslandBytesView& v, const Grammar& g, const GenomeLimits& limits,
+/// Decode and validate, every chromosome with family.check(). Throws InputError(path, dataset
+/// name, what is wrong).
+IslandState decodeIsland(const IslandBytesView& v, const GenomeFamily& family, const GenomeLimits& limits,
                          const std::string& path);
 
 /// A curve as rows of 7 little-endian f64 (generation, seconds, evaluations, best, mean, std, iou).

@@ -80,7 +80,7 @@ void writeIslandFile(const std::string& path, const IslandState& s) {
     w.finish();
 }
 
-IslandState readIslandFile(const std::string& path, const Grammar& g, const GenomeLimits& limits) {
+IslandState readIslandFile(const std::string& path, const GenomeFamily& family, const GenomeLimits& limits) {
     using namespace island_layout;
     const h5::H5Reader r(path, kOldestReadableSchemaVersion, kCheckpointSchemaVersion);
     const bool schema2 = r.schema() == 2;  // its curve has no iou column
@@ -105,7 +105,7 @@ IslandState readIslandFile(const std::string& path, const Grammar& g, const Geno
     const char* columns = schema2 ? kCurveColumnsSchema2 : kCurveColumns;
     if (r.string(kCurve, "columns") != columns)
         throw InputError(path, std::string(kCurve) + "@columns", std::string("expected \"") + columns + "\"");
-    IslandState s = decodeIsland(b.view(), g, limits, path);
+    IslandState s = decodeIsland(b.view(), family, limits, path);
     s.runId = r.string("/", "run_id");
     s.seed = r.u64("/", "seed");
     s.ranks = r.i32("/", "ranks");

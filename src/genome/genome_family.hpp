@@ -44,7 +44,9 @@ public:
     virtual bool crossover(const Chromosome& a, const Chromosome& b, Chromosome& childA, Chromosome& childB, Rng& rng,
                            int retries) = 0;
     /// y = x with one part drawn anew below a point picked uniformly (tree: regrow below a
-    /// non-terminal gene). False, without drawing from `rng`, if `x` has no such point.
+    /// non-terminal gene). False, without drawing from `rng`, if `x` has no such point; false
+    /// after drawing if the result would pass the limits. Callers tell the two apart by the Rng's
+    /// state (the hybrid's local move falls back to a nudge or an alter only in the first case).
     virtual bool regrow(const Chromosome& x, Chromosome& y, Rng& rng) = 0;
 };
 

@@ -7,7 +7,6 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "genome/validate.hpp"
 #include "base/atomic_write.hpp"
 #include "base/hash.hpp"
 #include "base/input_error.hpp"
@@ -24,20 +23,21 @@ struct Header {
 static_assert(sizeof(Header) == 32);
 }  // namespace
 
-void writeGenome(const Grammar& g, const Chromosome& c, const std::string& path) {
+void writeGenome(const GenomeFamily& family, const Chromosome& c, const std::string& path) {
     Header h{};
     std::memcpy(h.magic, kMagic, 8);
     h.version = kGenomeFileVersion;
     h.genes = c.genes;
     h.words = c.size();
-    h.grammarHash = hash64(g.source);
+    h.grammarHash = hash64(family.sourceText());
     writeStreamAtomically(path, [&](std::ostream& out) {
         out.write(reinterpret_cast<const char*>(&h), sizeof h);
         out.write(reinterpret_cast<const char*>(c.words.data()), std::streamsize(c.words.size() * 4));
     });
 }
 
-Chromosome readGenome(const Grammar& g, const GenomeLimits& limits, const std::string& path) {
+Chromosome readGenome(const GenomeFamily& family, const std::string& grammarPath, const GenomeLimits& limits,
+                      const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in || std::filesystem::is_directory(path)) throw InputError(path, "", "cannot open genome file");
     std::error_code ec;
@@ -55,14 +55,14 @@ Chromosome readGenome(const Grammar& g, const GenomeLimits& limits, const std::s
     if (bytes.size() != sizeof h + std::size_t(h.words) * 4)
         throw InputError(path, "byte 32", "expected " + std::to_string(h.words) + " words, file holds " +
                                               std::to_string((bytes.size() - sizeof h) / 4));
-    if (h.grammarHash != hash64(g.source))
-        throw InputError(path, "", "genome was made with a different grammar than " + g.path);
+    if (h.grammarHash != hash64(family.sourceText()))
+        throw InputError(path, "", "genome was made with a different grammar than " + grammarPath);
     if (h.genes == 0) throw InputError(path, "byte 12", "holds no genes");
     Chromosome c;
     c.genes = h.genes;
     c.words.resize(h.words);
     std::memcpy(c.words.data(), bytes.data() + sizeof h, std::size_t(h.words) * 4);
-    const std::string problem = validateChromosome(g, c, limits);
+    const std::string problem = family.check(c, limits);
     if (!problem.empty()) throw InputError(path, "", "invalid chromosome: " + problem);
     return c;
 }

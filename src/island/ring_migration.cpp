@@ -8,7 +8,6 @@
 
 #include <mpi.h>
 
-#include "genome/validate.hpp"
 #include "island/drain.hpp"
 #include "island/polite_wait.hpp"
 
@@ -48,7 +47,7 @@ void packIndividuals(const Population& pop, const std::vector<std::size_t>& whic
     }
 }
 
-std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
+std::string unpackIndividuals(const GenomeFamily& family, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
                               std::vector<Chromosome>& chromosomes, std::vector<double>& fitness) {
     if (in.empty()) return "empty message";
     std::size_t pos = 1;
@@ -62,7 +61,7 @@ std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, cons
         c.genes = genes;
         c.words.assign(in.begin() + std::ptrdiff_t(pos), in.begin() + std::ptrdiff_t(pos + words));
         pos += words;
-        if (const std::string e = validateChromosome(g, c, limits); !e.empty()) return "individual " + std::to_string(k) + ": " + e;
+        if (const std::string e = family.check(c, limits); !e.empty()) return "individual " + std::to_string(k) + ": " + e;
         if (!std::isfinite(f)) return "individual " + std::to_string(k) + ": fitness is not finite";
         chromosomes.push_back(std::move(c));
         fitness.push_back(f);
@@ -70,15 +69,15 @@ std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, cons
     return pos == in.size() ? "" : "trailing words";
 }
 
-RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g,
+RingMigration::RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const GenomeFamily& family,
                              const GenomeLimits& limits)
-    : mpi_(mpi), settings_(settings), grammar_(g), limits_(limits) {}
+    : mpi_(mpi), settings_(settings), family_(family), limits_(limits) {}
 
 
 bool RingMigration::unpack(const std::vector<std::uint32_t>& words, Population& into) {
     into.individuals.clear();
     into.fitness.clear();
-    if (unpackIndividuals(grammar_, limits_, words, into.individuals, into.fitness).empty()) return true;
+    if (unpackIndividuals(family_, limits_, words, into.individuals, into.fitness).empty()) return true;
     ++rejected_;  // never let bad bytes into the population
     into.individuals.clear();
     into.fitness.clear();

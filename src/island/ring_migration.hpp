@@ -9,13 +9,14 @@
 // stores them (arrivals()), a resume gives them back (restoreArrivals()).
 // Async mode posts non-blocking sends and takes whatever has arrived, and never blocks.
 // finish() drains both without deadlock. Received bytes are untrusted: every chromosome is
-// validated before it joins the population.
+// validated (its model family's check(), genome/genome_family.hpp) before it joins the population.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 #include "island/mpi_session.hpp"
 #include "island/migration_settings.hpp"
 #include "island/posted_sends.hpp"
@@ -26,13 +27,16 @@ namespace shapevo {
 
 /// [count] then per individual: [fitness bits lo][hi][genes][words][words...]
 void packIndividuals(const Population& pop, const std::vector<std::size_t>& which, std::vector<std::uint32_t>& out);
-/// Append the individuals in `in` to `chromosomes`/`fitness`; "" on success, else what is wrong.
-std::string unpackIndividuals(const Grammar& g, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
+/// Append the individuals in `in` to `chromosomes`/`fitness`, each checked by `family`; "" on
+/// success, else what is wrong.
+std::string unpackIndividuals(const GenomeFamily& family, const GenomeLimits& limits, const std::vector<std::uint32_t>& in,
                               std::vector<Chromosome>& chromosomes, std::vector<double>& fitness);
 
 class RingMigration {
 public:
-    RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const Grammar& g, const GenomeLimits& limits);
+    /// Migrants are genomes of `family` (which must outlive this) within `limits`.
+    RingMigration(const MpiSession& mpi, const MigrationSettings& settings, const GenomeFamily& family,
+                  const GenomeLimits& limits);
     /// Call after generation `generation` completes; migrates if it is a migration generation.
     /// Arrivals replace the worst of the first `slots` individuals (SearchMethod::migrantSlots).
     void afterGeneration(Population& pop, std::uint32_t generation, std::size_t slots);
@@ -55,7 +59,7 @@ private:
 
     const MpiSession& mpi_;
     MigrationSettings settings_;
-    const Grammar& grammar_;
+    const GenomeFamily& family_;
     GenomeLimits limits_;
     std::vector<std::uint32_t> outgoing_, incoming_;
     PostedSends sends_;

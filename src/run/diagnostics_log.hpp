@@ -3,7 +3,8 @@
 // (docs/search-diagnosis.md). Columns:
 //   generation, seconds, evaluations, best, mean          as in curve.csv (this island)
 //   distinct_genomes, distinct_structures                 population diversity, counted exactly
-//                                                         (search/population_diversity.hpp)
+//                                                         (search/population_diversity.hpp; structures
+//                                                         empty for a family without a tree grammar)
 //   mean_genes, max_genes                                 chromosome lengths (bloat)
 //   us_per_evaluation                                     wall time of the generation / its evaluations
 //   distinct_parents                                      share of selections that picked a new individual
@@ -26,7 +27,7 @@ class DiagnosticsLog {
 public:
     /// Opens `path` for appending (the header only into a new or empty file). @throw InputError
     /// if it cannot be written.
-    DiagnosticsLog(const std::string& path, const Grammar& grammar);
+    DiagnosticsLog(const std::string& path, const GenomeFamily& family);
     ~DiagnosticsLog();
     DiagnosticsLog(const DiagnosticsLog&) = delete;
     DiagnosticsLog& operator=(const DiagnosticsLog&) = delete;
@@ -36,7 +37,7 @@ public:
 
 private:
     std::string path_;
-    const Grammar& grammar_;
+    const GenomeFamily& family_;
     std::FILE* file_ = nullptr;
     DiversityScratch scratch_;
     OperatorOutcomes last_;

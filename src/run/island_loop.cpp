@@ -36,9 +36,9 @@ std::uint64_t islandSeed(std::uint64_t seed, int rank) { return seed + 0x9e3779b
 
 class IslandLoop {
 public:
-    IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
-               const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
-               std::ostream& log);
+    IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
+               const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+               const JobOptions& options, std::ostream& log);
     IslandLoop(const IslandLoop&) = delete;
     IslandLoop& operator=(const IslandLoop&) = delete;
 
@@ -62,6 +62,7 @@ private:
     const MpiSession& mpi_;
     const RunSettings& s_;
     const Grammar& grammar_;
+    const GenomeFamily& family_;
     const Scene& scene_;
     const std::string& folder_;
     RunMetadata meta_;  ///< the run's curve, generation and time: what rank 0 checkpoints and reports
@@ -91,14 +92,14 @@ private:
     bool saidCacheFull_ = false, saidModelsFull_ = false;
 };
 
-IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
-                       const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
-                       std::ostream& log)
-    : mpi_(mpi), s_(s), grammar_(grammar), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
+IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
+                       const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+                       const JobOptions& options, std::ostream& log)
+    : mpi_(mpi), s_(s), grammar_(grammar), family_(family), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
       options_(options), log_(log), clock_(mpi, meta_.wallSeconds), root_(mpi.rank() == 0),
       evaluator_(scene.scorer(), s.threads), anomaliesBefore_(scene.scorer().anomalies()),
-      method_(makeSearchMethod(s.search, s.population, s.ga, grammar, s.limits, islandSeed(s.seed, mpi.rank()))), search_(*method_),
-      migration_(mpi, s.migration, grammar, s.limits),
+      method_(makeSearchMethod(s.search, s.population, s.ga, family, s.limits, islandSeed(s.seed, mpi.rank()), s.configPath)),
+      search_(*method_), migration_(mpi, s.migration, family, s.limits),
       localCurve_(restored ? restored->curve : std::vector<GenerationStats>{}),
       checkpoints_(mpi, s.checkpoint, folder, log), progress_(log, s.population.generations, s.wallTime),
       islands_(mpi.active() ? mpi.size() : 1),
@@ -107,7 +108,7 @@ IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Gramma
       async_(s.migration.async && islands_ > 1) {
     if (restored) migration_.restoreArrivals(restored->arrivals);
     installStopSignalHandlers();
-    if (root_ && s.search.diagnostics) diagnostics_.emplace(folder + "/diagnostics.csv", grammar);
+    if (root_ && s.search.diagnostics) diagnostics_.emplace(folder + "/diagnostics.csv", family);
 }
 
 void IslandLoop::printStartLine() {
@@ -226,7 +227,7 @@ JobResult IslandLoop::end(JobResult result) {
     result.wallSeconds = clock_.runSeconds();
     result.stoppedBySignal = stop_.bySignal;
     if (root_) {
-        RunEnd outputs{s_, grammar_, scene_, folder_, meta_, options_, std::move(champion.chromosome), totals,
+        RunEnd outputs{s_, grammar_, family_, scene_, folder_, meta_, options_, std::move(champion.chromosome), totals,
                        search_.generation(), search_.population().size(), evaluator_.threads(), islands_, mpi_.size(), stop_};
         writeRunOutputs(outputs, result, log_);
     }
@@ -235,10 +236,10 @@ JobResult IslandLoop::end(JobResult result) {
 
 }  // namespace
 
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
-                     const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
-                     std::ostream& log) {
-    IslandLoop loop(mpi, s, grammar, scene, folder, std::move(meta), restored, options, log);
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
+                     const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+                     const JobOptions& options, std::ostream& log) {
+    IslandLoop loop(mpi, s, grammar, family, scene, folder, std::move(meta), restored, options, log);
     return loop.run();
 }
 

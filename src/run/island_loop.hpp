@@ -7,6 +7,7 @@
 #include <string>
 
 #include "checkpoint/island_state.hpp"
+#include "genome/genome_family.hpp"
 #include "island/mpi_session.hpp"
 #include "run/job_options.hpp"
 #include "run/scene.hpp"
@@ -14,11 +15,12 @@
 
 namespace shapevo {
 
-/// `meta` carries the run's identity and, when resuming, its curve and time so far; `restored`
-/// is this rank's island from the checkpoint (null for a new run). Collective. Throws RunFailure
-/// when a checkpoint cannot be written.
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const Scene& scene,
-                     const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
-                     std::ostream& log);
+/// `family` is the genome of `grammar` as the search, migration and genome file see it
+/// (genome/genome_family.hpp). `meta` carries the run's identity and, when resuming, its curve and
+/// time so far; `restored` is this rank's island from the checkpoint (null for a new run).
+/// Collective. Throws RunFailure when a checkpoint cannot be written.
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
+                     const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+                     const JobOptions& options, std::ostream& log);
 
 }  // namespace shapevo

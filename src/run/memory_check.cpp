@@ -61,9 +61,9 @@ std::uint64_t usableMemoryBytes() {
     return usable;
 }
 
-void requireMemoryFits(const RunSettings& s, const Grammar& g, int islands, std::uint64_t available) {
+void requireMemoryFits(const RunSettings& s, const GenomeFamily& family, int islands, std::uint64_t available) {
     if (available == 0) return;
-    const MemoryEstimate e = searchMemoryEstimate(g, s.search, s.population, s.limits);
+    const MemoryEstimate e = searchMemoryEstimate(family, s.search, s.population, s.limits);
     const double need = e.bytes * double(std::max(islands, 1));
     if (need <= double(available)) return;
     throw InputError(s.configPath, "ga.population",

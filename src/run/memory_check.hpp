@@ -4,7 +4,7 @@
 #pragma once
 #include <cstdint>
 
-#include "grammar/grammar.hpp"
+#include "genome/genome_family.hpp"
 #include "run/settings.hpp"
 
 namespace shapevo {
@@ -15,7 +15,8 @@ namespace shapevo {
 std::uint64_t usableMemoryBytes();
 
 /// @throw InputError(s.configPath, "ga.population", ...) with the estimate when `islands` islands
-/// of `s` (the MPI ranks on this machine) need more than `available` bytes (0 = unknown: no check).
-void requireMemoryFits(const RunSettings& s, const Grammar& g, int islands, std::uint64_t available);
+/// of `s` (the MPI ranks on this machine) searching `family`'s genomes need more than `available`
+/// bytes (0 = unknown: no check).
+void requireMemoryFits(const RunSettings& s, const GenomeFamily& family, int islands, std::uint64_t available);
 
 }  // namespace shapevo

@@ -8,6 +8,7 @@
 #include "base/input_error.hpp"
 #include "base/word_list.hpp"
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/tree_family.hpp"
 #include "geometry/derive.hpp"
 #include "grammar/front_ends.hpp"
 #include "mesh/glb_writer.hpp"
@@ -64,9 +65,10 @@ CheckpointBest bestOfCheckpoint(const std::string& folder) {
     RunSettings settings = parseConfig(meta.configText, meta.configPath);
     Grammar grammar = parseGrammar(meta.grammarText, meta.grammarPath, settings.grammarAttrs);
     CheckpointBest b{std::move(settings), std::move(grammar), {}, {}};
+    const TreeFamily family(b.grammar);
     double bestFitness = -INFINITY;
     for (int r = 0; r < meta.ranks; ++r) {
-        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), b.grammar, b.settings.limits);
+        const IslandState island = readIslandFile(folder + "/" + islandFileName(r), family, b.settings.limits);
         const std::size_t i = island.population.best();
         if (island.population.fitness[i] > bestFitness) {
             bestFitness = island.population.fitness[i];

@@ -8,6 +8,7 @@
 #include "base/atomic_write.hpp"
 #include "base/side_by_side.hpp"
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "base/input_error.hpp"
@@ -84,7 +85,8 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     meta.configText = s.configText;
     meta.grammarPath = std::filesystem::absolute(s.grammarPath).lexically_normal().string();
     meta.grammarText = grammar.source;
-    return islandLoop(mpi, s, grammar, *scene, folder, meta, nullptr, options, log);
+    const TreeFamily family(grammar);
+    return islandLoop(mpi, s, grammar, family, *scene, folder, meta, nullptr, options, log);
 }
 
 namespace {
@@ -177,10 +179,11 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
                 throw InputError(scene->primaryFile(), "", "the target changed since the run started (hash differs); "
                                                              "resuming against another target is refused");
         });
+        const TreeFamily family(grammar);
         IslandState state;
         std::string readProblem;
         try {
-            state = readIslandFile(candidate + "/" + islandFileName(mpi.rank()), grammar, s.limits);
+            state = readIslandFile(candidate + "/" + islandFileName(mpi.rank()), family, s.limits);
             readProblem = islandMismatch(state, meta, mpi.rank(), s.migration.async && meta.ranks > 1);
             if (!readProblem.empty()) readProblem = islandFileName(mpi.rank()) + ": " + readProblem;
         } catch (const InputError& e) {
@@ -198,7 +201,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
         }
         JobOptions withChanges = options;
         withChanges.changedInputs = changed;
-        return islandLoop(mpi, s, grammar, *scene, runDir, meta, &state, withChanges, log);
+        return islandLoop(mpi, s, grammar, family, *scene, runDir, meta, &state, withChanges, log);
     }
     together(mpi, [&] {
         if (mpi.rank() == 0) throw InputError(runDir, "", "no complete checkpoint of this run to resume from");

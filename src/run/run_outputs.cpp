@@ -98,7 +98,7 @@ void writeModelAndCurves(const RunEnd& end, RunSummary& sum) {
         [&] { writeModelPicture(mesh, std::array{View::ThreeQuarter}, PictureSize{}, folder + "/best.png"); },
         [&] { writePly(mesh, folder + "/best.ply"); },
         [&] { writeGlb(mesh, folder + "/best.glb"); },
-        [&] { writeGenome(end.grammar, end.champion, folder + "/best.genome"); },
+        [&] { writeGenome(end.family, end.champion, folder + "/best.genome"); },
         [&] { writeCurveCsv(curve, folder + "/curve.csv"); },
         [&] { writeCurveSvg(curve, plot, folder + "/curve.svg"); },
         [&] { writeCurvePng(curve, plot, folder + "/curve.png"); },

@@ -13,6 +13,7 @@
 
 #include "checkpoint/island_state.hpp"
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 #include "island/mpi_session.hpp"
 #include "run/island_turn.hpp"
 #include "run/job_options.hpp"
@@ -59,6 +60,7 @@ RunTotals gatherTotals(const MpiSession& mpi, const IslandTotals& own, const Loo
 struct RunEnd {
     const RunSettings& s;
     const Grammar& grammar;
+    const GenomeFamily& family;  ///< the grammar's genome (best.genome)
     const Scene& scene;
     const std::string& folder;
     const RunMetadata& meta;  ///< the run's curve and identity

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "base/input_error.hpp"
+#include "genome/families/tree_family.hpp"
 #include "genome/genome_file.hpp"
 #include "genome/sample.hpp"
 #include "geometry/derive.hpp"
@@ -100,6 +101,7 @@ void sampleModels(const SampleRequest& r, std::ostream& out) {
     if (sheetOut) sheet.emplace(int(count), r.tileSize.empty() ? PictureSize{256, 256} : parsePictureSize(r.tileSize));
     if (!r.genomeOutput.empty()) requireOutputFormat(r.genomeOutput, kGenomeFormats, "--genome");
     const Grammar g = loadGrammar(r.grammarPath, parseAttrOptions(r.attrs));
+    const TreeFamily family(g);
     requireSizeWindow(g, r);
     for (std::uint32_t k = 1; k <= count; ++k) {
         refuseExisting(sheetOut ? r.output : numberedPath(r.output, k, count));
@@ -120,7 +122,7 @@ void sampleModels(const SampleRequest& r, std::ostream& out) {
         out << ") -> " << modelPath;
         if (!r.genomeOutput.empty()) {
             const std::string genomePath = numberedPath(r.genomeOutput, k, count);
-            writeGenome(g, c, genomePath);
+            writeGenome(family, c, genomePath);
             out << ", " << genomePath;
         }
         out << "\n";

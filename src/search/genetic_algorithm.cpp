@@ -8,9 +8,9 @@
 
 namespace shapevo {
 
-GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const PopulationSettings& population, const GaSettings& settings,
-                                   const GenomeLimits& limits, std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), population_(population), settings_(settings), limits_(limits) {
+GeneticAlgorithm::GeneticAlgorithm(const GenomeFamily& family, const PopulationSettings& population,
+                                   const GaSettings& settings, const GenomeLimits& limits, std::uint64_t seed)
+    : SearchMethod(seed), ops_(family.makeOperators(limits)), population_(population), settings_(settings) {
     pop_.individuals.resize(population.population);
     next_.individuals.resize(population.population);
     next_.fitness.resize(population.population);
@@ -21,7 +21,7 @@ GeneticAlgorithm::GeneticAlgorithm(const Grammar& g, const PopulationSettings& p
 }
 
 void GeneticAlgorithm::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
+    startFromRandomGrowth(*ops_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 void GeneticAlgorithm::step(Evaluator& evaluator) {
@@ -44,8 +44,8 @@ void GeneticAlgorithm::step(Evaluator& evaluator) {
         Chromosome& c1 = next_.individuals[k];
         const bool pair = k + 1 < n;
         Chromosome& c2 = pair ? next_.individuals[k + 1] : scratchChild_;
-        const BredPair b = breedPair(grammar_, pop_, p1, p2, c1, c2, pair, settings_.mutation, settings_.crossoverRetries,
-                                     limits_, rng_, scratch_, [&](Chromosome& c) { return mutateByWeight(grammar_, c, rng_, limits_, scratch_, settings_); });
+        const BredPair b = breedPair(*ops_, pop_, p1, p2, c1, c2, pair, settings_.mutation, settings_.crossoverRetries, rng_,
+                                     [&](Chromosome& c) { return mutateByWeight(*ops_, c, rng_, settings_); });
         childOp_[k] = b.op1;
         childOp_[k + 1] = b.op2;
         parentFitness_[k] = b.parent1;

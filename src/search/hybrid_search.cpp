@@ -6,19 +6,15 @@
 #include <cmath>
 #include <span>
 
-#include "genome/nudge.hpp"
 #include "search/migration_policy.hpp"
 #include "search/pair_breeding.hpp"
 
 namespace shapevo {
 
-namespace {
-constexpr double kDepthBias = 1.0;  ///< regrow picks every non-terminal gene alike
-}
-
-HybridSearch::HybridSearch(const Grammar& g, const HybridSettings& settings, const PopulationSettings& population,
-                           const GaSettings& ga, const GenomeLimits& limits, std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), settings_(settings), population_(population), ga_(ga), limits_(limits) {
+HybridSearch::HybridSearch(const GenomeFamily& family, const HybridSettings& settings,
+                           const PopulationSettings& population, const GaSettings& ga, const GenomeLimits& limits,
+                           std::uint64_t seed)
+    : SearchMethod(seed), ops_(family.makeOperators(limits)), settings_(settings), population_(population), ga_(ga) {
     resize(population.population);
 }
 
@@ -59,32 +55,28 @@ std::size_t HybridSearch::islandElites(std::size_t k) const {
 }
 
 void HybridSearch::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
-}
-
-bool HybridSearch::regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y) {
-    return regrowBelow(grammar_, x, pickJumpGene(grammar_, x, jumpWeight, rng_, regrow_), y, rng_, limits_, regrow_);
+    startFromRandomGrowth(*ops_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 bool HybridSearch::localMove(const Chromosome& x, Chromosome& y, double nudgeShare) {
     if (rng_.uniform() < settings_.refineJump) {
-        const double total = jumpWeightTotal(grammar_, x, kDepthBias, regrow_);
-        if (total > 0) return regrowFrom(x, total, y);
+        // A regrow that drew (x has a point to regrow below) is the move, even if it failed (past
+        // max_genes); one that did not draw (no such point) falls back to a nudge or an alter.
+        const auto before = rng_.state();
+        if (ops_->regrow(x, y, rng_)) return true;
+        if (rng_.state() != before) return false;
     }
     y.copyFrom(x);
-    if (rng_.uniform() < nudgeShare) return nudge(grammar_, y, rng_);
-    return alter(grammar_, y, rng_);
+    if (rng_.uniform() < nudgeShare) return ops_->nudge(y, rng_);
+    return ops_->alter(y, rng_);
 }
 
 OperatorOutcomes::Op HybridSearch::mutate(Chromosome& c) {
-    if (rng_.uniform() < settings_.regrow) {
-        const double total = jumpWeightTotal(grammar_, c, kDepthBias, regrow_);
-        if (total > 0 && regrowFrom(c, total, scratchRegrow_)) {
-            std::swap(c, scratchRegrow_);
-            return OperatorOutcomes::Regrow;
-        }
+    if (rng_.uniform() < settings_.regrow && ops_->regrow(c, scratchRegrow_, rng_)) {
+        std::swap(c, scratchRegrow_);
+        return OperatorOutcomes::Regrow;
     }
-    return mutateByWeight(grammar_, c, rng_, limits_, scratch_, ga_);
+    return mutateByWeight(*ops_, c, rng_, ga_);
 }
 
 void HybridSearch::breedIsland(std::size_t k) {
@@ -107,8 +99,8 @@ void HybridSearch::breedIsland(std::size_t k) {
         const bool pair = i + 1 < e;
         Chromosome& c1 = next_.individuals[i];
         Chromosome& c2 = pair ? next_.individuals[i + 1] : scratchChild_;
-        const BredPair bred = breedPair(grammar_, pop_, p1, p2, c1, c2, pair, settings_.mutation, ga_.crossoverRetries,
-                                        limits_, rng_, scratch_, [&](Chromosome& c) { return mutate(c); });
+        const BredPair bred = breedPair(*ops_, pop_, p1, p2, c1, c2, pair, settings_.mutation, ga_.crossoverRetries, rng_,
+                                        [&](Chromosome& c) { return mutate(c); });
         childOp_[i] = bred.op1;
         childOp_[i + 1] = bred.op2;
         parentFitness_[i] = bred.parent1;
@@ -182,7 +174,7 @@ void HybridSearch::restartWorstIsland(Evaluator& evaluator) { restartIsland(wors
 void HybridSearch::restartIsland(std::size_t k, Evaluator& evaluator) {
     batch_.clear();
     for (std::size_t i = islandBegin(k); i < islandBegin(k + 1); ++i) {
-        growRandomLength(grammar_, pop_.individuals[i], rng_, limits_, population_.initialGenesMin, population_.initialGenesMax);
+        ops_->randomGenome(pop_.individuals[i], rng_, population_.initialGenesMin, population_.initialGenesMax);
         batch_.add(pop_.individuals[i]);
     }
     evaluations_ += batch_.evaluate(evaluator);

@@ -7,8 +7,9 @@
 //   and every `migration_interval` generations each island's best replaces the worst of the next
 //   island around a ring. With MPI ranks this runs inside every rank's island.
 // - Mutation over crossover: a pair is mutated with probability `mutation` (the paper: 0.3); a
-//   mutation is a regrow (RJMCMC's jump: a non-terminal's subtree cut and grown anew,
-//   genome/regrow.hpp) with probability `regrow`, else grow, cut or alter by [ga]'s weights.
+//   mutation is a regrow (GenomeOperators::regrow; the tree family: RJMCMC's jump, a
+//   non-terminal's subtree cut and grown anew, genome/regrow.hpp) with probability `regrow`, else
+//   grow, cut or alter by [ga]'s weights.
 // - Elite refinement: each generation an island of m members makes refine x m local moves (a
 //   regrow with probability `refine_jump`, else on odd islands a nudge (genome/nudge.hpp: one
 //   parameter moved a small step) with probability `refine_nudge`, else an alter) dealt to its
@@ -28,13 +29,14 @@
 // generation and the evaluation count (island ranges are a function of the population size; the
 // migration, restart and scout schedules of the generation), so checkpoints resume exactly; all
 // children and refine proposals of a generation are evaluated in one batch, so the thread count
-// changes nothing; every random draw comes from rng() in a fixed order.
+// changes nothing; every random draw comes from rng() in a fixed order. Any model family: every
+// genome is made and changed by the family's operators (genome/genome_family.hpp).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
-#include "genome/operators.hpp"
-#include "genome/regrow.hpp"
+#include "genome/genome_family.hpp"
 #include "search/evaluation_batch.hpp"
 #include "search/population_settings.hpp"
 #include "search/search_method.hpp"
@@ -44,7 +46,8 @@ namespace shapevo {
 
 class HybridSearch final : public SearchMethod {
 public:
-    HybridSearch(const Grammar& g, const HybridSettings& settings, const PopulationSettings& population,
+    /// Breeds `family`'s genomes with its operators within `limits`.
+    HybridSearch(const GenomeFamily& family, const HybridSettings& settings, const PopulationSettings& population,
                  const GaSettings& ga, const GenomeLimits& limits, std::uint64_t seed);
 
     /// Generation 1: grow and evaluate the initial population (as the GA).
@@ -68,11 +71,8 @@ private:
     void restored() override;
     void resize(std::size_t n);
     OperatorOutcomes::Op mutate(Chromosome& c);
-    /// y = a local move of x (regrow or alter); false if none applies.
+    /// y = a local move of x (regrow, nudge or alter); false if none applies.
     bool localMove(const Chromosome& x, Chromosome& y, double nudgeShare);
-    /// y = x with the subtree of a non-terminal gene (picked by weight from jumpWeight, the
-    /// total jumpWeightTotal gave) regrown; false if that would pass max_genes.
-    bool regrowFrom(const Chromosome& x, double jumpWeight, Chromosome& y);
     void breedIsland(std::size_t k);
     void migrate();
     void restartWorstIsland(Evaluator& evaluator);
@@ -89,19 +89,16 @@ private:
     /// The main island whose best is lowest (the last among equals).
     std::size_t worstMainIsland() const;
 
-    const Grammar& grammar_;
+    std::unique_ptr<GenomeOperators> ops_;
     HybridSettings settings_;
     PopulationSettings population_;
     GaSettings ga_;
-    GenomeLimits limits_;
     std::size_t islands_ = 1;
     Population next_;
     Chromosome scratchChild_;  ///< second child of an odd last pair, discarded
     Chromosome scratchRegrow_; ///< a regrow mutation's result before it is swapped in
     std::vector<std::size_t> order_;
     RouletteWheel wheel_;
-    GenomeScratch scratch_;
-    RegrowScratch regrow_;
     EvaluationBatch batch_;
     // refine proposals of this generation: the chromosome, the next_ slot of the elite it came
     // from, the elite's fitness, its operator

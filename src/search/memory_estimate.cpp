@@ -1,5 +1,5 @@
-// The memory estimate of memory_estimate.hpp: the method table gives the copies, the grammar the
-// largest gene.
+// The memory estimate of memory_estimate.hpp: the method table gives the copies, the tree grammar
+// (if the family has one) the largest gene.
 #include "search/memory_estimate.hpp"
 
 #include <algorithm>
@@ -8,12 +8,15 @@
 
 namespace shapevo {
 
-MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const PopulationSettings& population,
-                                    const GenomeLimits& limits) {
+MemoryEstimate searchMemoryEstimate(const GenomeFamily& family, const SearchSettings& search,
+                                    const PopulationSettings& population, const GenomeLimits& limits) {
     MemoryEstimate e;
     const SearchMethodEntry* method = findSearchMethod(search.method);
     e.copies = (method ? method->populationCopies : 2u) + 2u;  // + a checkpoint's copy and its encoding
-    for (const Rule& r : g.rules) e.largestGeneWords = std::max(e.largestGeneWords, r.geneWords());
+    if (const Grammar* g = family.treeGrammar())
+        for (const Rule& r : g->rules) e.largestGeneWords = std::max(e.largestGeneWords, r.geneWords());
+    else
+        e.largestGeneWords = 1;  // a family without a tree: a chromosome's words, one per gene
     const double perIndividual = double(sizeof(Chromosome) + sizeof(double)) +
                                  double(limits.maxGenes) * 4.0 * double(e.largestGeneWords);
     e.bytes = double(population.population) * double(e.copies) * perIndividual;

@@ -3,7 +3,8 @@
 // it starts (run/memory_check.hpp) instead of failing with std::bad_alloc hours later.
 // Promise: the estimate is the documented formula below, nothing measured:
 //   bytes = population x (copies + 2) x (sizeof(Chromosome) + 8 + max_genes x 4 x W)
-// W: 32-bit words of the grammar's largest gene; copies: whole populations the method keeps
+// W: 32-bit words of the largest gene: the tree grammar's largest gene for a family with one,
+// 1 for a family without (its chromosome's words, one per gene); copies: whole populations the method keeps
 // (SearchMethodEntry::populationCopies: GA and SMC 2, RJMCMC 4); + 2: a checkpoint's copy of the
 // population and its encoding.
 #pragma once
@@ -11,7 +12,7 @@
 #include <string>
 
 #include "genome/chromosome.hpp"
-#include "grammar/grammar.hpp"
+#include "genome/genome_family.hpp"
 #include "search/population_settings.hpp"
 #include "search/search_settings.hpp"
 
@@ -25,8 +26,9 @@ struct MemoryEstimate {
     std::string formula;
 };
 
-/// The estimate for one island running `search.method` (a name in search_methods.cpp's table).
-MemoryEstimate searchMemoryEstimate(const Grammar& g, const SearchSettings& search, const PopulationSettings& population,
-                                    const GenomeLimits& limits);
+/// The estimate for one island running `search.method` (a name in search_methods.cpp's table)
+/// on `family`'s genomes.
+MemoryEstimate searchMemoryEstimate(const GenomeFamily& family, const SearchSettings& search,
+                                    const PopulationSettings& population, const GenomeLimits& limits);
 
 }  // namespace shapevo

@@ -2,10 +2,11 @@
 // draw from the Rng in the same order. breedPair: one pair of children from two parents — with
 // probability `mutation` copies of the parents, each mutated by `mutate`, otherwise a crossover
 // (Algorithm 2, with retries). mutateByWeight: one of grow, cut and alter picked by [ga]'s weights.
+// Both apply the model family's operators (genome/genome_family.hpp), so they breed any family.
 #pragma once
 #include <algorithm>
 
-#include "genome/operators.hpp"
+#include "genome/genome_family.hpp"
 #include "search/operator_outcomes.hpp"
 #include "search/population.hpp"
 #include "search/search_settings.hpp"
@@ -15,15 +16,14 @@ namespace shapevo {
 /// Grow, cut or alter `c`, picked by ga's weights (one uniform draw); if the pick cannot apply
 /// (nothing to cut, chromosome full) the next one in that order is tried. Returns the operator
 /// applied, Copy if none could.
-inline OperatorOutcomes::Op mutateByWeight(const Grammar& g, Chromosome& c, Rng& rng, const GenomeLimits& limits,
-                                           GenomeScratch& scratch, const GaSettings& ga) {
+inline OperatorOutcomes::Op mutateByWeight(GenomeOperators& ops, Chromosome& c, Rng& rng, const GaSettings& ga) {
     const double r = rng.uniform() * (ga.growWeight + ga.cutWeight + ga.alterWeight);
     const int first = r < ga.growWeight ? 0 : r < ga.growWeight + ga.cutWeight ? 1 : 2;
     for (int k = 0; k < 3; ++k) {
         switch ((first + k) % 3) {
-        case 0: if (ga.growWeight > 0 && grow(g, c, rng, limits)) return OperatorOutcomes::Grow; break;
-        case 1: if (ga.cutWeight > 0 && cut(g, c, rng, scratch)) return OperatorOutcomes::Cut; break;
-        default: if (ga.alterWeight > 0 && alter(g, c, rng)) return OperatorOutcomes::Alter; break;
+        case 0: if (ga.growWeight > 0 && ops.grow(c, rng)) return OperatorOutcomes::Grow; break;
+        case 1: if (ga.cutWeight > 0 && ops.cut(c, rng)) return OperatorOutcomes::Cut; break;
+        default: if (ga.alterWeight > 0 && ops.alter(c, rng)) return OperatorOutcomes::Alter; break;
         }
     }
     return OperatorOutcomes::Copy;
@@ -38,9 +38,8 @@ struct BredPair {
 /// Children of pop's p1 and p2 into c1 and c2 (c2 is discarded by the caller if !pair, and not
 /// mutated). `mutate(Chromosome&)` returns the operator it applied.
 template <class Mutate>
-BredPair breedPair(const Grammar& g, const Population& pop, std::size_t p1, std::size_t p2, Chromosome& c1,
-                   Chromosome& c2, bool pair, double mutation, int crossoverRetries, const GenomeLimits& limits,
-                   Rng& rng, GenomeScratch& scratch, Mutate&& mutate) {
+BredPair breedPair(GenomeOperators& ops, const Population& pop, std::size_t p1, std::size_t p2, Chromosome& c1,
+                   Chromosome& c2, bool pair, double mutation, int crossoverRetries, Rng& rng, Mutate&& mutate) {
     BredPair b;
     if (rng.uniform() < mutation) {
         c1 = pop.individuals[p1];
@@ -50,7 +49,7 @@ BredPair breedPair(const Grammar& g, const Population& pop, std::size_t p1, std:
         b.parent1 = pop.fitness[p1];
         b.parent2 = pop.fitness[p2];
     } else {
-        const bool crossed = crossover(g, pop.individuals[p1], pop.individuals[p2], c1, c2, rng, limits, crossoverRetries, scratch);
+        const bool crossed = ops.crossover(pop.individuals[p1], pop.individuals[p2], c1, c2, rng, crossoverRetries);
         b.op1 = b.op2 = crossed ? OperatorOutcomes::Crossover : OperatorOutcomes::Copy;
         b.parent1 = b.parent2 = std::max(pop.fitness[p1], pop.fitness[p2]);
     }

@@ -1,5 +1,5 @@
 // measureDiversity: sort the individuals by their words (lexicographically, genes first) and count
-// the runs of equal ones, once for the genomes and once for their structures.
+// the runs of equal ones, once for the genomes and (with a tree grammar) once for their structures.
 #include "search/population_diversity.hpp"
 
 #include <algorithm>
@@ -20,21 +20,23 @@ std::size_t distinct(const std::vector<const std::vector<std::uint32_t>*>& v, st
 
 }  // namespace
 
-Diversity measureDiversity(const Grammar& g, const Population& pop, DiversityScratch& scratch) {
+Diversity measureDiversity(const GenomeFamily& family, const Population& pop, DiversityScratch& scratch) {
     Diversity d;
+    const Grammar* g = family.treeGrammar();
     const std::size_t n = pop.size();
     std::vector<const std::vector<std::uint32_t>*> words(n);
-    scratch.structures.resize(n);
+    scratch.structures.resize(g ? n : 0);
     double genes = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const Chromosome& c = pop.individuals[i];
         words[i] = &c.words;
         genes += c.genes;
         d.maxGenes = std::max(d.maxGenes, c.genes);
+        if (!g) continue;
         std::vector<std::uint32_t>& s = scratch.structures[i];
         s.assign(c.words.begin(), c.words.end());
         for (std::uint32_t pos = 0; pos < s.size();) {  // genes in order: zero each gene's parameter block
-            const Rule& r = g.rules[c.rule(pos)];
+            const Rule& r = g->rules[c.rule(pos)];
             const std::uint32_t params = Chromosome::paramWord(pos, r);
             std::fill(s.begin() + params, s.begin() + pos + r.geneWords(), 0u);
             pos += r.geneWords();
@@ -42,8 +44,10 @@ Diversity measureDiversity(const Grammar& g, const Population& pop, DiversityScr
     }
     d.meanGenes = n ? genes / double(n) : 0;
     d.distinctGenomes = distinct(words, scratch.order);
+    if (!g) return d;
     for (std::size_t i = 0; i < n; ++i) words[i] = &scratch.structures[i];
     d.distinctStructures = distinct(words, scratch.order);
+    d.structuresCounted = true;
     return d;
 }
 

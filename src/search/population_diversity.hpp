@@ -1,13 +1,15 @@
 // Population diversity: how many different models a population holds, counted exactly (chromosomes
 // compared word for word, not by hash alone): distinct genomes, distinct structures (the same
 // genes with their parameters ignored: rule ids and child offsets only), and chromosome lengths.
+// Structures need a tree's gene layout: for a family without a tree grammar only genomes and
+// lengths are counted (structuresCounted false).
 // For search.diagnostics (docs/search-diagnosis.md): once per generation, not on the hot path.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "grammar/grammar.hpp"
+#include "genome/genome_family.hpp"
 #include "search/population.hpp"
 
 namespace shapevo {
@@ -15,6 +17,7 @@ namespace shapevo {
 struct Diversity {
     std::size_t distinctGenomes = 0;     ///< different chromosomes
     std::size_t distinctStructures = 0;  ///< different chromosomes once every parameter is set to 0
+    bool structuresCounted = false;      ///< false for a family without a tree grammar (distinctStructures 0)
     double meanGenes = 0;
     std::uint32_t maxGenes = 0;
 };
@@ -24,6 +27,6 @@ struct DiversityScratch {
     std::vector<std::size_t> order;
 };
 
-Diversity measureDiversity(const Grammar& g, const Population& pop, DiversityScratch& scratch);
+Diversity measureDiversity(const GenomeFamily& family, const Population& pop, DiversityScratch& scratch);
 
 }  // namespace shapevo

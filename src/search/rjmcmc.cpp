@@ -12,7 +12,7 @@ namespace shapevo {
 
 Rjmcmc::Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const PopulationSettings& population,
                const GenomeLimits& limits, std::uint64_t seed)
-    : SearchMethod(seed), grammar_(g), settings_(settings), population_(population), limits_(limits) {
+    : SearchMethod(seed), grammar_(g), settings_(settings), population_(population), limits_(limits), growth_(g, limits) {
     resize(population.population);
 }
 
@@ -33,7 +33,7 @@ double Rjmcmc::temperature(std::size_t i) const {
 }
 
 void Rjmcmc::initialize(Evaluator& evaluator) {
-    startFromRandomGrowth(grammar_, limits_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
+    startFromRandomGrowth(growth_, population_.initialGenesMin, population_.initialGenesMax, evaluator);
 }
 
 void Rjmcmc::restored() { resize(pop_.size()); }

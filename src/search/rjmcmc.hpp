@@ -25,6 +25,7 @@
 #pragma once
 #include <vector>
 
+#include "genome/families/tree_family.hpp"
 #include "genome/regrow.hpp"
 #include "search/evaluation_batch.hpp"
 #include "search/population_settings.hpp"
@@ -35,7 +36,7 @@ namespace shapevo {
 class Rjmcmc final : public SearchMethod {
 public:
     /// One chain per individual of `population` (its size and initial lengths; RJMCMC uses none of
-    /// the GA's operators).
+    /// the GA's operators). It needs a tree's structure: `g` is the family's treeGrammar().
     Rjmcmc(const Grammar& g, const RjmcmcSettings& settings, const PopulationSettings& population,
            const GenomeLimits& limits, std::uint64_t seed);
 
@@ -72,6 +73,7 @@ private:
     RjmcmcSettings settings_;
     PopulationSettings population_;
     GenomeLimits limits_;
+    TreeOperators growth_;  ///< the initial chains' random growth
     std::vector<Chromosome> proposals_, second_, star_;
     std::vector<Proposal> info_;
     std::vector<std::vector<MatchedGene>> matched_;

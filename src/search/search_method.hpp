@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 #include "genome/random.hpp"
 #include "search/search_settings.hpp"
 #include "search/evaluator.hpp"
@@ -53,10 +54,10 @@ public:
 protected:
     /// After restore(): fit the method's own buffers to the restored population.
     virtual void restored() {}
-    /// Generation 1 from random derivations: every individual grown to a length drawn from
-    /// [minGenes, maxGenes] (growRandomLength), then all evaluated.
-    void startFromRandomGrowth(const Grammar& g, const GenomeLimits& limits, std::uint32_t minGenes,
-                               std::uint32_t maxGenes, Evaluator& evaluator);
+    /// Generation 1 from random genomes: every individual made by ops.randomGenome (the tree
+    /// family: grown to a length drawn from [minGenes, maxGenes]), in slot order, then all evaluated.
+    void startFromRandomGrowth(GenomeOperators& ops, std::uint32_t minGenes, std::uint32_t maxGenes,
+                               Evaluator& evaluator);
 
     Rng rng_;
     Population pop_;

@@ -3,8 +3,11 @@
 
 #include <array>
 #include <stdexcept>
+#include <vector>
 
+#include "base/input_error.hpp"
 #include "base/word_list.hpp"
+#include "grammar/front_ends.hpp"
 #include "search/genetic_algorithm.hpp"
 #include "search/hybrid_search.hpp"
 #include "search/rjmcmc.hpp"
@@ -63,35 +66,38 @@ void readHybrid(SectionReader& r, SearchSettings& s) {
 }
 
 std::unique_ptr<SearchMethod> makeHybrid(const SearchSettings& s, const PopulationSettings& p, const GaSettings& ga,
-                                         const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<HybridSearch>(g, s.hybrid, p, ga, limits, seed);
+                                         const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<HybridSearch>(family, s.hybrid, p, ga, limits, seed);
 }
 std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const PopulationSettings& p, const GaSettings& ga,
-                                     const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<GeneticAlgorithm>(g, p, ga, limits, seed);
+                                     const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<GeneticAlgorithm>(family, p, ga, limits, seed);
 }
+// needsTree: makeSearchMethod has checked that treeGrammar() is not null
 std::unique_ptr<SearchMethod> makeSmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
-                                      const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Smc>(g, s.smc, p.population, limits, GrowthOrder::Chromosome, seed);
+                                      const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(*family.treeGrammar(), s.smc, p.population, limits, GrowthOrder::Chromosome, seed);
 }
 std::unique_ptr<SearchMethod> makeSosmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
-                                        const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Smc>(g, s.smc, p.population, limits, GrowthOrder::Random, seed);
+                                        const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Smc>(*family.treeGrammar(), s.smc, p.population, limits, GrowthOrder::Random, seed);
 }
 std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
-                                         const Grammar& g, const GenomeLimits& limits, std::uint64_t seed) {
-    return std::make_unique<Rjmcmc>(g, s.rjmcmc, p, limits, seed);
+                                         const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<Rjmcmc>(*family.treeGrammar(), s.rjmcmc, p, limits, seed);
 }
 
 // populationCopies: GA pop_ + next_; SMC pop_ + next_; RJMCMC pop_ + proposals_ + second_ + star_.
 // hybrid: pop_ + next_ (+ a few refine proposals).
+// needsTree: SMC and SOSMC decide a tree's child positions one by one (genome/sequential_growth.hpp),
+// RJMCMC regrows below a non-terminal with a reversible pairing of the tree's genes (genome/regrow.hpp).
 constexpr std::array<SearchMethodEntry, 5> kMethods{{
     {"hybrid", "GA islands in one process, mostly mutation, elites refined by local moves (the default)", readHybrid,
-     makeHybrid, 3},
-    {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa, 2},
-    {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc, 2},
-    {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc, 2},
-    {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc, 4},
+     makeHybrid, 3, false},
+    {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa, 2, false},
+    {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc, 2, true},
+    {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc, 2, true},
+    {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc, 4, true},
 }};
 
 }  // namespace
@@ -108,12 +114,26 @@ std::string searchMethodNames() {
     return wordList(kMethods.size(), [](std::size_t i) { return "\"" + std::string(kMethods[i].name) + "\""; });
 }
 
+std::string methodFamilyProblem(const SearchSettings& search, const GenomeFamily& family) {
+    const SearchMethodEntry* e = findSearchMethod(search.method);
+    if (!e || !e->needsTree || family.treeGrammar()) return "";
+    std::vector<std::string> able;  // quoted: "hybrid"
+    for (const SearchMethodEntry& m : kMethods)
+        if (!m.needsTree) able.push_back('"' + std::string(m.name) + '"');
+    return "search.method = \"" + std::string(e->name) + "\" needs a derivation-tree grammar (a " + grammarExtensions() +
+           " file); " + std::string(family.name()) + " genomes run with " +
+           wordList(able.size(), [&](std::size_t i) { return able[i]; });
+}
+
 std::unique_ptr<SearchMethod> makeSearchMethod(const SearchSettings& search, const PopulationSettings& population,
-                                               const GaSettings& ga, const Grammar& g, const GenomeLimits& limits,
-                                               std::uint64_t seed) {
+                                               const GaSettings& ga, const GenomeFamily& family,
+                                               const GenomeLimits& limits, std::uint64_t seed,
+                                               const std::string& configFile) {
     const SearchMethodEntry* e = findSearchMethod(search.method);
     if (!e) throw std::invalid_argument("no search method named \"" + search.method + "\" (expected " + searchMethodNames() + ")");
-    return e->make(search, population, ga, g, limits, seed);
+    if (const std::string problem = methodFamilyProblem(search, family); !problem.empty())
+        throw InputError(configFile, "search.method", problem);
+    return e->make(search, population, ga, family, limits, seed);
 }
 
 }  // namespace shapevo

@@ -27,9 +27,9 @@ TEST(AttributeChecksum, AForgedIslandGenerationIsRefused) {
     test::TempDir dir;
     const std::string path = dir.file("island-0000.h5");
     writeIslandFile(path, test::makeIsland(0));
-    EXPECT_NO_THROW(readIslandFile(path, test::spaceship(), test::kLimits));
+    EXPECT_NO_THROW(readIslandFile(path, test::spaceshipFamily(), test::kLimits));
     test::setRootU32Attribute(path, "generation", 1515870824u);
-    expectAttributeChecksumError([&] { readIslandFile(path, test::spaceship(), test::kLimits); });
+    expectAttributeChecksumError([&] { readIslandFile(path, test::spaceshipFamily(), test::kLimits); });
 }
 
 TEST(AttributeChecksum, AForgedRunGenerationIsRefused) {

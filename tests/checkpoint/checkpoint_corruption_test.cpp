@@ -14,7 +14,7 @@
 namespace shapevo {
 namespace {
 
-using test::spaceship;
+using test::spaceshipFamily;
 
 /// File offset of a contiguous dataset's data.
 haddr_t dataOffset(const std::string& file, const char* dataset) {
@@ -29,7 +29,7 @@ haddr_t dataOffset(const std::string& file, const char* dataset) {
 /// The InputError readIslandFile throws, or a failure.
 InputError readError(const std::string& path) {
     try {
-        readIslandFile(path, spaceship(), test::kLimits);
+        readIslandFile(path, spaceshipFamily(), test::kLimits);
     } catch (const InputError& e) {
         return e;
     }
@@ -126,7 +126,7 @@ TEST(CheckpointCorruption, ChromosomeOverTheGenomeLimitIsRejectedNamingGeneCount
     test::TempDir dir;
     writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0, 10));
     try {
-        readIslandFile(dir.file("island-0000.h5"), spaceship(), GenomeLimits{1});
+        readIslandFile(dir.file("island-0000.h5"), spaceshipFamily(), GenomeLimits{1});
         FAIL() << "accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(e.where(), "/population/gene_counts") << e.what();
@@ -139,7 +139,7 @@ protected:
     IslandBytes bytes = encodeIsland(test::makeIsland(0, 5));
     std::string whereDecodeFails() {
         try {
-            decodeIsland(bytes.view(), spaceship(), test::kLimits, "mem");
+            decodeIsland(bytes.view(), spaceshipFamily(), test::kLimits, "mem");
         } catch (const InputError& e) {
             return e.where();
         }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/tree_family.hpp"
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
 #include "../test_support.hpp"
@@ -19,6 +20,12 @@ namespace shapevo::test {
 inline const Grammar& spaceship() {
     static const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
     return g;
+}
+
+/// The spaceship grammar's genome, as readIslandFile and decodeIsland check it.
+inline const TreeFamily& spaceshipFamily() {
+    static const TreeFamily family(spaceship());
+    return family;
 }
 
 inline constexpr GenomeLimits kLimits{60};

@@ -13,7 +13,7 @@ namespace shapevo {
 namespace {
 
 using test::makeIsland;
-using test::spaceship;
+using test::spaceshipFamily;
 
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
@@ -57,7 +57,7 @@ TEST(CheckpointIslandFile, RoundTripOfGrownSpaceshipPopulationIsBitIdentical) {
     for (const Chromosome& c : s.population.individuals) words += c.words.size();
     ASSERT_GT(words, 200u);  // a real population, not a handful of roots
     writeIslandFile(dir.file("island-0003.h5"), s);
-    expectSameIsland(s, readIslandFile(dir.file("island-0003.h5"), spaceship(), test::kLimits));
+    expectSameIsland(s, readIslandFile(dir.file("island-0003.h5"), spaceshipFamily(), test::kLimits));
 }
 
 // Sync islands complete each exchange one migration late: the migrants received but not yet
@@ -67,21 +67,21 @@ TEST(CheckpointIslandFile, MigrantsWaitingToJoinRoundTripAndAreValidatedLikeTheP
     IslandState s = makeIsland(1, 30, 4);
     s.arrivals = makeIsland(6, 5).population;
     writeIslandFile(dir.file("island-0001.h5"), s);
-    const IslandState back = readIslandFile(dir.file("island-0001.h5"), spaceship(), test::kLimits);
+    const IslandState back = readIslandFile(dir.file("island-0001.h5"), spaceshipFamily(), test::kLimits);
     ASSERT_EQ(back.arrivals.size(), 5u);
     expectSameIsland(s, back);
 
     IslandBytes bytes = encodeIsland(s);
     bytes.arrivalGeneCounts[0] = 0xff;  // the first migrant claims 255 genes, over the limit of 60
     try {
-        decodeIsland(bytes.view(), spaceship(), test::kLimits, "x.h5");
+        decodeIsland(bytes.view(), spaceshipFamily(), test::kLimits, "x.h5");
         FAIL() << "a migrant over the gene limit was accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("/migrants/gene_counts"), std::string::npos) << e.what();
     }
     bytes = encodeIsland(s);
     bytes.arrivalOffsets.resize(bytes.arrivalOffsets.size() - 8);  // one offset short
-    EXPECT_THROW(decodeIsland(bytes.view(), spaceship(), test::kLimits, "x.h5"), InputError);
+    EXPECT_THROW(decodeIsland(bytes.view(), spaceshipFamily(), test::kLimits, "x.h5"), InputError);
 }
 
 TEST(CheckpointIslandFile, EmptyPopulationAndEmptyCurveRoundTrip) {
@@ -90,7 +90,7 @@ TEST(CheckpointIslandFile, EmptyPopulationAndEmptyCurveRoundTrip) {
     s.rank = 0;
     s.rng = {1, 2, 3, 4};
     writeIslandFile(dir.file("island-0000.h5"), s);
-    expectSameIsland(s, readIslandFile(dir.file("island-0000.h5"), spaceship(), test::kLimits));
+    expectSameIsland(s, readIslandFile(dir.file("island-0000.h5"), spaceshipFamily(), test::kLimits));
 }
 
 TEST(CheckpointIslandFile, SameStateGivesByteIdenticalFiles) {
@@ -113,7 +113,7 @@ TEST(CheckpointIslandFile, WriterRefusesStatesThatCouldNotBeReadBack) {
 TEST(CheckpointIslandFile, MissingFileIsAnInputErrorNamingIt) {
     test::TempDir dir;
     try {
-        readIslandFile(dir.file("island-0009.h5"), spaceship(), test::kLimits);
+        readIslandFile(dir.file("island-0009.h5"), spaceshipFamily(), test::kLimits);
         FAIL() << "no exception";
     } catch (const InputError& e) {
         EXPECT_EQ(e.file(), dir.file("island-0009.h5"));

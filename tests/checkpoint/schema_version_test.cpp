@@ -39,7 +39,7 @@ TEST(CheckpointSchema, AnIslandFileOfSchemaOneIsRefusedNamingBothVersions) {
     test::TempDir dir;
     writeIslandFile(dir.file("island-0000.h5"), test::makeIsland(0));
     test::setRootU32Attribute(dir.file("island-0000.h5"), "schema_version", 1);
-    expectRefusedNamingBothVersions([&] { readIslandFile(dir.file("island-0000.h5"), test::spaceship(), test::kLimits); });
+    expectRefusedNamingBothVersions([&] { readIslandFile(dir.file("island-0000.h5"), test::spaceshipFamily(), test::kLimits); });
 }
 
 // A real schema 2 checkpoint (tests/data/schema2-checkpoint/README.md: written by the shapevo of
@@ -57,7 +57,7 @@ TEST(CheckpointSchema, ASchemaTwoCheckpointIsReadWithoutCurveIoU) {
         EXPECT_TRUE(std::isfinite(m.curve[i].best));
     }
     EXPECT_GE(m.curve.back().best, m.curve.front().best);
-    const IslandState s = readIslandFile(dir + "island-0000.h5", test::spaceship(), GenomeLimits{100});
+    const IslandState s = readIslandFile(dir + "island-0000.h5", test::spaceshipFamily(), GenomeLimits{100});
     EXPECT_EQ(s.runId, m.runId);
     EXPECT_EQ(s.population.size(), 20u);
     ASSERT_EQ(s.curve.size(), 6u);
@@ -73,7 +73,7 @@ TEST(CheckpointSchema, ASchemaThreeCheckpointIsReadWithNoMigrantsWaiting) {
     EXPECT_EQ(m.schemaVersion, 3u);
     EXPECT_EQ(m.generation, 6u);
     EXPECT_EQ(m.ranks, 2);
-    const IslandState s = readIslandFile(dir + "island-0000.h5", test::spaceship(), GenomeLimits{100});
+    const IslandState s = readIslandFile(dir + "island-0000.h5", test::spaceshipFamily(), GenomeLimits{100});
     EXPECT_EQ(s.runId, m.runId);
     EXPECT_EQ(s.population.size(), 20u);
     EXPECT_EQ(s.arrivals.size(), 0u);

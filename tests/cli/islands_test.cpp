@@ -35,9 +35,10 @@ std::vector<unsigned> asyncIslandGenerations(const std::string& run) {
     const std::vector<std::string> checkpoints = listCheckpoints(run);
     if (checkpoints.empty()) return {};
     const Grammar g = loadGrammar(sourcePath("grammars/spaceship.grammar"));
+    const TreeFamily family(g);
     std::vector<unsigned> out;
     for (int r = 0; std::filesystem::exists(checkpoints.front() + "/" + islandFileName(r)); ++r)
-        out.push_back(readIslandFile(checkpoints.front() + "/" + islandFileName(r), g, GenomeLimits{100}).generation);
+        out.push_back(readIslandFile(checkpoints.front() + "/" + islandFileName(r), family, GenomeLimits{100}).generation);
     return out;
 }
 

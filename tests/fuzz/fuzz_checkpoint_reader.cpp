@@ -45,6 +45,7 @@
 #include "checkpoint/island_codec.hpp"
 #include "genome/operators.hpp"
 #include "genome/validate.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
@@ -64,6 +65,7 @@ namespace fs = std::filesystem;
 
 constexpr GenomeLimits kLimits{60};
 const Grammar* grammar = nullptr;
+const TreeFamily* family = nullptr;  // the spaceship grammar's genome
 std::string folder;  // this process's temporary checkpoint folder
 
 /// Reads little-endian numbers and byte ranges off the front of the input; short reads give 0s
@@ -117,7 +119,7 @@ void checkAccepted(const IslandState& s, const IslandBytesView& in) {
     CHECK(same(in.fitness, again.fitness));
     CHECK(same(in.rng, again.rng));
     CHECK(in.curve.size() == again.curve.size());
-    const IslandBytes third = encodeIsland(decodeIsland(again.view(), *grammar, kLimits, "again"));
+    const IslandBytes third = encodeIsland(decodeIsland(again.view(), *family, kLimits, "again"));
     CHECK(third.curve == again.curve && third.genes == again.genes);
 }
 
@@ -136,7 +138,7 @@ void fuzzDecoder(Input in) {
     v.rng = in.bytes(lengths[4]);
     v.curve = in.bytes(in.left);
     try {
-        checkAccepted(decodeIsland(v, *grammar, kLimits, "fuzz"), v);
+        checkAccepted(decodeIsland(v, *family, kLimits, "fuzz"), v);
     } catch (const InputError&) {
     }
 }
@@ -150,7 +152,7 @@ void fuzzFiles(Input in) {
     if (!verifyCheckpoint(folder).empty()) return;
     try {
         readRunMetadata(folder + "/run.h5");
-        const IslandState s = readIslandFile(folder + "/island-0000.h5", *grammar, kLimits);
+        const IslandState s = readIslandFile(folder + "/island-0000.h5", *family, kLimits);
         for (const Chromosome& c : s.population.individuals) CHECK(validateChromosome(*grammar, c, kLimits).empty());
         CHECK(!describeCheckpoint(folder, true).empty());
     } catch (const InputError&) {
@@ -192,7 +194,7 @@ void fuzzAttributes(Input in) {
     CHECK(verifyCheckpoint(folder).empty());
     bool refused = false;
     try {
-        if (island) readIslandFile(path, *grammar, kLimits);
+        if (island) readIslandFile(path, *family, kLimits);
         else readRunMetadata(path);
     } catch (const InputError&) {
         refused = true;
@@ -286,6 +288,8 @@ void removeFolder() {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     static const Grammar g = loadGrammar(std::string(SHAPEVO_SOURCE_DIR) + "/grammars/spaceship.grammar");
     grammar = &g;
+    static const TreeFamily tree(g);
+    family = &tree;
     const char* tmp = std::getenv("TMPDIR");  // .ci/fuzz points it into its own work folder
     std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzz_checkpoint_reader.XXXXXX";
     if (!mkdtemp(name.data())) {

@@ -12,6 +12,7 @@
 #include "grammar/front_ends.hpp"
 #include "island/async_control.hpp"
 #include "island/island_meeting.hpp"
+#include "genome/families/tree_family.hpp"
 #include "island/ring_migration.hpp"
 
 namespace shapevo {
@@ -20,6 +21,11 @@ namespace {
 const Grammar& spaceship() {
     static const Grammar g = loadGrammar(std::string(SHAPEVO_SOURCE_DIR) + "/grammars/spaceship.grammar");
     return g;
+}
+
+const TreeFamily& spaceshipFamily() {
+    static const TreeFamily family(spaceship());
+    return family;
 }
 
 /// The population rank `r` starts with: the same on every rank that builds it.
@@ -64,7 +70,7 @@ MpiSession& TwoRanks::mpiRef() { return *gMpi; }
 namespace {
 
 TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
-    RingMigration migration(mpi, every(5, 3), spaceship(), GenomeLimits{60});
+    RingMigration migration(mpi, every(5, 3), spaceshipFamily(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 20);
     const Population original = mine;
     migration.afterGeneration(mine, 4, mine.size());  // not a migration generation: nothing moves
@@ -90,7 +96,7 @@ TEST_F(TwoRanks, BestGenomesArriveIntactOnTheNextRankOneMigrationLater) {
 }
 
 TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
-    RingMigration migration(mpi, every(5, 2), spaceship(), GenomeLimits{60});
+    RingMigration migration(mpi, every(5, 2), spaceshipFamily(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 10);
     MPI_Barrier(MPI_COMM_WORLD);
     const double waitedBefore = mpi.waitedSeconds();
@@ -107,7 +113,7 @@ TEST_F(TwoRanks, ASyncIslandDoesNotWaitForANeighbourLessThanAnIntervalBehind) {
 }
 
 TEST_F(TwoRanks, AsyncMigrationDeliversAndFinishesWithoutDeadlock) {
-    RingMigration migration(mpi, every(1, 2, /*async=*/true), spaceship(), GenomeLimits{60});
+    RingMigration migration(mpi, every(1, 2, /*async=*/true), spaceshipFamily(), GenomeLimits{60});
     Population mine = populationOf(mpi.rank(), 10);
     for (std::uint32_t g = 1; g <= 50; ++g) migration.afterGeneration(mine, g, mine.size());
     migration.finish();
@@ -184,17 +190,17 @@ TEST(Migration, CorruptMessagesAreRefused) {
     packIndividuals(p, {4, 3}, words);
     std::vector<Chromosome> got;
     std::vector<double> fitness;
-    ASSERT_EQ(unpackIndividuals(spaceship(), limits, words, got, fitness), "");
+    ASSERT_EQ(unpackIndividuals(spaceshipFamily(), limits, words, got, fitness), "");
     ASSERT_EQ(got.size(), 2u);
     EXPECT_EQ(got[0].words, p.individuals[4].words);
     auto truncated = words;
     truncated.pop_back();
     got.clear();
-    EXPECT_NE(unpackIndividuals(spaceship(), limits, truncated, got, fitness), "");
+    EXPECT_NE(unpackIndividuals(spaceshipFamily(), limits, truncated, got, fitness), "");
     auto damaged = words;
     damaged[5] = 9999;  // the first gene's rule id
     got.clear();
-    EXPECT_NE(unpackIndividuals(spaceship(), limits, damaged, got, fitness), "");
+    EXPECT_NE(unpackIndividuals(spaceshipFamily(), limits, damaged, got, fitness), "");
 }
 
 }  // namespace

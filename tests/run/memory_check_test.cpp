@@ -5,6 +5,7 @@
 
 #include "../test_support.hpp"
 #include "base/input_error.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/memory_check.hpp"
@@ -19,6 +20,7 @@ constexpr std::uint64_t kGiB = 1024ull * 1024 * 1024;
 struct Spaceship {
     RunSettings s = loadConfig(test::sourcePath("configs/spaceship.toml"));
     Grammar g = loadGrammar(s.grammarPath);
+    TreeFamily family{g};
 };
 
 TEST(MemoryCheck, TheEstimateIsTheDocumentedFormula) {
@@ -27,7 +29,7 @@ TEST(MemoryCheck, TheEstimateIsTheDocumentedFormula) {
     for (const Rule& r : x.g.rules) largest = std::max(largest, r.geneWords());
     for (const SearchMethodEntry& m : searchMethods()) {
         x.s.search.method = std::string(m.name);
-        const MemoryEstimate e = searchMemoryEstimate(x.g, x.s.search, x.s.population, x.s.limits);
+        const MemoryEstimate e = searchMemoryEstimate(x.family, x.s.search, x.s.population, x.s.limits);
         EXPECT_EQ(e.copies, m.populationCopies + 2) << m.name;
         EXPECT_EQ(e.largestGeneWords, largest);
         EXPECT_DOUBLE_EQ(e.bytes, 200.0 * e.copies * (sizeof(Chromosome) + 8.0 + 100.0 * 4.0 * largest)) << m.name;
@@ -36,10 +38,10 @@ TEST(MemoryCheck, TheEstimateIsTheDocumentedFormula) {
 
 TEST(MemoryCheck, ARunThatDoesNotFitIsRefusedWithTheEstimate) {
     Spaceship x;
-    EXPECT_NO_THROW(requireMemoryFits(x.s, x.g, 1, kGiB)) << "the demo fits in 1 GiB";
+    EXPECT_NO_THROW(requireMemoryFits(x.s, x.family, 1, kGiB)) << "the demo fits in 1 GiB";
     x.s.population.population = 1'000'000;  // 1e6 x 4 x (40 + 100 x 4 x W) bytes: several GiB
     try {
-        requireMemoryFits(x.s, x.g, 1, kGiB);
+        requireMemoryFits(x.s, x.family, 1, kGiB);
         FAIL() << "accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(e.file(), x.s.configPath);
@@ -48,15 +50,15 @@ TEST(MemoryCheck, ARunThatDoesNotFitIsRefusedWithTheEstimate) {
                                  "more than the 1.0 GiB this process may use"})
             EXPECT_NE(e.message().find(part), std::string::npos) << part << " in " << e.what();
     }
-    EXPECT_NO_THROW(requireMemoryFits(x.s, x.g, 1, 0)) << "unknown memory: no check";
+    EXPECT_NO_THROW(requireMemoryFits(x.s, x.family, 1, 0)) << "unknown memory: no check";
 }
 
 TEST(MemoryCheck, IslandsOnOneMachineAddUp) {
     Spaceship x;
-    const double one = searchMemoryEstimate(x.g, x.s.search, x.s.population, x.s.limits).bytes;
+    const double one = searchMemoryEstimate(x.family, x.s.search, x.s.population, x.s.limits).bytes;
     const auto fitsOnce = std::uint64_t(one * 1.5);
-    EXPECT_NO_THROW(requireMemoryFits(x.s, x.g, 1, fitsOnce));
-    EXPECT_THROW(requireMemoryFits(x.s, x.g, 2, fitsOnce), InputError);
+    EXPECT_NO_THROW(requireMemoryFits(x.s, x.family, 1, fitsOnce));
+    EXPECT_THROW(requireMemoryFits(x.s, x.family, 2, fitsOnce), InputError);
 }
 
 TEST(MemoryCheck, UsableMemoryIsKnownOnLinux) {

@@ -24,7 +24,7 @@ TEST(GeneticAlgorithm, EliteKeepsTheBestAndEveryChildIsValid) {
     s.tournament = 5;
     const GenomeLimits limits{60};
     Evaluator evaluator(fx.scorer, 1);
-    GeneticAlgorithm ga(fx.grammar, sizes, s, limits, 7);
+    GeneticAlgorithm ga(fx.family, sizes, s, limits, 7);
     ga.initialize(evaluator);
     double best = ga.stats().best;
     const double first = best;
@@ -49,7 +49,7 @@ TEST(GeneticAlgorithm, MutationOnlyAndCrossoverOnlyBothWork) {
         s.tournament = 3;
         const GenomeLimits limits{50};
         Evaluator evaluator(fx.scorer, 2);
-        GeneticAlgorithm ga(fx.grammar, sizes, s, limits, 3);
+        GeneticAlgorithm ga(fx.family, sizes, s, limits, 3);
         ga.initialize(evaluator);
         for (int gen = 0; gen < 5; ++gen) ga.step(evaluator);
         for (const Chromosome& c : ga.population().individuals) EXPECT_EQ(validateChromosome(fx.grammar, c, limits), "");
@@ -65,7 +65,7 @@ TEST(GeneticAlgorithm, InitialLengthsFollowTheConfiguredRange) {
     GaSettings s;
     s.elitism = 0;
     Evaluator evaluator(fx.scorer, 1);
-    GeneticAlgorithm ga(fx.grammar, sizes, s, GenomeLimits{100}, 5);
+    GeneticAlgorithm ga(fx.family, sizes, s, GenomeLimits{100}, 5);
     ga.initialize(evaluator);
     for (const Chromosome& c : ga.population().individuals) {
         EXPECT_GE(c.genes, 10u);

@@ -43,7 +43,7 @@ TEST(HybridSearch, IslandsSplitThePopulationEvenlyAndKeepTheirShareOfElites) {
     Fixture fx;
     HybridSettings s;
     s.islands = 4;
-    HybridSearch h(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 1);
+    HybridSearch h(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 1);
     ASSERT_EQ(h.islands(), 4u);
     std::size_t elites = 0;
     for (std::size_t k = 0; k < 4; ++k) {
@@ -56,7 +56,7 @@ TEST(HybridSearch, IslandsSplitThePopulationEvenlyAndKeepTheirShareOfElites) {
     EXPECT_EQ(h.islandBegin(4), 30u);
     EXPECT_EQ(elites, 6u);
     s.islands = 100;  // more islands than pairs of individuals: islands of at least two
-    EXPECT_EQ(HybridSearch(fx.grammar, s, sized(9), smallGa(), GenomeLimits{60}, 1).islands(), 4u);
+    EXPECT_EQ(HybridSearch(fx.family, s, sized(9), smallGa(), GenomeLimits{60}, 1).islands(), 4u);
 }
 
 TEST(HybridSearch, TheBestNeverDropsAndEveryIndividualStaysValid) {
@@ -67,7 +67,7 @@ TEST(HybridSearch, TheBestNeverDropsAndEveryIndividualStaysValid) {
     s.scoutInterval = 4;  // and a scout (island 3) is adopted or starts again often
     const GenomeLimits limits{60};
     Evaluator evaluator(fx.scorer, 1);
-    HybridSearch h(fx.grammar, s, sized(40), smallGa(), limits, 7);
+    HybridSearch h(fx.family, s, sized(40), smallGa(), limits, 7);
     h.initialize(evaluator);
     const double first = h.stats().best;
     double best = first;
@@ -92,11 +92,11 @@ struct MigrationTwins {
     explicit MigrationTwins(HybridSettings s) {
         s.migrationInterval = 4;
         s.refine = 0;  // so that the last step's breeding is all that changes the islands before migrating
-        migrated = std::make_unique<HybridSearch>(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 11);
+        migrated = std::make_unique<HybridSearch>(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 11);
         migrated->initialize(evaluator);
         while (migrated->generation() < 3) migrated->step(evaluator);
         s.migrationInterval = 0;
-        plain = std::make_unique<HybridSearch>(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 11);
+        plain = std::make_unique<HybridSearch>(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 11);
         plain->restore(migrated->population(), migrated->rng().state(), 3, migrated->evaluations());
         migrated->step(evaluator);
         plain->step(evaluator);
@@ -129,13 +129,13 @@ TEST(HybridSearch, ARestartRegrowsTheWorstIslandOnly) {
     s.migrationInterval = 0;
     s.restartInterval = 5;
     Evaluator evaluator(fx.scorer, 1);
-    HybridSearch h(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 5);
+    HybridSearch h(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 5);
     h.initialize(evaluator);
     while (h.generation() < 4) h.step(evaluator);
     const Population before = h.population();
     const std::uint64_t evaluations = h.evaluations();
     s.restartInterval = 0;  // the same generation 5 without the restart
-    HybridSearch noRestart(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 5);
+    HybridSearch noRestart(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 5);
     noRestart.restore(before, h.rng().state(), 4, evaluations);
     h.step(evaluator);
     noRestart.step(evaluator);
@@ -173,12 +173,12 @@ TEST(HybridSearch, MigrantsFromOtherRanksMayLandInTheMainIslandsOnly) {
     Fixture fx;
     HybridSettings s;
     s.islands = 3;
-    EXPECT_EQ(HybridSearch(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 20u);
+    EXPECT_EQ(HybridSearch(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 20u);
     s.scoutInterval = 0;  // no scout: every slot
-    EXPECT_EQ(HybridSearch(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 30u);
+    EXPECT_EQ(HybridSearch(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 30u);
     s.islands = 2;
     s.scoutInterval = 400;  // two islands keep no scout
-    EXPECT_EQ(HybridSearch(fx.grammar, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 30u);
+    EXPECT_EQ(HybridSearch(fx.family, s, sized(30), smallGa(), GenomeLimits{60}, 1).migrantSlots(), 30u);
 }
 
 TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
@@ -190,7 +190,7 @@ TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
     s.scoutInterval = 5;
     Evaluator evaluator(fx.scorer, 1);
     for (const bool better : {true, false}) {
-        HybridSearch h(fx.grammar, s, sized(32), smallGa(), GenomeLimits{60}, 5);
+        HybridSearch h(fx.family, s, sized(32), smallGa(), GenomeLimits{60}, 5);
         h.initialize(evaluator);
         while (h.generation() < 4) h.step(evaluator);
         // The scout's members made (or not) better than every other model, as if it had found
@@ -200,7 +200,7 @@ TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
         h.restore(p, h.rng().state(), 4, h.evaluations());
         HybridSettings plain = s;
         plain.scoutInterval = 0;  // three equal islands; nothing happens at generation 5
-        HybridSearch twin(fx.grammar, plain, sized(32), smallGa(), GenomeLimits{60}, 5);
+        HybridSearch twin(fx.family, plain, sized(32), smallGa(), GenomeLimits{60}, 5);
         twin.restore(p, h.rng().state(), 4, h.evaluations());
         h.step(evaluator);
         twin.step(evaluator);
@@ -233,7 +233,7 @@ TEST(HybridSearch, ABetterScoutReplacesTheWorstIslandAndStartsAgain) {
 Population hybridRun(const HybridSettings& s, std::uint32_t population, int generations) {
     Fixture fx;
     Evaluator ev(fx.scorer, 1);
-    HybridSearch h(fx.grammar, s, sized(population), smallGa(), GenomeLimits{60}, 7);
+    HybridSearch h(fx.family, s, sized(population), smallGa(), GenomeLimits{60}, 7);
     h.initialize(ev);
     for (int gen = 0; gen < generations; ++gen) h.step(ev);
     return h.population();
@@ -262,7 +262,7 @@ TEST(HybridSearch, OneAndTwoThreadsGiveTheSameRun) {
     s.migrationInterval = 3;
     s.scoutInterval = 5;
     Evaluator one(fx.scorer, 1), two(fx.scorer, 2);
-    HybridSearch a(fx.grammar, s, sized(40), smallGa(), GenomeLimits{60}, 3), b(fx.grammar, s, sized(40), smallGa(), GenomeLimits{60}, 3);
+    HybridSearch a(fx.family, s, sized(40), smallGa(), GenomeLimits{60}, 3), b(fx.family, s, sized(40), smallGa(), GenomeLimits{60}, 3);
     a.initialize(one);
     b.initialize(two);
     for (int gen = 0; gen < 12; ++gen) {

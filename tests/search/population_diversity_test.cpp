@@ -2,6 +2,7 @@
 // genomes equal but for their parameters), and the GA's operator outcomes account for every child.
 #include <gtest/gtest.h>
 
+#include "genome/families/tree_family.hpp"
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
 #include "search/genetic_algorithm.hpp"
@@ -27,7 +28,7 @@ TEST(PopulationDiversity, CountsEqualGenomesAndEqualStructuresExactly) {
     Population pop;
     pop.individuals = {a, b, a, a2, b, a2, a};
     DiversityScratch scratch;
-    const Diversity d = measureDiversity(g, pop, scratch);
+    const Diversity d = measureDiversity(TreeFamily(g), pop, scratch);
     EXPECT_EQ(d.distinctGenomes, 3u);     // a, b, a2
     EXPECT_EQ(d.distinctStructures, 2u);  // a = a2, b
     EXPECT_EQ(d.maxGenes, b.genes);
@@ -41,7 +42,8 @@ TEST(OperatorOutcomes, EveryChildOfEveryGenerationIsCountedOnceAgainstItsParent)
     sizes.population = 41;  // an odd number of children: the last pair's second child is discarded
     GaSettings settings;
     settings.elitism = 6;
-    GeneticAlgorithm ga(g, sizes, settings, GenomeLimits{40}, 3);
+    const TreeFamily family(g);
+    GeneticAlgorithm ga(family, sizes, settings, GenomeLimits{40}, 3);
     Evaluator evaluator(scorer, 1);
     ga.initialize(evaluator);
     for (int i = 0; i < 25; ++i) ga.step(evaluator);

@@ -114,7 +114,7 @@ TEST(SearchMethods, EveryMethodResumedFromItsSavedStateEqualsTheUninterruptedRun
         s.hybrid.migrationInterval = 3;  // the hybrid migrates and restarts on both sides of the split
         s.hybrid.restartInterval = 4;
         s.hybrid.scoutInterval = 3;  // and its scout is adopted or starts again on both sides
-        expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, sizes, ga, fx.grammar, limits, 77); }, evaluator, 5, 11);
+        expectResumeEqualsUninterrupted([&] { return makeSearchMethod(s, sizes, ga, fx.family, limits, 77, "test.toml"); }, evaluator, 5, 11);
     }
 }
 
@@ -131,7 +131,7 @@ TEST(SearchMethods, FactoryBuildsTheNamedMethodAndEveryOneImproves) {
         SearchSettings s;
         s.method = method.name;
         SCOPED_TRACE(std::string(method.name));
-        auto m = makeSearchMethod(s, sizes, ga, fx.grammar, limits, 5);
+        auto m = makeSearchMethod(s, sizes, ga, fx.family, limits, 5, "test.toml");
         m->initialize(evaluator);
         const double first = m->stats().best;
         while (m->generation() < 25) m->step(evaluator);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "genome/families/tree_family.hpp"
 #include "genome/genome_file.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
@@ -36,7 +37,8 @@ void EvaluateCommand::run(const CommandContext&) {
     const EvaluateOptions& o = evaluateOptions;
     const RunSettings s = loadConfig(o.config, o.sets);
     const Grammar g = loadGrammar(s.grammarPath, s.grammarAttrs);
-    const Chromosome c = readGenome(g, s.limits, o.genome);
+    const TreeFamily family(g);
+    const Chromosome c = readGenome(family, g.path, s.limits, o.genome);
     std::cout << Scene::load(s, g)->evaluate(c).text << "\n";
 }
 

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "genome/families/tree_family.hpp"
 #include "grammar/front_ends.hpp"
 #include "run/command_options.hpp"
 #include "run/config_file.hpp"
@@ -70,7 +71,10 @@ void RunCommand::run(const CommandContext& context) {
     if (const int used = Evaluator::usableThreads(s.threads); s.threads > used && mpi.rank() == 0)
         std::cerr << "shapevo: warning: " << (o.threads >= 0 ? "--threads " : "run.threads = ") << s.threads
                   << " is more than the " << used << " hardware thread(s) this process may use; using " << used << "\n";
-    together(mpi, [&] { requireMemoryFits(s, loadGrammar(s.grammarPath, s.grammarAttrs), ranksOnThisMachine(), usableMemoryBytes()); });
+    together(mpi, [&] {
+        const Grammar grammar = loadGrammar(s.grammarPath, s.grammarAttrs);
+        requireMemoryFits(s, TreeFamily(grammar), ranksOnThisMachine(), usableMemoryBytes());
+    });
     JobOptions job;
     job.quiet = o.quiet;
     runJob(mpi, s, job, context.log);
