@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "checkpoint/checkpoint_file.hpp"
+#include "genome/families/graph_family.hpp"
 #include "genome/families/tree_family.hpp"
+#include "graph/read_graph_grammar.hpp"
 #include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
 
@@ -48,8 +50,13 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
                                                  std::to_string(islandsListed) + " island files");
     // The checkpoint carries its own grammar; chromosomes are checked against it. The genome
     // length limit is a run setting, not stored here, so any length is accepted for display.
-    const Grammar grammar = parseGrammar(m.grammarText, m.grammarPath, attrs);
-    const TreeFamily family(grammar);
+    // A 2D graph grammar's genome is a graph derivation's (genome/families/graph_family.hpp).
+    const bool graphGrammar = graph::isGraphGrammarPath(m.grammarPath);
+    const Grammar grammar = graphGrammar ? Grammar{} : parseGrammar(m.grammarText, m.grammarPath, attrs);
+    const graph::GraphGrammar graphs = graphGrammar ? graph::parseGraphGrammar(m.grammarText, m.grammarPath) : graph::GraphGrammar{};
+    const TreeFamily tree(grammar);
+    const GraphFamily drawings(graphs, {});
+    const GenomeFamily& family = graphGrammar ? static_cast<const GenomeFamily&>(drawings) : tree;
     const GenomeLimits anyLength{UINT32_MAX};
 
     std::ostringstream out;
@@ -63,8 +70,12 @@ std::string describeCheckpoint(const std::string& folder, bool verbose, const At
     out << format("  target hash  %016" PRIx64 "\n", m.targetHash);
     out << format("  wall time    %.1f s\n", m.wallSeconds);
     out << format("  config       %s (%zu bytes)\n", m.configPath.c_str(), m.configText.size());
-    out << format("  grammar      %s (%zu bytes, %zu rules)\n", m.grammarPath.c_str(), m.grammarText.size(),
-                  grammar.rules.size());
+    if (graphGrammar)
+        out << format("  grammar      %s (%zu bytes, %zu productions; genome: %s)\n", m.grammarPath.c_str(), m.grammarText.size(),
+                      graphs.productions.size(), std::string(family.name()).c_str());
+    else
+        out << format("  grammar      %s (%zu bytes, %zu rules)\n", m.grammarPath.c_str(), m.grammarText.size(),
+                      grammar.rules.size());
     if (m.curve.empty()) {
         out << "  curve        empty\n";
     } else {

@@ -23,6 +23,8 @@
 
 namespace shapevo {
 
+class GraphFamily;
+
 /// A family's genetic operators, as search methods apply them. Every output is a valid genome of
 /// the family within the limits the operators were made with (property tests prove it per family).
 /// All randomness comes from the Rng passed in, in a fixed order.
@@ -63,6 +65,8 @@ public:
     virtual const std::string& sourceText() const = 0;
     /// The tree grammar (SMC, SOSMC, RJMCMC, diversity); nullptr for a family without one.
     virtual const Grammar* treeGrammar() const = 0;
+    /// The graph-derivation family itself (what scores a drawing needs); nullptr for another.
+    virtual const GraphFamily* graphFamily() const { return nullptr; }
 };
 
 }  // namespace shapevo

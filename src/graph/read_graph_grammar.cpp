@@ -2,6 +2,8 @@
 // options.max_derivations, the SVG preamble — and the productions through read_production.cpp.
 #include "graph/read_graph_grammar.hpp"
 
+#include <filesystem>
+
 #include <fstream>
 #include <set>
 
@@ -181,6 +183,13 @@ GraphGrammar readGraphGrammar(const std::string& path) {
         }
     }
     return grammarOf(root, path, text);
+}
+
+bool isGraphGrammarPath(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext)
+        if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+    return ext == ".yml" || ext == ".yaml";
 }
 
 }  // namespace shapevo::graph

@@ -10,6 +10,8 @@
 namespace shapevo::graph {
 
 GraphGrammar readGraphGrammar(const std::string& path);
+/// True for a path read as a 2D graph grammar: .yml or .yaml (any case).
+bool isGraphGrammarPath(const std::string& path);
 /// The same from text already read (tests, fuzzing); `path` is used in messages only.
 GraphGrammar parseGraphGrammar(std::string_view text, const std::string& path);
 

@@ -36,8 +36,7 @@ std::uint64_t islandSeed(std::uint64_t seed, int rank) { return seed + 0x9e3779b
 
 class IslandLoop {
 public:
-    IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
-               const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+    IslandLoop(const MpiSession& mpi, const RunSettings& s, const LoadedModel& model, const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
                const JobOptions& options, std::ostream& log);
     IslandLoop(const IslandLoop&) = delete;
     IslandLoop& operator=(const IslandLoop&) = delete;
@@ -61,7 +60,7 @@ private:
 
     const MpiSession& mpi_;
     const RunSettings& s_;
-    const Grammar& grammar_;
+    const LoadedModel& model_;
     const GenomeFamily& family_;
     const Scene& scene_;
     const std::string& folder_;
@@ -92,14 +91,13 @@ private:
     bool saidCacheFull_ = false, saidModelsFull_ = false;
 };
 
-IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
-                       const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const LoadedModel& model, const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
                        const JobOptions& options, std::ostream& log)
-    : mpi_(mpi), s_(s), grammar_(grammar), family_(family), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
+    : mpi_(mpi), s_(s), model_(model), family_(model.family()), scene_(scene), folder_(folder), meta_(std::move(meta)), restored_(restored),
       options_(options), log_(log), clock_(mpi, meta_.wallSeconds), root_(mpi.rank() == 0),
       evaluator_(scene.scorer(), s.threads), anomaliesBefore_(scene.scorer().anomalies()),
-      method_(makeSearchMethod(s.search, s.population, s.ga, family, s.limits, islandSeed(s.seed, mpi.rank()), s.configPath)),
-      search_(*method_), migration_(mpi, s.migration, family, s.limits),
+      method_(makeSearchMethod(s.search, s.population, s.ga, family_, s.limits, islandSeed(s.seed, mpi.rank()), s.configPath)),
+      search_(*method_), migration_(mpi, s.migration, family_, s.limits),
       localCurve_(restored ? restored->curve : std::vector<GenerationStats>{}),
       checkpoints_(mpi, s.checkpoint, folder, log), progress_(log, s.population.generations, s.wallTime),
       islands_(mpi.active() ? mpi.size() : 1),
@@ -108,7 +106,7 @@ IslandLoop::IslandLoop(const MpiSession& mpi, const RunSettings& s, const Gramma
       async_(s.migration.async && islands_ > 1) {
     if (restored) migration_.restoreArrivals(restored->arrivals);
     installStopSignalHandlers();
-    if (root_ && s.search.diagnostics) diagnostics_.emplace(folder + "/diagnostics.csv", family);
+    if (root_ && s.search.diagnostics) diagnostics_.emplace(folder + "/diagnostics.csv", family_);
 }
 
 void IslandLoop::printStartLine() {
@@ -227,7 +225,7 @@ JobResult IslandLoop::end(JobResult result) {
     result.wallSeconds = clock_.runSeconds();
     result.stoppedBySignal = stop_.bySignal;
     if (root_) {
-        RunEnd outputs{s_, grammar_, family_, scene_, folder_, meta_, options_, std::move(champion.chromosome), totals,
+        RunEnd outputs{s_, model_, scene_, folder_, meta_, options_, std::move(champion.chromosome), totals,
                        search_.generation(), search_.population().size(), evaluator_.threads(), islands_, mpi_.size(), stop_};
         writeRunOutputs(outputs, result, log_);
     }
@@ -236,10 +234,10 @@ JobResult IslandLoop::end(JobResult result) {
 
 }  // namespace
 
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
-                     const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
-                     const JobOptions& options, std::ostream& log) {
-    IslandLoop loop(mpi, s, grammar, family, scene, folder, std::move(meta), restored, options, log);
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const LoadedModel& model, const Scene& scene,
+                     const std::string& folder, RunMetadata meta, const IslandState* restored, const JobOptions& options,
+                     std::ostream& log) {
+    IslandLoop loop(mpi, s, model, scene, folder, std::move(meta), restored, options, log);
     return loop.run();
 }
 

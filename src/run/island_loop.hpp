@@ -15,12 +15,11 @@
 
 namespace shapevo {
 
-/// `family` is the genome of `grammar` as the search, migration and genome file see it
-/// (genome/genome_family.hpp). `meta` carries the run's identity and, when resuming, its curve and
+/// `model` is the run's model family and grammar (run/models/loaded_model.hpp): its genome is what
+/// the search, migration and genome files see. `meta` carries the run's identity and, when resuming, its curve and
 /// time so far; `restored` is this rank's island from the checkpoint (null for a new run).
 /// Collective. Throws RunFailure when a checkpoint cannot be written.
-JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const Grammar& grammar, const GenomeFamily& family,
-                     const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
+JobResult islandLoop(const MpiSession& mpi, const RunSettings& s, const LoadedModel& model, const Scene& scene, const std::string& folder, RunMetadata meta, const IslandState* restored,
                      const JobOptions& options, std::ostream& log);
 
 }  // namespace shapevo

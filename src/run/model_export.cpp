@@ -30,7 +30,10 @@ std::string formatOfPath(const std::string& path) {
 
 std::vector<std::string_view> exportFormats() {
     std::vector<std::string_view> formats(kModelFormats.begin(), kModelFormats.end());
-    for (std::string_view f : targetExportFormats()) formats.push_back(f);
+    std::vector<std::string_view> more(kDrawingFormats.begin(), kDrawingFormats.end());
+    for (std::string_view f : targetExportFormats()) more.push_back(f);
+    for (std::string_view f : more)
+        if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     return formats;
 }
 
@@ -63,9 +66,9 @@ CheckpointBest bestOfCheckpoint(const std::string& folder) {
         throw InputError(folder, "", "not a complete checkpoint: " + problem);
     const RunMetadata meta = readRunMetadata(folder + "/run.h5");
     RunSettings settings = parseConfig(meta.configText, meta.configPath);
-    Grammar grammar = parseGrammar(meta.grammarText, meta.grammarPath, settings.grammarAttrs);
-    CheckpointBest b{std::move(settings), std::move(grammar), {}, {}};
-    const TreeFamily family(b.grammar);
+    CheckpointBest b{std::move(settings), nullptr, {}, {}};
+    b.model = LoadedModel::fromText(b.settings, meta.grammarText, meta.grammarPath);
+    const GenomeFamily& family = b.model->family();
     double bestFitness = -INFINITY;
     for (int r = 0; r < meta.ranks; ++r) {
         const IslandState island = readIslandFile(folder + "/" + islandFileName(r), family, b.settings.limits);
@@ -81,16 +84,14 @@ CheckpointBest bestOfCheckpoint(const std::string& folder) {
 
 std::string exportCheckpointBest(const CheckpointBest& b, std::string format, const std::string& path) {
     if (format.empty()) format = formatOfPath(path);
-    Geometry geo;
-    DeriveScratch scratch;
-    derive(b.grammar, b.best, geo, scratch);
+    const std::span<const std::string_view> own = b.model->modelFormats();
     const std::vector<std::string_view> all = exportFormats();
-    if (std::find(kModelFormats.begin(), kModelFormats.end(), format) != kModelFormats.end())
-        writeModelFile(geo, format, path, Replace::Never);
+    if (std::find(own.begin(), own.end(), format) != own.end())  // the family's own formats first (a drawing's png)
+        b.model->writeModel(b.best, format, path, Replace::Never);
     else if (std::find(all.begin(), all.end(), format) != all.end())
-        Scene::load(b.settings, b.grammar)->exportBest(b.best, format, path);
+        Scene::load(b.settings, *b.model)->exportBest(b.best, format, path);
     else throw InputError(path, "", "unknown format '" + format + "' (expected " + formatList(all) + ")");
-    return "wrote " + path + " (" + std::to_string(geo.primitives.size()) + " primitives; " + b.from + ")";
+    return "wrote " + path + " (" + b.model->describe(b.best) + "; " + b.from + ")";
 }
 
 }  // namespace shapevo

@@ -15,6 +15,7 @@
 #include "genome/chromosome.hpp"
 #include "shape/primitive.hpp"
 #include "grammar/grammar.hpp"
+#include "run/models/loaded_model.hpp"
 #include "run/settings.hpp"
 
 namespace shapevo {
@@ -24,9 +25,11 @@ std::string formatOfPath(const std::string& path);
 
 /// What `shapevo sample -o` writes (a mesh), what `shapevo target` writes.
 inline constexpr std::array<std::string_view, 3> kModelFormats{"obj", "ply", "glb"};
+/// What a 2D graph grammar's model is written as (run/models/graph_model.hpp).
+inline constexpr std::array<std::string_view, 2> kDrawingFormats{"svg", "png"};
 inline constexpr std::array<std::string_view, 1> kTargetFormats{"vdb"};
-/// What `shapevo export` writes: the mesh formats, then every target kind's export formats
-/// (score/target_kinds.hpp): obj, ply, glb, vdb, png.
+/// What `shapevo export` writes: the mesh formats, the drawing formats, then every target kind's
+/// export formats (score/target_kinds.hpp), each once: obj, ply, glb, svg, png, vdb.
 std::vector<std::string_view> exportFormats();
 /// "obj, ply, glb or png": formats for a message.
 std::string formatList(std::span<const std::string_view> formats);
@@ -47,11 +50,12 @@ std::string requireOutputFormat(const std::string& path, std::span<const std::st
 void writeModelFile(const Geometry& geometry, const std::string& format, const std::string& path,
                     Replace replace = Replace::Always);
 
-/// The best individual of a checkpoint over all islands, with the grammar and settings it needs
-/// (the grammar owns the meshes its geometry points to).
+/// The best individual of a checkpoint over all islands, with the model family (its grammar, as
+/// stored in the checkpoint) and the settings it needs (the grammar owns the meshes its geometry
+/// points to).
 struct CheckpointBest {
     RunSettings settings;
-    Grammar grammar;
+    std::unique_ptr<LoadedModel> model;
     Chromosome best;
     std::string from;  ///< "island R, fitness F"
 };

@@ -22,14 +22,6 @@ namespace shapevo {
 
 namespace {
 
-/// Every individual starts with the start rule's mandatory subtree; it must fit the length limit.
-void requireRootFits(const RunSettings& s, const Grammar& g) {
-    if (g.mandatoryGenes[g.start] > s.limits.maxGenes)
-        throw InputError(s.configPath, "[genome] max_genes",
-                         std::to_string(s.limits.maxGenes) + " is smaller than the " + std::to_string(g.mandatoryGenes[g.start]) +
-                             " genes every derivation of " + g.path + " needs");
-}
-
 void writeFile(const std::string& path, const std::string& text) {
     writeStreamAtomically(path, [&](std::ostream& out) { out << text; });
 }
@@ -37,12 +29,9 @@ void writeFile(const std::string& path, const std::string& text) {
 /// Every input file of a run: the config, the grammar, the files it includes, the meshes and
 /// textures it names and the targets (with the hashes of the bytes the scene read, where its kind
 /// kept them: a target is read once).
-std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g, const Scene& scene) {
+std::vector<InputFile> inputsOf(const RunSettings& s, const LoadedModel& model, const Scene& scene) {
     std::vector<InputFile> inputs{hashInput("config", s.configPath), hashInput("grammar", s.grammarPath)};
-    const std::filesystem::path grammarDir = std::filesystem::path(s.grammarPath).parent_path();
-    for (const std::string& f : g.includes) inputs.push_back(hashInput("include", (grammarDir / f).string()));
-    for (const MeshShape& m : g.meshes) inputs.push_back(hashInput("mesh", (grammarDir / m.path).string()));
-    for (const Texture& t : g.textures) inputs.push_back(hashInput("texture", t.file));
+    for (const auto& [role, path] : model.extraInputs(s.grammarPath)) inputs.push_back(hashInput(role, path));
     const std::vector<std::string> targets = s.target->inputFiles();
     const std::vector<std::uint64_t>& read = scene.targetInputHashes();
     for (std::size_t i = 0; i < targets.size(); ++i)
@@ -55,14 +44,13 @@ std::vector<InputFile> inputsOf(const RunSettings& s, const Grammar& g, const Sc
 
 JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& options, std::ostream& log) {
     // Read every input before creating anything, so bad input leaves no trace.
-    Grammar grammar;
+    std::unique_ptr<LoadedModel> model;
     std::unique_ptr<Scene> scene;
     RunMetadata meta;
     together(mpi, [&] {
-        grammar = loadGrammar(s.grammarPath, s.grammarAttrs);
-        requireRootFits(s, grammar);
-        scene = Scene::load(s, grammar);
-        if (mpi.rank() == 0) meta.inputs = inputsOf(s, grammar, *scene);
+        model = LoadedModel::load(s);
+        scene = Scene::load(s, *model);
+        if (mpi.rank() == 0) meta.inputs = inputsOf(s, *model, *scene);
     });
     std::string folder;
     RunFolderLock lock;
@@ -76,7 +64,7 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     if (mpi.rank() == 0)  // side by side: each waits for the disk (base/side_by_side.hpp)
         runSideBySide({[&] { writeRunId(folder, meta.runId); },
                        [&] { writeFile(folder + "/config.toml", s.configText); },
-                       [&] { writeFile(folder + "/" + std::filesystem::path(s.grammarPath).filename().string(), grammar.source); }});
+                       [&] { writeFile(folder + "/" + std::filesystem::path(s.grammarPath).filename().string(), model->source()); }});
     meta.seed = s.seed;
     meta.ranks = mpi.size();
     meta.targetHash = scene->hash();
@@ -84,9 +72,8 @@ JobResult runJob(const MpiSession& mpi, const RunSettings& s, const JobOptions& 
     meta.configPath = std::filesystem::absolute(s.configPath).lexically_normal().string();
     meta.configText = s.configText;
     meta.grammarPath = std::filesystem::absolute(s.grammarPath).lexically_normal().string();
-    meta.grammarText = grammar.source;
-    const TreeFamily family(grammar);
-    return islandLoop(mpi, s, grammar, family, *scene, folder, meta, nullptr, options, log);
+    meta.grammarText = model->source();
+    return islandLoop(mpi, s, *model, *scene, folder, meta, nullptr, options, log);
 }
 
 namespace {
@@ -154,7 +141,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
             continue;
         }
         RunSettings s;
-        Grammar grammar;
+        std::unique_ptr<LoadedModel> model;
         std::unique_ptr<Scene> scene;
         std::vector<std::string> changed;
         together(mpi, [&] {
@@ -172,14 +159,13 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
             if (options.generations) s.population.generations = *options.generations, s.generationsGiven = true;
             if (options.wallTime) s.wallTime = *options.wallTime;
             settleRunLimit(s);
-            grammar = parseGrammar(meta.grammarText, meta.grammarPath, s.grammarAttrs);
-            requireRootFits(s, grammar);
-            scene = Scene::load(s, grammar);
+            model = LoadedModel::fromText(s, meta.grammarText, meta.grammarPath);
+            scene = Scene::load(s, *model);
             if (scene->hash() != meta.targetHash && !options.allowChangedInputs)
                 throw InputError(scene->primaryFile(), "", "the target changed since the run started (hash differs); "
                                                              "resuming against another target is refused");
         });
-        const TreeFamily family(grammar);
+        const GenomeFamily& family = model->family();
         IslandState state;
         std::string readProblem;
         try {
@@ -201,7 +187,7 @@ JobResult resumeJob(const MpiSession& mpi, const std::string& runDir, const JobO
         }
         JobOptions withChanges = options;
         withChanges.changedInputs = changed;
-        return islandLoop(mpi, s, grammar, family, *scene, runDir, meta, &state, withChanges, log);
+        return islandLoop(mpi, s, *model, *scene, runDir, meta, &state, withChanges, log);
     }
     together(mpi, [&] {
         if (mpi.rank() == 0) throw InputError(runDir, "", "no complete checkpoint of this run to resume from");

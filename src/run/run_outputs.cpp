@@ -76,37 +76,30 @@ RunTotals gatherTotals(const MpiSession& mpi, const IslandTotals& own, const Loo
 
 namespace {
 
-/// The best model's files (best.png, best.obj, best.ply, best.glb, best.genome), the curves
-/// (curve.csv, curve.svg, curve.png) and the target kind's files (Scene::reportBest: best.vdb, ...),
-/// written side by side (base/side_by_side.hpp): each waits for the disk, and the pictures'
-/// drawing and compressing take most of the rest. A mesh with textures writes its OBJ once all
-/// the others exist, so that its images (report/texture_files.hpp) never take, nor lose, the name
-/// of another output. Fills the summary's primitive count and IoU.
+/// The best model's files (its family's: best.png, best.obj, best.ply, best.glb for a tree;
+/// best.svg, best.png for a drawing; and best.genome), the curves (curve.csv, curve.svg,
+/// curve.png) and the target kind's files (Scene::reportBest: best.vdb, best-overlay.png), written
+/// side by side (base/side_by_side.hpp): each waits for the disk, and the pictures' drawing and
+/// compressing take most of the rest; what must come last (a textured OBJ) comes after. Fills the
+/// summary's primitive count and IoU.
 void writeModelAndCurves(const RunEnd& end, RunSummary& sum) {
-    Geometry geometry;
-    DeriveScratch scratch;
-    derive(end.grammar, end.champion, geometry, scratch, end.s.limits.maxPrimitives);
-    sum.bestPrimitives = geometry.primitives.size();
-    const Mesh mesh = meshOf(geometry);
+    const std::unique_ptr<BestModelFiles> model = end.model.bestFiles(end.champion);
+    sum.bestPrimitives = model->size();
     const std::string& folder = end.folder;
     CurvePlotLabels plot;
     plot.title = (end.s.name.empty() ? std::string("shapevo run") : end.s.name) + ": " + end.scene.description();
     plot.iouName = end.scene.kind().iouName;
     const std::vector<GenerationStats>& curve = end.meta.curve;
-    const bool textured = !mesh.textures.empty();
     std::vector<std::function<void()>> jobs{
-        [&] { writeModelPicture(mesh, std::array{View::ThreeQuarter}, PictureSize{}, folder + "/best.png"); },
-        [&] { writePly(mesh, folder + "/best.ply"); },
-        [&] { writeGlb(mesh, folder + "/best.glb"); },
-        [&] { writeGenome(end.family, end.champion, folder + "/best.genome"); },
+        [&] { writeGenome(end.model.family(), end.champion, folder + "/best.genome"); },
         [&] { writeCurveCsv(curve, folder + "/curve.csv"); },
         [&] { writeCurveSvg(curve, plot, folder + "/curve.svg"); },
         [&] { writeCurvePng(curve, plot, folder + "/curve.png"); },
         [&] { end.scene.reportBest(end.champion, folder, sum); },
     };
-    if (!textured) jobs.push_back([&] { writeObj(mesh, folder + "/best.obj"); });
+    model->addJobs(folder, jobs);
     runSideBySide(jobs);
-    if (textured) writeObj(mesh, folder + "/best.obj");
+    model->afterJobs(folder);
 }
 
 /// The scorer's warnings (stderr): evaluations that got the worst fitness or were truncated.

@@ -59,8 +59,7 @@ RunTotals gatherTotals(const MpiSession& mpi, const IslandTotals& own, const Loo
 /// What rank 0 writes the outputs from.
 struct RunEnd {
     const RunSettings& s;
-    const Grammar& grammar;
-    const GenomeFamily& family;  ///< the grammar's genome (best.genome)
+    const LoadedModel& model;  ///< the run's model family: best.genome and the best model's files
     const Scene& scene;
     const std::string& folder;
     const RunMetadata& meta;  ///< the run's curve and identity

@@ -79,11 +79,6 @@ Derived deriveAndDraw(const graph::GraphGrammar& g, std::uint64_t seed, std::int
 
 }  // namespace sample_graphs_parts
 
-bool isGraphGrammarPath(const std::string& path) {
-    const std::string format = formatOfPath(path);
-    return format == "yml" || format == "yaml";
-}
-
 void sampleGraphs(const SampleRequest& r, std::ostream& out) {
     using namespace sample_graphs_parts;
     refuseTreeOptions(r);

@@ -9,12 +9,12 @@
 #include <iosfwd>
 #include <string>
 
+#include "graph/read_graph_grammar.hpp"
 #include "run/sample_models.hpp"
 
 namespace shapevo {
 
-/// True for a path `sample` reads as a graph grammar: .yml or .yaml (any case).
-bool isGraphGrammarPath(const std::string& path);
+using graph::isGraphGrammarPath;
 
 /// The margin `sample` adds around a graph grammar's vertices, in model units, when --margin is
 /// not given (the shapes on the border stay whole; --margin 0 is the original's canvas).

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "base/input_error.hpp"
+#include "genome/families/tree_family.hpp"
 #include "run/model_export.hpp"
 
 namespace shapevo {
@@ -18,7 +19,8 @@ namespace {
 void requireFiniteModels(const CheckModels& models, const RunSettings& s, const Grammar& g) {
     Geometry geometry;
     DeriveScratch scratch;
-    if (models.any(g, [&](const Chromosome& c) {
+    const TreeFamily family(g);
+    if (models.any(family, [&](const Chromosome& c) {
             return derive(g, c, geometry, scratch, s.limits.maxPrimitives) != DeriveStatus::NonFinite;
         }))
         return;
@@ -31,12 +33,18 @@ void requireFiniteModels(const CheckModels& models, const RunSettings& s, const 
 
 }  // namespace
 
+std::unique_ptr<Scene> Scene::load(const RunSettings& s, const LoadedModel& model) { return loadFor(s, model.family()); }
+
 std::unique_ptr<Scene> Scene::load(const RunSettings& s, const Grammar& g) {
+    return loadFor(s, TreeFamily(g));  // only the load reads the family: a tree kind's scorer refers to `g`
+}
+
+std::unique_ptr<Scene> Scene::loadFor(const RunSettings& s, const GenomeFamily& family) {
     std::unique_ptr<Scene> scene(new Scene);
     const CheckModels models{s.limits, s.population.initialGenesMin, s.population.initialGenesMax};
-    requireFiniteModels(models, s, g);
+    if (const Grammar* g = family.treeGrammar()) requireFiniteModels(models, s, *g);
     scene->kind_ = &s.target->kind();
-    scene->target_ = s.target->load({g, s.fitness, s.incremental, s.limits.maxPrimitives, models, s.configPath});
+    scene->target_ = s.target->load({family, s.fitness, s.incremental, s.limits.maxPrimitives, models, s.configPath});
     return scene;
 }
 

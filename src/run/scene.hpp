@@ -10,6 +10,7 @@
 #include <string>
 
 #include "report/run_report.hpp"
+#include "run/models/loaded_model.hpp"
 #include "run/settings.hpp"
 #include "score/scorer.hpp"
 #include "score/target_kind.hpp"
@@ -19,6 +20,9 @@ namespace shapevo {
 class Scene {
 public:
     /// Read the target named in `s`. @throw InputError on bad or missing files.
+    static std::unique_ptr<Scene> load(const RunSettings& s, const LoadedModel& model);
+    /// The same for a derivation-tree grammar held elsewhere (tests, benchmarks): its scorer
+    /// refers to `g`, which must outlive the scene.
     static std::unique_ptr<Scene> load(const RunSettings& s, const Grammar& g);
     ~Scene();
 
@@ -53,6 +57,7 @@ public:
 
 private:
     Scene() = default;
+    static std::unique_ptr<Scene> loadFor(const RunSettings& s, const GenomeFamily& family);
 
     const TargetKind* kind_ = nullptr;
     std::unique_ptr<LoadedTarget> target_;

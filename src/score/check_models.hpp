@@ -1,12 +1,12 @@
 // CheckModels: the fixed sample of random models that start-up checks try before a run begins
 // (run/scene.cpp: a grammar whose every model has a non-finite coordinate; the image kind: a
 // camera that sees none of them). Models of the run's initial sizes, from a fixed seed, so a
-// check is repeatable and every rank agrees.
+// check is repeatable and every rank agrees. Any model family: its operators' random genomes.
 #pragma once
 #include <cstdint>
 
 #include "genome/chromosome.hpp"
-#include "genome/operators.hpp"
+#include "genome/genome_family.hpp"
 #include "genome/random.hpp"
 
 namespace shapevo {
@@ -18,11 +18,12 @@ struct CheckModels {
 
     /// Give the models one by one to `f` until it returns true; returns whether it did.
     template <class F>
-    bool any(const Grammar& g, F&& f) const {
+    bool any(const GenomeFamily& family, F&& f) const {
         Rng rng(12345);
         Chromosome c;
+        const auto ops = family.makeOperators(limits);
         for (int i = 0; i < kCount; ++i) {
-            growRandomLength(g, c, rng, limits, initialGenesMin, initialGenesMax);
+            ops->randomGenome(c, rng, initialGenesMin, initialGenesMax);
             if (f(c)) return true;
         }
         return false;

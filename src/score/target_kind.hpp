@@ -19,6 +19,7 @@
 
 #include "base/section_reader.hpp"
 #include "genome/chromosome.hpp"
+#include "genome/genome_family.hpp"
 #include "grammar/grammar.hpp"
 #include "mesh/mesh.hpp"
 #include "score/check_models.hpp"
@@ -53,13 +54,17 @@ std::string evaluationText(const TargetKind& kind, double fitness, double iou, s
 
 /// What loading a target needs besides the kind's own settings.
 struct TargetLoadContext {
-    const Grammar& grammar;
+    const GenomeFamily& family;  ///< the run's model family (a kind asks it for a tree grammar or a graph family)
     const FitnessSettings& fitness;
     const IncrementalSettings& incremental;
     std::uint32_t maxPrimitives = 0;  ///< genome.max_primitives
     CheckModels checkModels;          ///< for the kind's start-up checks (a camera that sees nothing)
     std::string configPath;           ///< the file a start-up check's error names
 };
+
+/// The run's derivation-tree grammar, for a kind (or a scorer) that derives trees. @throw
+/// InputError naming the config's [target] for a family without one (a 2D graph grammar).
+const Grammar& requireTreeGrammar(const TargetLoadContext& context, const TargetKind& kind);
 
 /// A target loaded for a run: its scorer, and what a run reports and writes about it. Every
 /// command that scores (run, resume, evaluate, export) loads it through TargetSettings::load.

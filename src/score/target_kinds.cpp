@@ -4,6 +4,7 @@
 #include <array>
 
 #include "base/format_double.hpp"
+#include "base/input_error.hpp"
 #include "base/word_list.hpp"
 
 #include "score/image/image_kind.hpp"
@@ -35,6 +36,13 @@ std::vector<std::string_view> targetExportFormats() {
     std::vector<std::string_view> out;
     for (const TargetKind* k : kTargetKinds) out.insert(out.end(), k->exportFormats.begin(), k->exportFormats.end());
     return out;
+}
+
+const Grammar& requireTreeGrammar(const TargetLoadContext& context, const TargetKind& kind) {
+    if (const Grammar* g = context.family.treeGrammar()) return *g;
+    throw InputError(context.configPath, "[target]",
+                     std::string(kind.noun) + " is matched by a derivation tree's model; a " + std::string(context.family.name()) +
+                         " (a 2D graph grammar) draws pictures: give it an image target (image = \"FILE.png\")");
 }
 
 std::string countsText(std::initializer_list<NamedCount> counts) {

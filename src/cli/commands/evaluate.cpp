@@ -7,9 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "genome/families/tree_family.hpp"
 #include "genome/genome_file.hpp"
-#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 
@@ -36,10 +34,9 @@ void EvaluateCommand::addOptions(CLI::App& command) {
 void EvaluateCommand::run(const CommandContext&) {
     const EvaluateOptions& o = evaluateOptions;
     const RunSettings s = loadConfig(o.config, o.sets);
-    const Grammar g = loadGrammar(s.grammarPath, s.grammarAttrs);
-    const TreeFamily family(g);
-    const Chromosome c = readGenome(family, g.path, s.limits, o.genome);
-    std::cout << Scene::load(s, g)->evaluate(c).text << "\n";
+    const std::unique_ptr<LoadedModel> model = LoadedModel::load(s);
+    const Chromosome c = readGenome(model->family(), s.grammarPath, s.limits, o.genome);
+    std::cout << Scene::load(s, *model)->evaluate(c).text << "\n";
 }
 
 }  // namespace shapevo

@@ -51,18 +51,14 @@ void RenderCommand::run(const CommandContext&) {
     refuseExisting(o.out);
     const std::vector<View> views = parseViews(o.view);
     const PictureSize size = parsePictureSize(o.size);
-    Mesh mesh;
-    std::string what = o.path;
     if (std::filesystem::is_directory(o.path) || formatOfPath(o.path) == "h5") {
         const CheckpointBest b = bestOfCheckpoint(resolveCheckpointPath(o.path));
-        Geometry geo;
-        DeriveScratch scratch;
-        derive(b.grammar, b.best, geo, scratch, b.settings.limits.maxPrimitives);
-        mesh = meshOf(geo);
-        what = "best model: " + b.from;
-    } else {
-        mesh = readMesh(o.path);
+        const std::string drew = b.model->render(b.best, views, o.view, size, o.out);
+        std::cout << "wrote " << o.out << " (" << drew << "; best model: " << b.from << ")\n";
+        return;
     }
+    const Mesh mesh = readMesh(o.path);
+    const std::string what = o.path;
     writeModelPicture(mesh, views, size, o.out);
     std::cout << "wrote " << o.out << " (" << size.width * int(views.size()) << "x" << size.height << ", " << o.view << " view"
               << (views.size() > 1 ? "s" : "") << " of " << mesh.triangles.size() << " triangles; " << what << ")\n";

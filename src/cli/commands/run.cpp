@@ -10,8 +10,9 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "genome/families/tree_family.hpp"
-#include "grammar/front_ends.hpp"
+#include "base/input_error.hpp"
+#include "run/models/loaded_model.hpp"
+#include "search/search_methods.hpp"
 #include "run/command_options.hpp"
 #include "run/config_file.hpp"
 #include "island/together.hpp"
@@ -72,8 +73,10 @@ void RunCommand::run(const CommandContext& context) {
         std::cerr << "shapevo: warning: " << (o.threads >= 0 ? "--threads " : "run.threads = ") << s.threads
                   << " is more than the " << used << " hardware thread(s) this process may use; using " << used << "\n";
     together(mpi, [&] {
-        const Grammar grammar = loadGrammar(s.grammarPath, s.grammarAttrs);
-        requireMemoryFits(s, TreeFamily(grammar), ranksOnThisMachine(), usableMemoryBytes());
+        const std::unique_ptr<LoadedModel> model = LoadedModel::load(s);
+        if (const std::string problem = methodFamilyProblem(s.search, model->family()); !problem.empty())
+            throw InputError(s.configPath, "search.method", problem);
+        requireMemoryFits(s, model->family(), ranksOnThisMachine(), usableMemoryBytes());
     });
     JobOptions job;
     job.quiet = o.quiet;

@@ -43,6 +43,7 @@ public:
     std::string check(const Chromosome& c, const GenomeLimits& limits) const override { return checkGraphGenome(c, limits.maxGenes); }
     const std::string& sourceText() const override { return grammar_.source; }
     const Grammar* treeGrammar() const override { return nullptr; }
+    const GraphFamily* graphFamily() const override { return this; }
 
     const graph::GraphGrammar& grammar() const { return grammar_; }
     const graph::DeriveLimits& limits() const { return limits_; }

@@ -94,7 +94,9 @@ double DrawingScorer::score(const Chromosome& c, Workspace& w, SilhouetteCounts*
     try {
         const graph::DeriveResult r = family_.derive(c, &record->record);
         w.steps = r.steps;
-        w.raster.rasterize(graph::drawingOf(r.graph, family_.grammar().names, family_.grammar().path), frame_);
+        const graph::Drawing drawing = graph::drawingOf(r.graph, family_.grammar().names, family_.grammar().path);
+        w.shapes = drawing.shapes.size();
+        w.raster.rasterize(drawing, frame_);
     } catch (const InputError&) {
         countAgain(DeriveStatus::NonFinite);
         w.status = DeriveStatus::NonFinite;

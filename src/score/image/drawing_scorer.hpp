@@ -32,6 +32,7 @@ public:
         graph::DrawingRaster raster;
         std::vector<std::uint64_t> grown, row;  ///< the model's pixels grown by the tolerance; one row's spread
         std::int64_t steps = 0;                 ///< the last derivation's steps
+        std::size_t shapes = 0;                 ///< the last drawing's shapes
     };
 
     /// `target` must outlive the scorer; `frame` has the target's size.

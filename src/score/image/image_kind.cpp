@@ -11,6 +11,7 @@
 #include "base/input_error.hpp"
 #include "mesh/mesh_repair.hpp"
 #include "score/image/image_scorer.hpp"
+#include "score/image/loaded_drawing.hpp"
 #include "score/image/mesh_image_target.hpp"
 #include "score/image/overlay_image.hpp"
 
@@ -78,14 +79,14 @@ std::string groundNote(const Camera& c) {
 /// check models must cover at least one pixel between them.
 void requireVisible(const TargetLoadContext& c, const ImageScorer& scorer) {
     ImageScorer::Workspace ws(scorer.camera());
-    if (c.checkModels.any(c.grammar, [&](const Chromosome& m) {
+    if (c.checkModels.any(c.family, [&](const Chromosome& m) {
             SilhouetteCounts counts;
             scorer.fitness(m, ws, &counts);
             return counts.covered > 0;
         }))
         return;
     throw InputError(c.configPath, "[camera]",
-                     "sees nothing: none of " + std::to_string(CheckModels::kCount) + " random models of " + c.grammar.path +
+                     "sees nothing: none of " + std::to_string(CheckModels::kCount) + " random models of " + scorer.grammar().path +
                          " covers a single pixel of the picture; point the camera (or the shadow's ground rectangle) at "
                          "where the grammar builds");
 }
@@ -95,7 +96,10 @@ public:
     LoadedImage(const ImageTargetSettings& s, const TargetLoadContext& c)
         : camera_(Camera::compile(s.camera, c.configPath)),
           target_(loadImageTarget(s.png, s.rule, camera_.width(), camera_.height(), s.fit, s.scale)),
-          scorer_(c.grammar, camera_, target_, c.fitness) {
+          scorer_(requireTreeGrammar(c, imageTargetKind), camera_, target_, c.fitness) {
+        if (s.tolerance > 0)
+            throw InputError(c.configPath, "[target] tolerance",
+                             "applies to the drawings of 2D graph grammars; a silhouette is matched pixel for pixel");
         scorer_.setMaxPrimitives(c.maxPrimitives);
         scorer_.setIncremental(c.incremental.cacheBytes(), c.incremental.check);
         hash_ = target_.hash;
@@ -228,6 +232,10 @@ std::unique_ptr<TargetSettings> ImageTargetSettings::read(SectionReader& r) {
         if (!known)
             r.fail("fit", "target.fit must be \"contain\", \"cover\", \"stretch\" or \"exact\", got \"" + shortened(fit) + "\"");
     }
+    readInt(r, "tolerance", s->tolerance, 0, 32,
+            "image, for a 2D graph grammar's drawing: a drawn pixel within this many pixels of a pixel to cover is not "
+            "counted as avoided, and a pixel to cover within it of a drawn pixel counts as covered (thin line art); 0 = "
+            "exact");
     r.number("scale", s->scale, 0.01, 1.0,
              "image, with fit = \"contain\" or \"stretch\": the share of the frame's width and height the fitted "
              "picture may take, centred (the rest is don't care)");
@@ -246,6 +254,7 @@ void ImageTargetSettings::finish(ConfigReader& config, const std::string&) {
 }
 
 std::unique_ptr<LoadedTarget> ImageTargetSettings::load(const TargetLoadContext& context) const {
+    if (const GraphFamily* graph = context.family.graphFamily()) return loadDrawingTarget(*this, context, *graph);
     return std::make_unique<LoadedImage>(*this, context);
 }
 

@@ -5,6 +5,9 @@
 //   cover = "auto" (default) | "dark" | "light" | "opaque"  or  hit_min, hit_max, avoid_min, avoid_max;
 //   alpha_threshold
 //   fit = "contain" | "cover" | "stretch" | "exact";  scale (contain and stretch only)
+//   tolerance (2D graph grammars' drawings: score/image/drawing_scorer.hpp)
+// A tree grammar's model is seen as a silhouette or shadow; a 2D graph grammar's drawing from the
+// front (score/image/loaded_drawing.hpp).
 // and its own section [camera] (projection and its settings). Its IoU is the silhouette IoU
 // ("silhouette_iou"), the preset target.cover = "auto" chose is its LoadedTarget::choices(), its
 // best-model output best-overlay.png (the silhouette against the picture), its export format png,
@@ -28,6 +31,7 @@ public:
     PixelRule rule;
     TargetFit fit = TargetFit::Contain;
     double scale = 1.0;  ///< target.scale: the share of the frame's width and height a fitted picture may take
+    int tolerance = 0;   ///< target.tolerance: pixels a drawing's thin lines may be off (graph grammars only)
     CameraSpec camera;
 
     const TargetKind& kind() const override { return imageTargetKind; }

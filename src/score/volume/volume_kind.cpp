@@ -15,7 +15,7 @@ namespace {
 class LoadedVolume final : public LoadedTarget {
 public:
     LoadedVolume(const VolumeTargetSettings& s, const TargetLoadContext& c)
-        : target_(loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr)), scorer_(c.grammar, target_, c.fitness) {
+        : target_(loadVolumeTarget(s.targets, s.grid ? &*s.grid : nullptr)), scorer_(requireTreeGrammar(c, volumeTargetKind), target_, c.fitness) {
         scorer_.setMaxPrimitives(c.maxPrimitives);
         scorer_.setIncremental(c.incremental.cacheBytes(), c.incremental.check);
         hash_ = target_.hash;

@@ -1,0 +1,93 @@
+// Runs of a 2D graph grammar (the graph-derivation model family, issue 42) through every command
+// a tree grammar's run has: the run folder's drawing, overlay, curve and genome; evaluate agrees
+// with summary.json; export svg / png, render and inspect take the run; a run stopped and resumed
+// equals the uninterrupted one; search methods that need a tree and volume targets are refused
+// with a located message and exit 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../test_support.hpp"
+
+namespace graph_run_test {
+
+using shapevo::test::readFile;
+using shapevo::test::runShapevo;
+using shapevo::test::sourcePath;
+using shapevo::test::TempDir;
+
+const std::string kConfig = sourcePath("configs/graph-tree-sketch.toml");
+const std::string kSmall = " --set run.wall_time=0 --set ga.population=16 --set ga.elitism=4 --threads 1 -q";
+
+std::string summaryValue(const std::string& summary, const std::string& key) {
+    const auto at = summary.find("\"" + key + "\": ");
+    if (at == std::string::npos) return "(no " + key + ")";
+    const auto from = at + key.size() + 4;
+    return summary.substr(from, summary.find_first_of(",\n}", from) - from);
+}
+
+std::string evaluated(const std::string& output, const std::string& key) {
+    const auto at = output.find(key + " ");
+    if (at == std::string::npos) return "(no " + key + ")";
+    const auto from = at + key.size() + 1;
+    return output.substr(from, output.find_first_of(" \n", from) - from);
+}
+
+TEST(GraphRun, WritesItsDrawingOverlayCurveAndGenomeAndEvaluateAgrees) {
+    TempDir dir;
+    const auto run = runShapevo("run " + kConfig + " --out " + dir.file("run") + kSmall + " --set ga.generations=3");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (const char* f : {"best.svg", "best.png", "best-overlay.png", "best.genome", "curve.csv", "summary.json", "tree.yml"})
+        EXPECT_TRUE(std::filesystem::exists(dir.file(std::string("run/") + f))) << f;
+    EXPECT_NE(readFile(dir.file("run/best.svg")).find("<svg"), std::string::npos);
+    const std::string summary = readFile(dir.file("run/summary.json"));
+    const auto e = runShapevo("evaluate " + kConfig + " " + dir.file("run/best.genome"));
+    ASSERT_EQ(e.exitCode, 0) << e.output;
+    EXPECT_EQ(evaluated(e.output, "fitness"), summaryValue(summary, "best_fitness")) << e.output << summary;
+    EXPECT_EQ(evaluated(e.output, "silhouette_iou"), summaryValue(summary, "silhouette_iou")) << e.output << summary;
+    EXPECT_EQ(evaluated(e.output, "primitives"), summaryValue(summary, "best_primitives")) << e.output << summary;
+
+    const auto svg = runShapevo("export " + dir.file("run") + " --best --format svg -o " + dir.file("best.svg"));
+    ASSERT_EQ(svg.exitCode, 0) << svg.output;
+    EXPECT_EQ(readFile(dir.file("best.svg")), readFile(dir.file("run/best.svg")));
+    const auto png = runShapevo("export " + dir.file("run") + " --best --format png -o " + dir.file("best.png"));
+    ASSERT_EQ(png.exitCode, 0) << png.output;
+    EXPECT_EQ(runShapevo("export " + dir.file("run") + " --best --format png -o " + dir.file("best.png")).exitCode, 2)
+        << "an existing file is never replaced";
+    const auto render = runShapevo("render " + dir.file("run") + " -o " + dir.file("render.png") + " --size 200x150");
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_NE(render.output.find("200x150 drawing of"), std::string::npos) << render.output;
+    const auto inspect = runShapevo("inspect " + dir.file("run"));
+    ASSERT_EQ(inspect.exitCode, 0) << inspect.output;
+    EXPECT_NE(inspect.output.find("productions; genome: graph derivation"), std::string::npos) << inspect.output;
+}
+
+TEST(GraphRun, AStoppedAndResumedRunEqualsTheUninterruptedOne) {
+    TempDir dir;
+    ASSERT_EQ(runShapevo("run " + kConfig + " --out " + dir.file("whole") + kSmall + " --set ga.generations=6").exitCode, 0);
+    ASSERT_EQ(runShapevo("run " + kConfig + " --out " + dir.file("part") + kSmall + " --set ga.generations=3").exitCode, 0);
+    const auto resumed = runShapevo("resume " + dir.file("part") + " --generations 6 -q");
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_EQ(readFile(dir.file("part/best.genome")), readFile(dir.file("whole/best.genome")));
+    EXPECT_EQ(shapevo::test::curveWithoutTime(readFile(dir.file("part/curve.csv"))),
+              shapevo::test::curveWithoutTime(readFile(dir.file("whole/curve.csv"))));
+}
+
+TEST(GraphRun, SearchMethodsThatNeedATreeAndVolumeTargetsAreRefused) {
+    TempDir dir;
+    for (const char* method : {"smc", "sosmc", "rjmcmc"}) {
+        const auto r = runShapevo("run " + kConfig + " --out " + dir.file(method) + kSmall + " --set search.method=" + method);
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find("search.method"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("needs a derivation-tree grammar"), std::string::npos) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir.file(method))) << "bad input leaves no run folder";
+    }
+    shapevo::test::writeFile(dir.file("volume.toml"), "[grammar]\nfile = \"" + sourcePath("grammars/graph/tree.yml") +
+                                                          "\"\n[target]\nfill = \"" + sourcePath("targets/castle.vdb") + "\"\n");
+    const auto v = runShapevo("run " + dir.file("volume.toml") + " --out " + dir.file("v") + kSmall);
+    EXPECT_EQ(v.exitCode, 2) << v.output;
+    EXPECT_NE(v.output.find("give it an image target"), std::string::npos) << v.output;
+    EXPECT_NE(v.output.find("volume.toml"), std::string::npos) << v.output;
+}
+
+}  // namespace graph_run_test
