@@ -30,8 +30,8 @@ std::string formatOfPath(const std::string& path) {
 
 std::vector<std::string_view> exportFormats() {
     std::vector<std::string_view> formats(kModelFormats.begin(), kModelFormats.end());
-    std::vector<std::string_view> more(kDrawingFormats.begin(), kDrawingFormats.end());
-    for (std::string_view f : targetExportFormats()) more.push_back(f);
+    std::vector<std::string_view> more = targetExportFormats();
+    more.insert(more.end(), kDrawingFormats.begin(), kDrawingFormats.end());
     for (std::string_view f : more)
         if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     return formats;

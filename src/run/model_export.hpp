@@ -28,8 +28,8 @@ inline constexpr std::array<std::string_view, 3> kModelFormats{"obj", "ply", "gl
 /// What a 2D graph grammar's model is written as (run/models/graph_model.hpp).
 inline constexpr std::array<std::string_view, 2> kDrawingFormats{"svg", "png"};
 inline constexpr std::array<std::string_view, 1> kTargetFormats{"vdb"};
-/// What `shapevo export` writes: the mesh formats, the drawing formats, then every target kind's
-/// export formats (score/target_kinds.hpp), each once: obj, ply, glb, svg, png, vdb.
+/// What `shapevo export` writes: the mesh formats, every target kind's export formats
+/// (score/target_kinds.hpp), then the drawing formats, each once: obj, ply, glb, vdb, png, svg.
 std::vector<std::string_view> exportFormats();
 /// "obj, ply, glb or png": formats for a message.
 std::string formatList(std::span<const std::string_view> formats);

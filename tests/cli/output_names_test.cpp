@@ -65,7 +65,7 @@ TempDir* OutputExtension::run_ = nullptr;
 TEST_F(OutputExtension, ExportNeedsAModelVolumeOrImageExtension) {
     TempDir dir;
     const std::string run = run_->file("r");
-    const std::string accepted = "-o takes a .obj, .ply, .glb, .vdb or .png file";
+    const std::string accepted = "-o takes a .obj, .ply, .glb, .vdb, .png or .svg file";
     expectRefused("export " + run + " --best -o " + dir.file("out/noext"),
                   dir.file("out/noext") + ": has no file extension; " + accepted, dir.file("out"));
     expectRefused("export " + run + " --best -o " + dir.file("x.foo"),
