@@ -10,6 +10,7 @@
 #include "grammar/front_ends.hpp"
 #include "search/genetic_algorithm.hpp"
 #include "search/hybrid_search.hpp"
+#include "search/random_sampling.hpp"
 #include "search/rjmcmc.hpp"
 #include "search/smc.hpp"
 
@@ -73,6 +74,10 @@ std::unique_ptr<SearchMethod> makeGa(const SearchSettings&, const PopulationSett
                                      const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
     return std::make_unique<GeneticAlgorithm>(family, p, ga, limits, seed);
 }
+std::unique_ptr<SearchMethod> makeRandom(const SearchSettings&, const PopulationSettings& p, const GaSettings&,
+                                         const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
+    return std::make_unique<RandomSampling>(family, p, limits, seed);
+}
 // needsTree: makeSearchMethod has checked that treeGrammar() is not null
 std::unique_ptr<SearchMethod> makeSmc(const SearchSettings& s, const PopulationSettings& p, const GaSettings&,
                                       const GenomeFamily& family, const GenomeLimits& limits, std::uint64_t seed) {
@@ -88,16 +93,18 @@ std::unique_ptr<SearchMethod> makeRjmcmc(const SearchSettings& s, const Populati
 }
 
 // populationCopies: GA pop_ + next_; SMC pop_ + next_; RJMCMC pop_ + proposals_ + second_ + star_.
-// hybrid: pop_ + next_ (+ a few refine proposals).
+// hybrid: pop_ + next_ (+ a few refine proposals). random: pop_ + next_ + merged_.
 // needsTree: SMC and SOSMC decide a tree's child positions one by one (genome/sequential_growth.hpp),
 // RJMCMC regrows below a non-terminal with a reversible pairing of the tree's genes (genome/regrow.hpp).
-constexpr std::array<SearchMethodEntry, 5> kMethods{{
+constexpr std::array<SearchMethodEntry, 6> kMethods{{
     {"hybrid", "GA islands in one process, mostly mutation, elites refined by local moves (the default)", readHybrid,
      makeHybrid, 3, false},
     {"ga", "genetic algorithm on whole derivations (ShapeGenetics)", readNothing, makeGa, 2, false},
     {"smc", "sequential Monte Carlo, growing in chromosome order (Ritchie et al. 2015)", readSmc, makeSmc, 2, true},
     {"sosmc", "stochastically-ordered SMC, growing in random order (Ritchie et al. 2015)", readSmc, makeSosmc, 2, true},
     {"rjmcmc", "reversible-jump MCMC with parallel tempering (Talton et al. 2011)", readRjmcmc, makeRjmcmc, 4, true},
+    {"random", "random sampling: the best of as many random derivations (the baseline to beat)", readNothing, makeRandom, 3,
+     false},
 }};
 
 }  // namespace

@@ -62,7 +62,7 @@ TEST(SearchMethodCli, UnknownMethodOrKeyIsAnInputError) {
     TempDir dir;
     const auto bad = runShapevo("run " + spaceshipConfig() + " --set search.method=annealing --out " + dir.file("a") + " -q");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
-    EXPECT_NE(bad.output.find("search.method must be \"hybrid\", \"ga\", \"smc\", \"sosmc\" or \"rjmcmc\", got \"annealing\""),
+    EXPECT_NE(bad.output.find("search.method must be \"hybrid\", \"ga\", \"smc\", \"sosmc\", \"rjmcmc\" or \"random\", got \"annealing\""),
               std::string::npos) << bad.output;
     const auto key = runShapevo("run " + spaceshipConfig() + " --set search.rjmcmc_temprature=1 --out " + dir.file("b") + " -q");
     EXPECT_EQ(key.exitCode, 2) << key.output;

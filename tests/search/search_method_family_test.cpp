@@ -84,7 +84,7 @@ TEST(SearchMethodFamilies, MethodsThatNeedATreeAreRefusedForAFamilyWithoutOne) {
             EXPECT_EQ(e.where(), "search.method");
             EXPECT_EQ(e.message(), "search.method = \"" + s.method +
                                        "\" needs a derivation-tree grammar (a \".grammar\" or \".rule\" file); counter "
-                                       "genomes run with \"hybrid\" or \"ga\"");
+                                       "genomes run with \"hybrid\", \"ga\" or \"random\"");
         }
     }
     EXPECT_EQ(refused, 3) << "smc, sosmc and rjmcmc need a tree";
