@@ -10,6 +10,9 @@
 #include <string_view>
 
 #include "base/atomic_write.hpp"
+#include "genome/families/graph_family.hpp"
+#include "genome/genome_file.hpp"
+#include "graph/keyed_draws.hpp"
 #include "base/input_error.hpp"
 #include "graph/derive.hpp"
 #include "graph/drawing.hpp"
@@ -59,7 +62,6 @@ void refuseTreeOptions(const SampleRequest& r) {
     };
     if (r.minGenesGiven) refuse("--min-genes", "a derivation's size window");
     if (r.maxGenesGiven) refuse("--max-genes", "a derivation's size window");
-    if (!r.genomeOutput.empty()) refuse("--genome", "saving the chromosome");
     if (!r.attrs.empty()) refuse("--attr", "replacing a grammar attr");
 }
 
@@ -68,11 +70,14 @@ struct Derived {
     graph::Drawing drawing;
 };
 
-Derived deriveAndDraw(const graph::GraphGrammar& g, std::uint64_t seed, std::int64_t steps) {
-    graph::SeededDraws draws(seed);
+/// The derivation of `seed`: the original's sequential draws, or (keyed) the genome of root seed
+/// `seed` and no override (genome/families/graph_genome.hpp), as a run's genomes derive.
+Derived deriveAndDraw(const graph::GraphGrammar& g, std::uint64_t seed, std::int64_t steps, bool keyed) {
+    graph::SeededDraws seeded(seed);
+    graph::KeyedDraws byKey(seed, {});
     graph::DeriveLimits limits;
     limits.maxSteps = steps;
-    Derived d{graph::deriveGraph(g, 0, draws, limits), {}};
+    Derived d{graph::deriveGraph(g, 0, keyed ? static_cast<graph::DrawSource&>(byKey) : seeded, limits), {}};
     d.drawing = graph::drawingOf(d.result.graph, g.names, g.path);
     return d;
 }
@@ -95,13 +100,19 @@ void sampleGraphs(const SampleRequest& r, std::ostream& out) {
     const bool defaultCap = steps == 0 && g.globalLimit == 0;
     if (defaultCap) steps = kDefaultGraphSampleSteps;
     for (std::uint32_t k = 1; k <= count; ++k) refuseExisting(numberedPath(r.output, k, count));
+    // --genome: the derivations a genome makes (keyed), each genome written beside its drawing.
+    const bool keyed = !r.genomeOutput.empty();
+    if (keyed) {
+        requireOutputFormat(r.genomeOutput, kGenomeFormats, "--genome");
+        for (std::uint32_t k = 1; k <= count; ++k) refuseExisting(numberedPath(r.genomeOutput, k, count));
+    }
     // Every derivation is made and drawn once before anything is written, so one that fails
     // leaves no files behind; the second time repeats the first exactly.
-    for (std::uint32_t k = 1; k <= count; ++k) deriveAndDraw(g, seed + (k - 1), steps);
+    for (std::uint32_t k = 1; k <= count; ++k) deriveAndDraw(g, seed + (k - 1), steps, keyed);
     const std::string name = std::filesystem::path(r.grammarPath).filename().string();
     for (std::uint32_t k = 1; k <= count; ++k) {
         const std::uint64_t seedK = seed + (k - 1);  // wraps mod 2^64
-        const Derived d = deriveAndDraw(g, seedK, steps);
+        const Derived d = deriveAndDraw(g, seedK, steps, keyed);
         const std::string path = numberedPath(r.output, k, count);
         const graph::DrawingCanvas canvas = graph::canvasOf(d.drawing, margin);
         if (png) {
@@ -114,7 +125,15 @@ void sampleGraphs(const SampleRequest& r, std::ostream& out) {
         out << name << " seed " << seedK << ": " << d.result.steps << (d.result.steps == 1 ? " step, " : " steps, ")
             << h.liveVertices() << (h.liveVertices() == 1 ? " vertex, " : " vertices, ") << h.liveEdges()
             << (h.liveEdges() == 1 ? " edge (" : " edges (") << h.danglingEdges() << " dangling), " << h.elements()
-            << (h.elements() == 1 ? " element -> " : " elements -> ") << path << "\n";
+            << (h.elements() == 1 ? " element -> " : " elements -> ") << path;
+        if (keyed) {
+            Chromosome c;
+            makeGraphGenome(c, seedK);
+            const std::string genomePath = numberedPath(r.genomeOutput, k, count);
+            writeGenome(GraphFamily(g, {}), c, genomePath);
+            out << ", genome -> " << genomePath;
+        }
+        out << "\n";
         if (defaultCap && d.result.stop == graph::DeriveResult::Stop::StepLimit)
             out << "  stopped at " << steps << " steps, sample's default limit for a file without options.max_derivations "
                    "(--steps N for another)\n";

@@ -3,7 +3,10 @@
 // written as SVG (graph/svg_writer.hpp) or PNG (report/graph_picture.hpp). Promises: file k is
 // the derivation of seed + k - 1, the same bytes on every machine; every option and output name
 // is checked and every derivation made and drawn before anything is written, so bad input leaves
-// no files behind; an existing file is never replaced.
+// no files behind; an existing file is never replaced. With --genome, each derivation is the one a
+// genome of root seed seed + k - 1 makes (keyed decisions, as a run's genomes derive; its drawing
+// differs from the seed's sequential one) and that genome is written too (G.genome, numbered like
+// the drawings), for `evaluate`, `target G.genome --image` or a run's comparison.
 #pragma once
 #include <cstdint>
 #include <iosfwd>

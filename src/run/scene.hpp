@@ -54,6 +54,8 @@ public:
     /// calls, it saves allocating the raster or voxel rows each time). Like every scoring, it
     /// adds to scorer().anomalies().
     double iou(const Chromosome& c, ScoreWorkspace& workspace) const { return target_->iou(c, workspace); }
+    /// Model `c` drawn as a target of the scene's kind at `path` (LoadedTarget::drawModelTarget).
+    std::uint64_t drawModelTarget(const Chromosome& c, const std::string& path) const { return target_->drawModelTarget(c, path); }
 
 private:
     Scene() = default;

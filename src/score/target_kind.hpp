@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/input_error.hpp"
 #include "base/section_reader.hpp"
 #include "genome/chromosome.hpp"
 #include "genome/genome_family.hpp"
@@ -96,6 +97,14 @@ public:
     virtual double writeBest(const Chromosome& best, const std::string& folder) const = 0;
     /// `shapevo export --format F`, F one of TargetKind::exportFormats (the caller checks).
     virtual void exportBest(const Chromosome& best, const std::string& format, const std::string& path) const = 0;
+    /// `shapevo target G.genome --image CONFIG -o OUT.png`: model `c` drawn as a target of this
+    /// kind, one the model reaches exactly (a picture: black where the model covers a pixel, white
+    /// elsewhere, read as hit / avoid by cover "dark"). Returns the pixels covered. @throw
+    /// InputError(path) for a kind that cannot (a volume: `export --format vdb` makes one).
+    virtual std::uint64_t drawModelTarget(const Chromosome& c, const std::string& path) const {
+        (void)c;
+        throw InputError(path, "", "this target kind cannot draw a model as a target");
+    }
 
 protected:
     /// Set by the kind's constructor: hash(), description(), primaryFile(), choices(), inputHashes().

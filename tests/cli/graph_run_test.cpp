@@ -90,4 +90,23 @@ TEST(GraphRun, SearchMethodsThatNeedATreeAndVolumeTargetsAreRefused) {
     EXPECT_NE(v.output.find("volume.toml"), std::string::npos) << v.output;
 }
 
+TEST(GraphRun, AGenomeDrawnAsATargetIsReachedExactlyByThatGenome) {
+    TempDir dir;
+    const auto sample = runShapevo("sample " + sourcePath("grammars/graph/facade.yml") + " --seed 11 --genome " + dir.file("f.genome") +
+                                   " -o " + dir.file("f.svg"));
+    ASSERT_EQ(sample.exitCode, 0) << sample.output;
+    EXPECT_NE(sample.output.find("genome -> " + dir.file("f.genome")), std::string::npos) << sample.output;
+    // the config's frame, with any picture: the target is drawn through it
+    const auto target = runShapevo("target " + dir.file("f.genome") + " --image " + sourcePath("configs/graph-facade-reachable.toml") +
+                                   " -o " + dir.file("t.png"));
+    ASSERT_EQ(target.exitCode, 0) << target.output;
+    const std::string config = readFile(sourcePath("configs/graph-facade-reachable.toml"));
+    shapevo::test::writeFile(dir.file("c.toml"), "[grammar]\nfile = \"" + sourcePath("grammars/graph/facade.yml") + "\"\n[target]\nimage = \"" +
+                                                     dir.file("t.png") + "\"\ncover = \"dark\"\n" + config.substr(config.find("[camera]")));
+    const auto e = runShapevo("evaluate " + dir.file("c.toml") + " " + dir.file("f.genome"));
+    ASSERT_EQ(e.exitCode, 0) << e.output;
+    EXPECT_NE(e.output.find("silhouette_iou 1 "), std::string::npos) << e.output;
+    EXPECT_EQ(runShapevo("target " + dir.file("f.genome") + " -o " + dir.file("u.png")).exitCode, 2) << "needs --image";
+}
+
 }  // namespace graph_run_test

@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "run/model_export.hpp"
+#include "run/target_from_genome.hpp"
 #include "run/target_from_mesh.hpp"
 
 namespace shapevo {
@@ -22,7 +24,8 @@ void TargetCommand::addOptions(CLI::App& command) {
                                            "extension's error lists them all; a scene's meshes are merged in world space); for "
                                            "a volume its inside must be determinable (holes filled, at most half its surface) and enclose a "
                                            "volume; a mesh without a valid face (all degenerate) or with a face index out of "
-                                           "range is refused")
+                                           "range is refused; or a .genome file of the --image config's grammar, whose model is drawn through its frame (a "
+                                           "target the model reaches exactly)")
         ->required();
     command.add_option("-o,--output", o.output, "output .vdb, or .png with --image (must not exist)")->required();
     auto* voxelOpt = command.add_option("--voxel-size", o.voxelSize,
@@ -35,6 +38,9 @@ void TargetCommand::addOptions(CLI::App& command) {
         ->excludes(voxelOpt);
 }
 
-void TargetCommand::run(const CommandContext&) { makeTargetFromMesh(targetOptions, std::cout, std::cerr); }
+void TargetCommand::run(const CommandContext&) {
+    if (formatOfPath(targetOptions.meshPath) == "genome") return makeTargetFromGenome(targetOptions, std::cout);
+    makeTargetFromMesh(targetOptions, std::cout, std::cerr);
+}
 
 }  // namespace shapevo

@@ -137,6 +137,15 @@ public:
     void exportBest(const Chromosome& best, const std::string&, const std::string& path) const override {
         writeOverlay(best, path);
     }
+    std::uint64_t drawModelTarget(const Chromosome& c, const std::string& path) const override {
+        ImageScorer::Workspace ws(camera_);
+        std::vector<std::uint8_t> mask;
+        scorer_.modelMask(c, ws, mask);
+        writeMaskPng(path, target_.width, target_.height, mask);
+        std::uint64_t covered = 0;
+        for (std::uint8_t m : mask) covered += m != 0;
+        return covered;
+    }
 
 private:
     /// The model's silhouette over the target as a PNG; returns its IoU.

@@ -70,6 +70,16 @@ public:
     }
     double writeBest(const Chromosome& best, const std::string& folder) const override { return writeOverlay(best, folder + "/best-overlay.png"); }
     void exportBest(const Chromosome& best, const std::string&, const std::string& path) const override { writeOverlay(best, path); }
+    std::uint64_t drawModelTarget(const Chromosome& c, const std::string& path) const override {
+        DrawingScorer::Workspace ws;
+        SilhouetteCounts counts;
+        scorer_.score(c, ws, &counts);
+        std::vector<std::uint8_t> mask(std::size_t(target_.width) * std::size_t(target_.height), 0);
+        for (int y = 0; y < target_.height && counts.covered > 0; ++y)
+            for (int x = 0; x < target_.width; ++x) mask[std::size_t(y) * std::size_t(target_.width) + std::size_t(x)] = ws.raster.covered(x, y);
+        writeMaskPng(path, target_.width, target_.height, mask);
+        return counts.covered;
+    }
 
 private:
     /// Some of the check models must cover a pixel: a frame that shows nothing makes the search blind.

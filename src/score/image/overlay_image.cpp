@@ -1,6 +1,8 @@
 // Overlay image: classify each pixel (hit / missed / extra / avoid / background) and write a PNG.
 #include "score/image/overlay_image.hpp"
 
+#include <filesystem>
+
 #include <vector>
 
 #include "base/input_error.hpp"
@@ -24,6 +26,14 @@ void writeOverlayPng(const std::string& path, int width, int height, const std::
         const Rgba c = overlayColour(target[i], model[i] != 0);
         for (int k = 0; k < 4; ++k) rgba[i * 4 + std::size_t(k)] = c[std::size_t(k)];
     }
+    writePngRgba(path, width, height, rgba);
+}
+
+void writeMaskPng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& mask) {
+    if (std::filesystem::exists(path)) throw InputError(path, "", "already exists; refusing to overwrite it");
+    std::vector<std::uint8_t> rgba(mask.size() * 4, 255);
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        if (mask[i]) rgba[i * 4] = rgba[i * 4 + 1] = rgba[i * 4 + 2] = 0;
     writePngRgba(path, width, height, rgba);
 }
 

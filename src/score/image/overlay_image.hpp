@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "image/rgba.hpp"
 
@@ -32,5 +33,10 @@ Rgba overlayColour(std::uint8_t target, bool model);
 /// @throw InputError naming `path` if the size is not positive or the file cannot be written.
 void writeOverlayPng(const std::string& path, int width, int height, const std::uint8_t* target,
                      const std::uint8_t* model);
+
+/// Writes `mask` (per pixel 0 or non-zero, row-major, row 0 at the top) as an opaque PNG, black
+/// where non-zero and white elsewhere: a target picture that cover "dark" reads as the mask. The
+/// file appears atomically and never replaces one. @throw InputError naming `path`.
+void writeMaskPng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& mask);
 
 }  // namespace shapevo
