@@ -65,6 +65,9 @@ public:
     virtual const std::string& sourceText() const = 0;
     /// The tree grammar (SMC, SOSMC, RJMCMC, diversity); nullptr for a family without one.
     virtual const Grammar* treeGrammar() const = 0;
+    /// The words of a family's largest gene (the memory estimate), for a family without a tree
+    /// grammar (a tree's come from its rules).
+    virtual std::uint32_t largestGeneWords() const { return 1; }
     /// The graph-derivation family itself (what scores a drawing needs); nullptr for another.
     virtual const GraphFamily* graphFamily() const { return nullptr; }
 };

@@ -3,7 +3,7 @@
 // geometry in model units (y up) and its SVG attributes (the defaults of its kind, replaced or
 // extended by the element's `.svg_<name>` attributes). The SVG writer (svg_writer.hpp) and the
 // PNG painter (report/graph_picture.hpp) both draw from it alone, so they agree; a rasterizer
-// for scoring can use it the same way. The same graph gives the same Drawing, byte for byte.
+// for scoring (drawing_raster.hpp) reads it the same way. The same graph gives the same Drawing, byte for byte.
 #pragma once
 #include <cstdint>
 #include <string>

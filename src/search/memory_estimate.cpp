@@ -16,7 +16,7 @@ MemoryEstimate searchMemoryEstimate(const GenomeFamily& family, const SearchSett
     if (const Grammar* g = family.treeGrammar())
         for (const Rule& r : g->rules) e.largestGeneWords = std::max(e.largestGeneWords, r.geneWords());
     else
-        e.largestGeneWords = 1;  // a family without a tree: a chromosome's words, one per gene
+        e.largestGeneWords = family.largestGeneWords();  // a family without a tree says it
     const double perIndividual = double(sizeof(Chromosome) + sizeof(double)) +
                                  double(limits.maxGenes) * 4.0 * double(e.largestGeneWords);
     e.bytes = double(population.population) * double(e.copies) * perIndividual;

@@ -44,6 +44,7 @@ public:
     const std::string& sourceText() const override { return grammar_.source; }
     const Grammar* treeGrammar() const override { return nullptr; }
     const GraphFamily* graphFamily() const override { return this; }
+    std::uint32_t largestGeneWords() const override { return std::uint32_t(graph::kOverrideWords); }
 
     const graph::GraphGrammar& grammar() const { return grammar_; }
     const graph::DeriveLimits& limits() const { return limits_; }
