@@ -143,6 +143,23 @@ inline std::string curveWithoutTime(const std::string& csv) {
     return out;
 }
 
+/// The text of `key`'s value in summary.json (a number, as written).
+inline std::string summaryValue(const std::string& summary, const std::string& key) {
+    const std::string quoted = "\"" + key + "\": ";
+    const auto at = summary.find(quoted);
+    if (at == std::string::npos) return "(no " + key + ")";
+    const auto from = at + quoted.size();
+    return summary.substr(from, summary.find_first_of(",\n}", from) - from);
+}
+
+/// The word after `key ` in `shapevo evaluate`'s line ("fitness 0.5  silhouette_iou 0.2 ...").
+inline std::string evaluatedValue(const std::string& output, const std::string& key) {
+    const auto at = output.find(key + " ");
+    if (at == std::string::npos) return "(no " + key + ")";
+    const auto from = at + key.size() + 1;
+    return output.substr(from, output.find_first_of(" \n", from) - from);
+}
+
 inline std::string readFile(const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return {};

@@ -8,29 +8,14 @@
 namespace shapevo {
 namespace {
 
+using test::evaluatedValue;
 using test::readFile;
+using test::summaryValue;
 using test::runShapevo;
 using test::sourcePath;
 using test::TempDir;
 
 const std::string kSmallEvaluate = " --set ga.population=30 --set ga.generations=6 --set ga.elitism=6 -q";
-
-/// The text of `key`'s value in summary.json (a number, as written).
-std::string summaryValue(const std::string& summary, const std::string& key) {
-    const std::string quoted = "\"" + key + "\": ";
-    const auto at = summary.find(quoted);
-    if (at == std::string::npos) return "(no " + key + ")";
-    const auto from = at + quoted.size();
-    return summary.substr(from, summary.find_first_of(",\n}", from) - from);
-}
-
-/// The word after `key ` in evaluate's line.
-std::string evaluated(const std::string& output, const std::string& key) {
-    const auto at = output.find(key + " ");
-    if (at == std::string::npos) return "(no " + key + ")";
-    const auto from = at + key.size() + 1;
-    return output.substr(from, output.find_first_of(" \n", from) - from);
-}
 
 /// Run `config` with `overrides`, evaluate its best.genome with `evalOverrides`, and compare.
 void expectEvaluateMatchesRun(const std::string& config, const std::string& overrides, const std::string& iouKey,
@@ -42,10 +27,10 @@ void expectEvaluateMatchesRun(const std::string& config, const std::string& over
     const std::string summary = readFile(dir.file("run/summary.json"));
     const auto r = runShapevo("evaluate " + cfg + " " + dir.file("run/best.genome") + evalOverrides);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_EQ(evaluated(r.output, "fitness"), summaryValue(summary, "best_fitness")) << r.output << summary;
-    EXPECT_EQ(evaluated(r.output, iouKey), summaryValue(summary, iouKey)) << r.output << summary;
-    EXPECT_EQ(evaluated(r.output, "genes"), summaryValue(summary, "best_genes")) << r.output << summary;
-    EXPECT_EQ(evaluated(r.output, "primitives"), summaryValue(summary, "best_primitives")) << r.output << summary;
+    EXPECT_EQ(evaluatedValue(r.output, "fitness"), summaryValue(summary, "best_fitness")) << r.output << summary;
+    EXPECT_EQ(evaluatedValue(r.output, iouKey), summaryValue(summary, iouKey)) << r.output << summary;
+    EXPECT_EQ(evaluatedValue(r.output, "genes"), summaryValue(summary, "best_genes")) << r.output << summary;
+    EXPECT_EQ(evaluatedValue(r.output, "primitives"), summaryValue(summary, "best_primitives")) << r.output << summary;
 }
 
 TEST(Evaluate, ImageConfigGivesTheRunsBestFitness) {
@@ -65,7 +50,7 @@ TEST(Evaluate, SetOverridesScoreAsInTheRun) {
     ASSERT_EQ(runShapevo("run " + cfg + " --out " + dir.file("run") + kSmallEvaluate + weighted).exitCode, 0);
     const auto plain = runShapevo("evaluate " + cfg + " " + dir.file("run/best.genome"));
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
-    EXPECT_NE(evaluated(plain.output, "fitness"), summaryValue(readFile(dir.file("run/summary.json")), "best_fitness"));
+    EXPECT_NE(evaluatedValue(plain.output, "fitness"), summaryValue(readFile(dir.file("run/summary.json")), "best_fitness"));
 }
 
 TEST(Evaluate, ImageConfigWithAnotherGrammarsGenomeIsRefused) {

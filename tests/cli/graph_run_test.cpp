@@ -11,27 +11,15 @@
 
 namespace graph_run_test {
 
+using shapevo::test::evaluatedValue;
 using shapevo::test::readFile;
+using shapevo::test::summaryValue;
 using shapevo::test::runShapevo;
 using shapevo::test::sourcePath;
 using shapevo::test::TempDir;
 
 const std::string kConfig = sourcePath("configs/graph-tree-sketch.toml");
 const std::string kSmall = " --set run.wall_time=0 --set ga.population=16 --set ga.elitism=4 --threads 1 -q";
-
-std::string summaryValue(const std::string& summary, const std::string& key) {
-    const auto at = summary.find("\"" + key + "\": ");
-    if (at == std::string::npos) return "(no " + key + ")";
-    const auto from = at + key.size() + 4;
-    return summary.substr(from, summary.find_first_of(",\n}", from) - from);
-}
-
-std::string evaluated(const std::string& output, const std::string& key) {
-    const auto at = output.find(key + " ");
-    if (at == std::string::npos) return "(no " + key + ")";
-    const auto from = at + key.size() + 1;
-    return output.substr(from, output.find_first_of(" \n", from) - from);
-}
 
 TEST(GraphRun, WritesItsDrawingOverlayCurveAndGenomeAndEvaluateAgrees) {
     TempDir dir;
@@ -43,9 +31,9 @@ TEST(GraphRun, WritesItsDrawingOverlayCurveAndGenomeAndEvaluateAgrees) {
     const std::string summary = readFile(dir.file("run/summary.json"));
     const auto e = runShapevo("evaluate " + kConfig + " " + dir.file("run/best.genome"));
     ASSERT_EQ(e.exitCode, 0) << e.output;
-    EXPECT_EQ(evaluated(e.output, "fitness"), summaryValue(summary, "best_fitness")) << e.output << summary;
-    EXPECT_EQ(evaluated(e.output, "silhouette_iou"), summaryValue(summary, "silhouette_iou")) << e.output << summary;
-    EXPECT_EQ(evaluated(e.output, "primitives"), summaryValue(summary, "best_primitives")) << e.output << summary;
+    EXPECT_EQ(evaluatedValue(e.output, "fitness"), summaryValue(summary, "best_fitness")) << e.output << summary;
+    EXPECT_EQ(evaluatedValue(e.output, "silhouette_iou"), summaryValue(summary, "silhouette_iou")) << e.output << summary;
+    EXPECT_EQ(evaluatedValue(e.output, "primitives"), summaryValue(summary, "best_primitives")) << e.output << summary;
 
     const auto svg = runShapevo("export " + dir.file("run") + " --best --format svg -o " + dir.file("best.svg"));
     ASSERT_EQ(svg.exitCode, 0) << svg.output;
