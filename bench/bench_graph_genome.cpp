@@ -167,6 +167,7 @@ GRAPH_GENOME_BENCHES(tree, "tree.yml")
 GRAPH_GENOME_BENCHES(radial, "radial.yml")
 GRAPH_GENOME_BENCHES(tiled, "tiled.yml")
 GRAPH_GENOME_BENCHES(facade, "facade.yml")
+GRAPH_GENOME_BENCHES(mosaic, "mosaic.yml")
 
 }  // namespace
 

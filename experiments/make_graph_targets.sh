@@ -3,6 +3,7 @@
 #   targets/graph/facade-reachable.png  the drawing of the facade grammar's genome of root seed 11
 #     (`shapevo sample --seed 11 --genome`), drawn exactly through configs/graph-facade-reachable.toml's
 #     camera (`shapevo target G.genome --image CONFIG`): a target the search can reach.
+#   targets/graph/power-logo.png  the logo of configs/graph-mosaic-logo.toml (experiments/make_logo.py).
 # Usage: experiments/make_graph_targets.sh [path/to/shapevo]   (default build/shapevo); run from
 # the repository's root. Existing targets are left alone (delete one to make it again).
 set -eu
@@ -15,4 +16,8 @@ if [ ! -e targets/graph/facade-reachable.png ]; then
   sed "s|^image = .*|image = \"$(pwd)/targets/shapegenetics/tree_target_sketch1.png\"|; s|^file = \"\.\./|file = \"$(pwd)/|" \
     configs/graph-facade-reachable.toml > "$tmp/frame.toml"
   "$bin" target "$tmp/facade-11.genome" --image "$tmp/frame.toml" -o targets/graph/facade-reachable.png
+fi
+if [ ! -e targets/graph/power-logo.png ]; then
+  python3 experiments/make_logo.py targets/graph/power-logo.png
+  echo "wrote targets/graph/power-logo.png"
 fi

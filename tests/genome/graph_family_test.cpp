@@ -83,7 +83,7 @@ class EveryShippedGraphGrammar : public ::testing::TestWithParam<const char*> {}
 TEST_P(EveryShippedGraphGrammar, OperatorSequencesGiveValidGenomesThatDeriveWithinTheLimits) { runOperatorSequences(GetParam(), 200, 5); }
 
 INSTANTIATE_TEST_SUITE_P(GraphFamily, EveryShippedGraphGrammar,
-                         ::testing::Values("koch.yml", "tree.yml", "radial.yml", "tiled.yml", "facade.yml"));
+                         ::testing::Values("koch.yml", "tree.yml", "radial.yml", "tiled.yml", "facade.yml", "mosaic.yml"));
 
 class EveryShippedGraphGrammarSlow : public ::testing::TestWithParam<const char*> {};
 
@@ -91,7 +91,7 @@ class EveryShippedGraphGrammarSlow : public ::testing::TestWithParam<const char*
 TEST_P(EveryShippedGraphGrammarSlow, TenThousandOperatorSequencesGiveValidGenomes) { runOperatorSequences(GetParam(), 10000, 2); }
 
 INSTANTIATE_TEST_SUITE_P(GraphFamily, EveryShippedGraphGrammarSlow,
-                         ::testing::Values("koch.yml", "tree.yml", "radial.yml", "tiled.yml", "facade.yml"));
+                         ::testing::Values("koch.yml", "tree.yml", "radial.yml", "tiled.yml", "facade.yml", "mosaic.yml"));
 
 TEST(GraphFamily, ARecordFromScoringAndOneDerivedByTheOperatorGiveTheSameChildren) {
     const graph::GraphGrammar g = shippedGraph("tree.yml");

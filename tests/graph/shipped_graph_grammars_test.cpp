@@ -247,6 +247,59 @@ TEST(ShippedGraphGrammars, TiledTilesCoverTheSheetWithoutOverlapping) {
     EXPECT_GE(counts.size(), 5u) << "the tile count varies with the seed";
 }
 
+// --- mosaic.yml -------------------------------------------------------------------------------
+
+TEST(ShippedGraphGrammars, MosaicTilesMakeUpTheSheetAndEachHoldsAtMostOneStoneInsideIt) {
+    const GraphGrammar g = shipped("mosaic.yml");
+    std::set<std::size_t> counts;
+    for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+        const DeriveResult r = deriveSeeded(g, seed);
+        EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
+        struct Box {
+            Vec2 lo, hi;
+        };
+        std::vector<Box> tiles;
+        double area = 0;
+        for (const HostEdge& e : r.graph.edges()) {
+            if (!e.alive || !textAttrIs(g, e.attrs, "kind", "tile")) continue;
+            const Vec2 a = r.graph.vertex(e.vertex1).position, b = r.graph.vertex(e.vertex2).position;
+            const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
+            EXPECT_GE(hi.x - lo.x, 0.5 - 1e-12) << "the smallest tile is 0.5 wide";
+            EXPECT_NEAR(hi.y - lo.y, hi.x - lo.x, 1e-12) << "a tile is square";
+            area += (hi.x - lo.x) * (hi.y - lo.y);
+            tiles.push_back({lo, hi});
+        }
+        EXPECT_NEAR(area, 64.0, 1e-9) << "seed " << seed << ": the tiles make up the 8 x 8 sheet";
+        for (std::size_t i = 0; i < tiles.size(); ++i)
+            for (std::size_t j = i + 1; j < tiles.size(); ++j) {
+                const double w = std::min(tiles[i].hi.x, tiles[j].hi.x) - std::max(tiles[i].lo.x, tiles[j].lo.x);
+                const double h = std::min(tiles[i].hi.y, tiles[j].hi.y) - std::max(tiles[i].lo.y, tiles[j].lo.y);
+                EXPECT_FALSE(w > 1e-9 && h > 1e-9) << "seed " << seed << ": tiles " << i << " and " << j << " overlap";
+            }
+        // Every stone sits at the centre of its own tile.
+        std::size_t stones = 0;
+        std::vector<int> used(tiles.size(), 0);
+        for (const HostVertex& v : r.graph.vertices()) {
+            if (!v.alive || !textAttrIs(g, v.attrs, "role", "stone")) continue;
+            ++stones;
+            int in = -1;
+            for (std::size_t t = 0; t < tiles.size(); ++t)
+                if (std::abs(v.position.x - (tiles[t].lo.x + tiles[t].hi.x) / 2) < 1e-9 &&
+                    std::abs(v.position.y - (tiles[t].lo.y + tiles[t].hi.y) / 2) < 1e-9)
+                    in = int(t);
+            ASSERT_GE(in, 0) << "seed " << seed << ": a stone off every tile's centre";
+            EXPECT_EQ(++used[std::size_t(in)], 1) << "seed " << seed << ": two stones on one tile";
+        }
+        const std::size_t t = tiles.size();
+        ASSERT_EQ((t - 4) % 3, 0u) << "seed " << seed;
+        const std::size_t cuts = (t - 4) / 3;
+        EXPECT_EQ(r.graph.elements(), 3 + 8 * (1 + cuts) + 2 * stones) << "seed " << seed;
+        EXPECT_EQ(firedOf(g, r, "Lay tile"), std::int64_t(t)) << "every tile is laid once";
+        counts.insert(t);
+    }
+    EXPECT_GE(counts.size(), 5u) << "the tile count varies with the seed";
+}
+
 TEST(ShippedGraphGrammars, TiledEveryTileGetsOneGlazeAndOneMotifAtItsCentre) {
     const GraphGrammar g = shipped("tiled.yml");
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
