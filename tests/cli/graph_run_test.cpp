@@ -97,4 +97,33 @@ TEST(GraphRun, AGenomeDrawnAsATargetIsReachedExactlyByThatGenome) {
     EXPECT_EQ(runShapevo("target " + dir.file("f.genome") + " -o " + dir.file("u.png")).exitCode, 2) << "needs --image";
 }
 
+TEST(GraphRun, BadInputToTheNewCommandsIsALocatedErrorWithExit2) {
+    TempDir dir;
+    // a camera that does not look at the drawing from the front
+    const auto side = runShapevo("run " + kConfig + " --out " + dir.file("side") + kSmall + " --set camera.eye=[5.0,7.27,10.0]");
+    EXPECT_EQ(side.exitCode, 2) << side.output;
+    EXPECT_NE(side.output.find("graph-tree-sketch.toml:[camera]: a 2D graph grammar's drawing is seen from the front"),
+              std::string::npos) << side.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("side")));
+    // target.tolerance on a tree grammar's silhouette
+    const auto tree = runShapevo("run " + sourcePath("configs/tree-sketch.toml") + " --out " + dir.file("t") + kSmall +
+                                 " --set target.tolerance=2");
+    EXPECT_EQ(tree.exitCode, 2) << tree.output;
+    EXPECT_NE(tree.output.find("[target] tolerance"), std::string::npos) << tree.output;
+    // a genome of another grammar, for evaluate and target
+    ASSERT_EQ(runShapevo("sample " + sourcePath("grammars/graph/mosaic.yml") + " --genome " + dir.file("m.genome") + " -o " +
+                         dir.file("m.svg")).exitCode, 0);
+    const auto other = runShapevo("evaluate " + kConfig + " " + dir.file("m.genome"));
+    EXPECT_EQ(other.exitCode, 2) << other.output;
+    EXPECT_NE(other.output.find(dir.file("m.genome")), std::string::npos) << other.output;
+    const auto target = runShapevo("target " + dir.file("m.genome") + " --image " + kConfig + " -o " + dir.file("x.png"));
+    EXPECT_EQ(target.exitCode, 2) << target.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+    // sample --genome refuses an existing genome file before drawing anything
+    const auto again = runShapevo("sample " + sourcePath("grammars/graph/mosaic.yml") + " --genome " + dir.file("m.genome") + " -o " +
+                                  dir.file("n.svg"));
+    EXPECT_EQ(again.exitCode, 2) << again.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("n.svg")));
+}
+
 }  // namespace graph_run_test

@@ -1,0 +1,108 @@
+// bench_graph_scenes: the 2D graph-grammar scenes' evaluations (docs/evolving-graph-grammars.md,
+// "Measurements"). Per scene, on one thread: BM_Evaluate (what the search pays per model: the
+// keyed derivation with its decision record, the drawing, the exact raster in the target's frame,
+// the counts), and its parts: BM_Derive (the derivation alone), BM_Draw (derivation + drawing),
+// BM_Raster (the raster of a drawing made once). Models are the genomes the family's operators
+// make from random genomes (a child: one grow, alter or regrow), as a search scores them.
+//
+//   cd build && ninja bench_graph_scenes && ./bench/bench_graph_scenes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "graph/drawing_raster.hpp"
+#include "run/config_file.hpp"
+#include "run/models/loaded_model.hpp"
+#include "run/scene.hpp"
+#include "score/image/drawing_scorer.hpp"
+
+#include "bench_main.hpp"
+
+namespace {
+
+using namespace shapevo;
+
+struct SceneBench {
+    RunSettings settings;
+    std::unique_ptr<LoadedModel> model;
+    std::unique_ptr<Scene> scene;
+    std::vector<Chromosome> children;  ///< a child of each of 64 random genomes
+};
+
+SceneBench& scene(const std::string& name) {
+    static std::vector<std::pair<std::string, std::unique_ptr<SceneBench>>> cache;
+    for (auto& [n, s] : cache)
+        if (n == name) return *s;
+    auto s = std::make_unique<SceneBench>();
+    s->settings = loadConfig(std::string(SHAPEVO_SOURCE_DIR "/configs/") + name + ".toml");
+    s->model = LoadedModel::load(s->settings);
+    s->scene = Scene::load(s->settings, *s->model);
+    auto ops = s->model->family().makeOperators(s->settings.limits);
+    Rng rng(42);
+    auto ws = s->scene->scorer().makeWorkspace();
+    for (int i = 0; i < 64; ++i) {
+        Chromosome parent, child;
+        ops->randomGenome(parent, rng, 1, 1);
+        s->scene->scorer().fitness(parent, *ws);  // its record, as scoring leaves it
+        parent.lineage = Lineage{ws->made};
+        child = parent;
+        switch (i % 3) {
+        case 0: ops->grow(child, rng); break;
+        case 1: ops->alter(child, rng) || ops->grow(child, rng); break;
+        default: if (!ops->regrow(parent, child, rng)) child = parent; break;
+        }
+        child.lineage = {};
+        s->children.push_back(std::move(child));
+    }
+    cache.emplace_back(name, std::move(s));
+    return *cache.back().second;
+}
+
+void evaluate(benchmark::State& state, const char* name) {
+    SceneBench& s = scene(name);
+    auto ws = s.scene->scorer().makeWorkspace();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(s.scene->scorer().fitness(s.children[i++ % s.children.size()], *ws));
+    state.counters["evaluations/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void derive(benchmark::State& state, const char* name, bool draw) {
+    SceneBench& s = scene(name);
+    const GraphFamily& family = *s.model->graph();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const graph::DeriveResult r = family.derive(s.children[i++ % s.children.size()]);
+        if (draw) benchmark::DoNotOptimize(graph::drawingOf(r.graph, family.grammar().names, family.grammar().path).shapes.size());
+        benchmark::DoNotOptimize(r.steps);
+    }
+}
+
+void raster(benchmark::State& state, const char* name) {
+    SceneBench& s = scene(name);
+    const auto& scorer = static_cast<const DrawingScorer&>(s.scene->scorer());
+    std::vector<graph::Drawing> drawings;
+    for (const Chromosome& c : s.children) drawings.push_back(scorer.drawing(c));
+    graph::DrawingRaster r;
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(r.rasterize(drawings[i++ % drawings.size()], scorer.frame()));
+}
+
+#define GRAPH_SCENE_BENCHES(id, name)                                                                  \
+    void BM_Evaluate_##id(benchmark::State& s) { evaluate(s, name); }                                  \
+    BENCHMARK(BM_Evaluate_##id)->Unit(benchmark::kMillisecond);                                         \
+    void BM_Derive_##id(benchmark::State& s) { derive(s, name, false); }                               \
+    BENCHMARK(BM_Derive_##id)->Unit(benchmark::kMillisecond);                                           \
+    void BM_Draw_##id(benchmark::State& s) { derive(s, name, true); }                                  \
+    BENCHMARK(BM_Draw_##id)->Unit(benchmark::kMillisecond);                                             \
+    void BM_Raster_##id(benchmark::State& s) { raster(s, name); }                                      \
+    BENCHMARK(BM_Raster_##id)->Unit(benchmark::kMillisecond);
+
+GRAPH_SCENE_BENCHES(tree_sketch, "graph-tree-sketch")
+GRAPH_SCENE_BENCHES(facade_reachable, "graph-facade-reachable")
+GRAPH_SCENE_BENCHES(mosaic_logo, "graph-mosaic-logo")
+
+}  // namespace
+
+SHAPEVO_BENCHMARK_MAIN();
