@@ -1,8 +1,9 @@
 // Runs of a 2D graph grammar (the graph-derivation model family, issue 42) through every command
 // a tree grammar's run has: the run folder's drawing, overlay, curve and genome; evaluate agrees
 // with summary.json; export svg / png, render and inspect take the run; a run stopped and resumed
-// equals the uninterrupted one; search methods that need a tree and volume targets are refused
-// with a located message and exit 2.
+// equals the uninterrupted one; two ranks with migration repeat byte for byte; a genome drawn as
+// a target is reached exactly; search methods that need a tree, volume targets and the new
+// commands' bad inputs are refused with a located message and exit 2.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -59,6 +60,19 @@ TEST(GraphRun, AStoppedAndResumedRunEqualsTheUninterruptedOne) {
     EXPECT_EQ(readFile(dir.file("part/best.genome")), readFile(dir.file("whole/best.genome")));
     EXPECT_EQ(shapevo::test::curveWithoutTime(readFile(dir.file("part/curve.csv"))),
               shapevo::test::curveWithoutTime(readFile(dir.file("whole/curve.csv"))));
+}
+
+TEST(GraphRun, ASeededTwoRankRunWithMigrationRepeatsByteForByte) {
+    TempDir dir;
+    const std::string args = " --set ga.generations=6 --set migration.interval=2" + kSmall;
+    const auto a = shapevo::test::runShapevoMpi(2, "run " + kConfig + " --out " + dir.file("a") + args);
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    const auto b = shapevo::test::runShapevoMpi(2, "run " + kConfig + " --out " + dir.file("b") + args);
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    EXPECT_NE(readFile(dir.file("a/summary.json")).find("\"islands\": 2"), std::string::npos);
+    EXPECT_EQ(readFile(dir.file("a/best.genome")), readFile(dir.file("b/best.genome")));
+    EXPECT_EQ(shapevo::test::curveWithoutTime(readFile(dir.file("a/curve.csv"))),
+              shapevo::test::curveWithoutTime(readFile(dir.file("b/curve.csv"))));
 }
 
 TEST(GraphRun, SearchMethodsThatNeedATreeAndVolumeTargetsAreRefused) {
