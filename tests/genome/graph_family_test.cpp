@@ -80,7 +80,7 @@ void runOperatorSequences(const std::string& file, int sequences, int length) {
 
 class EveryShippedGraphGrammar : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(EveryShippedGraphGrammar, OperatorSequencesGiveValidGenomesThatDeriveWithinTheLimits) { runOperatorSequences(GetParam(), 200, 5); }
+TEST_P(EveryShippedGraphGrammar, OperatorSequencesGiveValidGenomesThatDeriveWithinTheLimits) { runOperatorSequences(GetParam(), 100, 4); }
 
 INSTANTIATE_TEST_SUITE_P(GraphFamily, EveryShippedGraphGrammar,
                          ::testing::Values("koch.yml", "tree.yml", "radial.yml", "tiled.yml", "facade.yml", "mosaic.yml"));
