@@ -68,7 +68,7 @@ TEST(GraphSampleCommand, WritesAPngOfTheSizeAsked) {
 TEST(GraphSampleCommand, RefusesOptionsThatDoNotApplyWithExit2) {
     TempDir dir;
     const std::string out = " -o " + dir.file("x.svg");
-    for (const std::string& args : std::vector<std::string>{"--min-genes 2", "--max-genes 9", "--genome " + dir.file("g.genome"), "--attr a=1",
+    for (const std::string& args : std::vector<std::string>{"--min-genes 2", "--max-genes 9", "--attr a=1",
                                                              "--size 64x64", "--steps -1", "--steps many", "--margin -1",
                                                              "--margin nan", "--seed x"}) {
         const auto r = runShapevo("sample " + sprout() + " " + args + out);
