@@ -4,9 +4,10 @@
 # sampling (search.method = "random": the best of as many random derivations) given the same
 # number of evaluations as that seed's hybrid run. Prints one markdown row per scene and method:
 # mean IoU, min-max, mean evaluations.
-#   experiments/graph_scenes.sh [SEEDS=5] [SECONDS=60] [BUILD=build]
+#   experiments/graph_scenes.sh [SEEDS=5] [SECONDS=60] [BUILD=build] [SCENES="graph-tree-sketch graph-facade-reachable graph-mosaic-logo"]
 set -eu
 seeds=${1:-5}; seconds=${2:-60}; build=${3:-build}
+scenes=${4:-graph-tree-sketch graph-facade-reachable graph-mosaic-logo}
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -18,7 +19,7 @@ run() {  # run CONFIG METHOD SEED FOLDER [extra --set ...]
 }
 echo "| scene | method | mean IoU | min–max | mean evaluations |"
 echo "| --- | --- | ---: | ---: | ---: |"
-for scene in graph-tree-sketch graph-facade-reachable graph-mosaic-logo; do
+for scene in $scenes; do
     config=configs/$scene.toml
     population=$(sed -n 's/^population = \([0-9]*\).*/\1/p' "$config")
     for s in $(seq 1 "$seeds"); do
