@@ -51,7 +51,8 @@ TEST(GraphRun, WritesItsDrawingOverlayCurveAndGenomeAndEvaluateAgrees) {
     EXPECT_NE(inspect.output.find("productions; genome: graph derivation"), std::string::npos) << inspect.output;
 }
 
-TEST(GraphRun, AStoppedAndResumedRunEqualsTheUninterruptedOne) {
+// Slow under the sanitizers (16 s): run once, in the Release pass.
+TEST(GraphRunSlow, AStoppedAndResumedRunEqualsTheUninterruptedOne) {
     TempDir dir;
     ASSERT_EQ(runShapevo("run " + kConfig + " --out " + dir.file("whole") + kSmall + " --set ga.generations=6").exitCode, 0);
     ASSERT_EQ(runShapevo("run " + kConfig + " --out " + dir.file("part") + kSmall + " --set ga.generations=3").exitCode, 0);
@@ -62,7 +63,8 @@ TEST(GraphRun, AStoppedAndResumedRunEqualsTheUninterruptedOne) {
               shapevo::test::curveWithoutTime(readFile(dir.file("whole/curve.csv"))));
 }
 
-TEST(GraphRun, ASeededTwoRankRunWithMigrationRepeatsByteForByte) {
+// Slow under the sanitizers (17 s): run once, in the Release pass.
+TEST(GraphRunSlow, ASeededTwoRankRunWithMigrationRepeatsByteForByte) {
     TempDir dir;
     const std::string args = " --set ga.generations=6 --set migration.interval=2" + kSmall;
     const auto a = shapevo::test::runShapevoMpi(2, "run " + kConfig + " --out " + dir.file("a") + args);
