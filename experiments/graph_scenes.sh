@@ -15,7 +15,8 @@ value() { sed -n "s/.*\"$1\": \([0-9.e+-]*\).*/\1/p" "$2" | head -1; }
 run() {  # run CONFIG METHOD SEED FOLDER [extra --set ...]
     config=$1; method=$2; seed=$3; folder=$4; shift 4
     mpirun --allow-run-as-root --oversubscribe -np 2 "$build/shapevo" run "$config" -q --threads 1 --seed "$seed" \
-        --set search.method="$method" --out "$folder" "$@" >/dev/null
+        --set search.method="$method" --out "$folder" "$@" >/dev/null ||
+        { status=$?; echo "graph_scenes.sh: $config, $method, seed $seed failed (exit $status)" >&2; exit 1; }
 }
 echo "| scene | method | mean IoU | min–max | mean evaluations |"
 echo "| --- | --- | ---: | ---: | ---: |"

@@ -204,7 +204,39 @@ TEST(ShippedGraphGrammars, RadialPetalTipsAreEvenlySpacedOnACircle) {
     }
 }
 
-// --- tiled.yml --------------------------------------------------------------------------------
+// --- tiled.yml and mosaic.yml: a sheet cut into square tiles ------------------------------------
+
+struct Tile {
+    Vec2 lo, hi;
+    const HostEdge* edge;  ///< the tile's diagonal edge (kind "tile")
+};
+
+/// The tiles of a derived sheet: each edge of kind "tile" spans its tile's diagonal.
+std::vector<Tile> tilesOf(const GraphGrammar& g, const HostGraph& graph) {
+    std::vector<Tile> tiles;
+    for (const HostEdge& e : graph.edges()) {
+        if (!e.alive || !textAttrIs(g, e.attrs, "kind", "tile")) continue;
+        const Vec2 a = graph.vertex(e.vertex1).position, b = graph.vertex(e.vertex2).position;
+        tiles.push_back({{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}, &e});
+    }
+    return tiles;
+}
+
+/// Each tile is square, no two overlap, and together they make up the 8 x 8 sheet.
+void expectSquaresMakingUpTheSheet(const std::vector<Tile>& tiles, std::uint64_t seed) {
+    double area = 0;
+    for (const Tile& t : tiles) {
+        EXPECT_NEAR(t.hi.y - t.lo.y, t.hi.x - t.lo.x, 1e-12) << "seed " << seed << ": a tile is square";
+        area += (t.hi.x - t.lo.x) * (t.hi.y - t.lo.y);
+    }
+    EXPECT_NEAR(area, 64.0, 1e-9) << "seed " << seed << ": the tiles make up the 8 x 8 sheet";
+    for (std::size_t i = 0; i < tiles.size(); ++i)
+        for (std::size_t j = i + 1; j < tiles.size(); ++j) {
+            const double w = std::min(tiles[i].hi.x, tiles[j].hi.x) - std::max(tiles[i].lo.x, tiles[j].lo.x);
+            const double h = std::min(tiles[i].hi.y, tiles[j].hi.y) - std::max(tiles[i].lo.y, tiles[j].lo.y);
+            EXPECT_FALSE(w > 1e-9 && h > 1e-9) << "seed " << seed << ": tiles " << i << " and " << j << " overlap";
+        }
+}
 
 TEST(ShippedGraphGrammars, TiledTilesCoverTheSheetWithoutOverlapping) {
     const GraphGrammar g = shipped("tiled.yml");
@@ -212,29 +244,13 @@ TEST(ShippedGraphGrammars, TiledTilesCoverTheSheetWithoutOverlapping) {
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
         const DeriveResult r = deriveSeeded(g, seed);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
-        struct Box {
-            Vec2 lo, hi;
-        };
-        std::vector<Box> tiles;
-        double area = 0;
-        for (const HostEdge& e : r.graph.edges()) {
-            if (!e.alive || !textAttrIs(g, e.attrs, "kind", "tile")) continue;
-            const Vec2 a = r.graph.vertex(e.vertex1).position, b = r.graph.vertex(e.vertex2).position;
-            const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
-            const double level = numberAttr(g, e.attrs, "level");
-            EXPECT_NEAR(hi.x - lo.x, 8.0 / std::pow(2.0, level), 1e-12) << "a tile of level L is 8 / 2^L wide";
-            EXPECT_NEAR(hi.y - lo.y, hi.x - lo.x, 1e-12) << "a tile is square";
+        const std::vector<Tile> tiles = tilesOf(g, r.graph);
+        for (const Tile& tile : tiles) {
+            const double level = numberAttr(g, tile.edge->attrs, "level");
+            EXPECT_NEAR(tile.hi.x - tile.lo.x, 8.0 / std::pow(2.0, level), 1e-12) << "a tile of level L is 8 / 2^L wide";
             EXPECT_LE(level, 3);
-            area += (hi.x - lo.x) * (hi.y - lo.y);
-            tiles.push_back({lo, hi});
         }
-        EXPECT_NEAR(area, 64.0, 1e-9) << "seed " << seed << ": the tiles cover the 8 x 8 sheet";
-        for (std::size_t i = 0; i < tiles.size(); ++i)
-            for (std::size_t j = i + 1; j < tiles.size(); ++j) {
-                const double w = std::min(tiles[i].hi.x, tiles[j].hi.x) - std::max(tiles[i].lo.x, tiles[j].lo.x);
-                const double h = std::min(tiles[i].hi.y, tiles[j].hi.y) - std::max(tiles[i].lo.y, tiles[j].lo.y);
-                EXPECT_FALSE(w > 1e-9 && h > 1e-9) << "seed " << seed << ": tiles " << i << " and " << j << " overlap";
-            }
+        expectSquaresMakingUpTheSheet(tiles, seed);
         // 4 + 3s tiles after s cuts; 8 elements per cut (the sheet's too), 4 per laid tile.
         const std::size_t t = tiles.size();
         ASSERT_EQ((t - 4) % 3, 0u) << "seed " << seed;
@@ -255,27 +271,9 @@ TEST(ShippedGraphGrammars, MosaicTilesMakeUpTheSheetAndEachHoldsAtMostOneStoneIn
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
         const DeriveResult r = deriveSeeded(g, seed);
         EXPECT_EQ(r.stop, DeriveResult::Stop::Terminal);
-        struct Box {
-            Vec2 lo, hi;
-        };
-        std::vector<Box> tiles;
-        double area = 0;
-        for (const HostEdge& e : r.graph.edges()) {
-            if (!e.alive || !textAttrIs(g, e.attrs, "kind", "tile")) continue;
-            const Vec2 a = r.graph.vertex(e.vertex1).position, b = r.graph.vertex(e.vertex2).position;
-            const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
-            EXPECT_GE(hi.x - lo.x, 0.5 - 1e-12) << "the smallest tile is 0.5 wide";
-            EXPECT_NEAR(hi.y - lo.y, hi.x - lo.x, 1e-12) << "a tile is square";
-            area += (hi.x - lo.x) * (hi.y - lo.y);
-            tiles.push_back({lo, hi});
-        }
-        EXPECT_NEAR(area, 64.0, 1e-9) << "seed " << seed << ": the tiles make up the 8 x 8 sheet";
-        for (std::size_t i = 0; i < tiles.size(); ++i)
-            for (std::size_t j = i + 1; j < tiles.size(); ++j) {
-                const double w = std::min(tiles[i].hi.x, tiles[j].hi.x) - std::max(tiles[i].lo.x, tiles[j].lo.x);
-                const double h = std::min(tiles[i].hi.y, tiles[j].hi.y) - std::max(tiles[i].lo.y, tiles[j].lo.y);
-                EXPECT_FALSE(w > 1e-9 && h > 1e-9) << "seed " << seed << ": tiles " << i << " and " << j << " overlap";
-            }
+        const std::vector<Tile> tiles = tilesOf(g, r.graph);
+        for (const Tile& tile : tiles) EXPECT_GE(tile.hi.x - tile.lo.x, 0.5 - 1e-12) << "the smallest tile is 0.5 wide";
+        expectSquaresMakingUpTheSheet(tiles, seed);
         // Every stone sits at the centre of its own tile.
         std::size_t stones = 0;
         std::vector<int> used(tiles.size(), 0);

@@ -24,6 +24,7 @@
 #include "genome/families/graph_genome.hpp"
 #include "genome/genome_family.hpp"
 #include "graph/derive.hpp"
+#include "graph/drawing.hpp"
 #include "graph/graph_grammar.hpp"
 
 namespace shapevo {
@@ -51,6 +52,10 @@ public:
     /// Derive genome `c` (valid) from host graph 0; `record` (may be null) gets its decisions.
     /// @throw InputError as deriveGraph does (an expression that fails, a limit passed).
     graph::DeriveResult derive(const Chromosome& c, graph::DecisionRecord* record = nullptr) const;
+    /// The drawing of a graph this grammar derived (graph/drawing.hpp's rules).
+    graph::Drawing drawing(const graph::HostGraph& derived) const { return graph::drawingOf(derived, grammar_.names, grammar_.path); }
+    /// Derive genome `c` and draw it. @throw InputError as derive does.
+    graph::Drawing drawing(const Chromosome& c) const { return drawing(derive(c).graph); }
 
 private:
     const graph::GraphGrammar& grammar_;

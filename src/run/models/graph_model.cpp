@@ -42,7 +42,7 @@ class GraphBestFiles final : public BestModelFiles {
 public:
     GraphBestFiles(const GraphFamily& family, const Chromosome& best) : grammar_(family.grammar()) {
         try {
-            drawing_ = graph::drawingOf(family.derive(best).graph, grammar_.names, grammar_.path);
+            drawing_ = family.drawing(best);
         } catch (const InputError&) {
             // a best whose derivation fails (every model failed): no drawing, an empty picture
         }
@@ -68,16 +68,16 @@ public:
     std::vector<std::pair<std::string, std::string>> extraInputs(const std::string&) const override { return {}; }
     std::span<const std::string_view> modelFormats() const override { return kDrawingFormats; }
     void writeModel(const Chromosome& c, const std::string& format, const std::string& path, Replace replace) const override {
-        writeDrawing(drawingOf(c), grammar_, format, path, replace);
+        writeDrawing(family_.drawing(c), grammar_, format, path, replace);
     }
     std::string describe(const Chromosome& c) const override {
         const graph::DeriveResult r = family_.derive(c);
-        return std::to_string(graph::drawingOf(r.graph, grammar_.names, grammar_.path).shapes.size()) + " shapes, " +
+        return std::to_string(family_.drawing(r.graph).shapes.size()) + " shapes, " +
                std::to_string(r.steps) + " steps";
     }
     std::string render(const Chromosome& c, std::span<const View>, const std::string&, PictureSize size,
                        const std::string& path) const override {
-        const graph::Drawing drawing = drawingOf(c);
+        const graph::Drawing drawing = family_.drawing(c);
         writeDrawingPng(drawing, graph::canvasOf(drawing, kGraphModelMargin), size, path);
         return std::to_string(size.width) + "x" + std::to_string(size.height) + " drawing of " + std::to_string(drawing.shapes.size()) +
                " shapes";
@@ -87,10 +87,6 @@ public:
     }
 
 private:
-    graph::Drawing drawingOf(const Chromosome& c) const {
-        return graph::drawingOf(family_.derive(c).graph, grammar_.names, grammar_.path);
-    }
-
     graph::GraphGrammar grammar_;
     GraphFamily family_;
 };

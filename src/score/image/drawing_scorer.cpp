@@ -62,8 +62,7 @@ DrawingScorer::DrawingScorer(const GraphFamily& family, const ImageTarget& targe
 }
 
 graph::Drawing DrawingScorer::drawing(const Chromosome& c) const {
-    const graph::DeriveResult r = family_.derive(c);
-    return graph::drawingOf(r.graph, family_.grammar().names, family_.grammar().path);
+    return family_.drawing(c);
 }
 
 void DrawingScorer::grow(Workspace& w) const {
@@ -94,7 +93,7 @@ double DrawingScorer::score(const Chromosome& c, Workspace& w, SilhouetteCounts*
     try {
         const graph::DeriveResult r = family_.derive(c, &record->record);
         w.steps = r.steps;
-        const graph::Drawing drawing = graph::drawingOf(r.graph, family_.grammar().names, family_.grammar().path);
+        const graph::Drawing drawing = family_.drawing(r.graph);
         w.shapes = drawing.shapes.size();
         w.raster.rasterize(drawing, frame_);
     } catch (const InputError&) {
