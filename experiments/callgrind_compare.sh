@@ -17,7 +17,7 @@
 set -euf  # -f: the function patterns below are not file globs
 old=$1
 new=$2
-pick=${3:-.}
+pick=${3:-.*}
 export SHAPEVO_BENCH_FROM=10 SHAPEVO_BENCH_WARM=5
 cd "$(dirname "$0")/.."
 work=$(mktemp -d)
