@@ -1,0 +1,233 @@
+// Aggregates, group by / ungroup and the amount filter per group (geometry/lists aggregate.hpp,
+// grouping.hpp, amount.hpp) against plain brute force on seeded random lists: aggregates bit for
+// bit equal to a left-to-right loop (whole list and per group), groups in order of first
+// appearance with members in list order, ungroup restoring the entities bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "base/random.hpp"
+#include "geometry/lists/aggregate.hpp"
+#include "geometry/lists/amount.hpp"
+#include "geometry/lists/grouping.hpp"
+
+namespace shapevo::lists {
+namespace list_aggregate_group_test {
+
+/// Values of mixed magnitudes (so the summation order shows in the bits), sometimes NaN.
+double randomValue(Rng& rng, bool withNaN) {
+    if (withNaN && rng.below(25) == 0) return std::numeric_limits<double>::quiet_NaN();
+    return (rng.uniform() - 0.5) * std::pow(10.0, double(rng.below(33)) - 16.0);
+}
+
+/// The reference aggregate of values[at[0]], values[at[1]], ... written plainly.
+double referenceAggregate(Aggregate kind, const std::vector<double>& values, const std::vector<std::uint32_t>& at) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (kind == Aggregate::Sum || kind == Aggregate::Avg) {
+        double sum = 0.0;
+        for (const std::uint32_t i : at) sum += values[i];
+        if (kind == Aggregate::Sum) return sum;
+        return at.empty() ? nan : sum / double(at.size());
+    }
+    double best = nan;
+    for (const std::uint32_t i : at) {
+        const double v = values[i];
+        if (std::isnan(v)) continue;
+        if (std::isnan(best) || (kind == Aggregate::Min ? v < best : v > best)) best = v;
+    }
+    return best;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+std::vector<std::uint32_t> allPositions(std::size_t n) {
+    std::vector<std::uint32_t> at(n);
+    for (std::uint32_t i = 0; i < n; ++i) at[i] = i;
+    return at;
+}
+
+/// Key equality for grouping: == except NaN equals NaN.
+bool sameKey(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+/// The reference grouping: scan the groups found so far for an equal key, else open a new one.
+std::vector<std::vector<std::uint32_t>> referenceGroups(const std::vector<double>& keys, std::uint32_t m) {
+    std::vector<std::vector<std::uint32_t>> groups;
+    const std::uint32_t n = std::uint32_t(keys.size() / m);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        bool placed = false;
+        for (auto& g : groups) {
+            bool equal = true;
+            for (std::uint32_t k = 0; k < m; ++k) equal = equal && sameKey(keys[g[0] * m + k], keys[i * m + k]);
+            if (equal) {
+                g.push_back(i);
+                placed = true;
+                break;
+            }
+        }
+        if (!placed) groups.push_back({i});
+    }
+    return groups;
+}
+
+std::vector<std::vector<std::uint32_t>> groupsOf(const Grouping& g) {
+    std::vector<std::vector<std::uint32_t>> out;
+    for (std::uint32_t k = 0; k < g.count(); ++k) out.emplace_back(g.group(k).begin(), g.group(k).end());
+    return out;
+}
+
+Scope randomScope(Rng& rng) {
+    Scope s;
+    s.origin = glm::vec3(float(rng.uniform()), float(rng.normal()), float(rng.uniform() * 100));
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) s.axes[c][r] = float(rng.normal());
+    s.size = glm::vec3(float(rng.uniform()), 0.0f, float(rng.uniform()));
+    s.look = rng.below(5);
+    return s;
+}
+
+
+TEST(ListAggregate, ScalarAndVectorAreBitIdenticalToALeftToRightLoopOnRandomLists) {
+    Rng rng(23);
+    for (int list = 0; list < 1000; ++list) {
+        const std::uint32_t n = rng.below(50);
+        std::vector<double> values(n);
+        for (double& v : values) v = randomValue(rng, list % 2 == 1);
+        std::vector<glm::dvec3> vectors(n);
+        std::vector<double> xs(n), ys(n), zs(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            vectors[i] = {randomValue(rng, false), randomValue(rng, false), randomValue(rng, true)};
+            xs[i] = vectors[i].x, ys[i] = vectors[i].y, zs[i] = vectors[i].z;
+        }
+        for (const Aggregate kind : {Aggregate::Min, Aggregate::Max, Aggregate::Avg, Aggregate::Sum}) {
+            ASSERT_TRUE(sameBits(aggregate(kind, values), referenceAggregate(kind, values, allPositions(n))));
+            const glm::dvec3 v = aggregate(kind, std::span<const glm::dvec3>(vectors));
+            ASSERT_TRUE(sameBits(v.x, referenceAggregate(kind, xs, allPositions(n))));
+            ASSERT_TRUE(sameBits(v.y, referenceAggregate(kind, ys, allPositions(n))));
+            ASSERT_TRUE(sameBits(v.z, referenceAggregate(kind, zs, allPositions(n))));
+        }
+    }
+}
+
+TEST(ListAggregate, SumsInListOrderAndEmptyListsGiveTheStatedValues) {
+    EXPECT_EQ(aggregate(Aggregate::Sum, std::vector<double>{1e16, 1.0, -1e16}), 0.0);  // (1e16 + 1) rounds to 1e16
+    EXPECT_EQ(aggregate(Aggregate::Sum, std::vector<double>{1e16, -1e16, 1.0}), 1.0);
+    EXPECT_EQ(aggregate(Aggregate::Sum, std::vector<double>{}), 0.0);
+    EXPECT_TRUE(std::isnan(aggregate(Aggregate::Avg, std::vector<double>{})));
+    EXPECT_TRUE(std::isnan(aggregate(Aggregate::Min, std::vector<double>{})));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(aggregate(Aggregate::Max, std::vector<double>{nan, 3.0, nan, 5.0}), 5.0);
+    EXPECT_EQ(aggregate(Aggregate::Min, std::vector<double>{nan, 3.0, nan, 5.0}), 3.0);
+    EXPECT_TRUE(std::isnan(aggregate(Aggregate::Avg, std::vector<double>{nan, 3.0})));
+}
+
+TEST(ListGroupBy, GroupsComeInOrderOfFirstAppearanceWithMembersInListOrder) {
+    Rng rng(29);
+    Grouping g;
+    ListWorkspace ws;
+    for (int list = 0; list < 1000; ++list) {
+        const std::uint32_t n = rng.below(60), m = 1 + rng.below(2);
+        std::vector<double> keys(n * m);
+        for (double& k : keys) {
+            const std::uint32_t r = rng.below(12);
+            k = r == 0 ? std::numeric_limits<double>::quiet_NaN() : r == 1 ? -0.0 : double(rng.below(4));
+        }
+        groupBy(keys, m, g, ws);
+        const auto reference = referenceGroups(keys, m);
+        ASSERT_EQ(groupsOf(g), reference) << "list " << list;
+        ASSERT_EQ(g.groupOf.size(), n);
+        for (std::uint32_t k = 0; k < g.count(); ++k)
+            for (const std::uint32_t i : g.group(k)) ASSERT_EQ(g.groupOf[i], k);
+    }
+}
+
+TEST(ListGroupBy, TilesGroupedByFloorGiveOneGroupPerFloorWithItsTiles) {
+    // 3 facades x 4 floors x 5 columns, listed facade by facade; the key is the floor.
+    std::vector<double> floors;
+    for (int facade = 0; facade < 3; ++facade)
+        for (int floor = 0; floor < 4; ++floor)
+            for (int column = 0; column < 5; ++column) floors.push_back(floor);
+    Grouping g;
+    ListWorkspace ws;
+    groupBy(floors, 1, g, ws);
+    ASSERT_EQ(g.count(), 4u);
+    for (std::uint32_t k = 0; k < 4; ++k) {
+        ASSERT_EQ(g.group(k).size(), 15u);
+        for (const std::uint32_t i : g.group(k)) EXPECT_EQ(floors[i], double(k));
+    }
+}
+
+TEST(ListUngroup, RestoresTheOriginalEntitiesBitForBitInOrder) {
+    Rng rng(31);
+    EntityList list, grouped, restored;
+    Grouping g;
+    ListWorkspace ws;
+    for (int round = 0; round < 1000; ++round) {
+        const std::uint32_t n = rng.below(40), width = rng.below(4);
+        list.clear(width);
+        std::vector<double> keys(n), attrs(width);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            for (double& a : attrs) a = randomValue(rng, true);
+            list.append(randomScope(rng), attrs);
+            keys[i] = double(rng.below(5));
+        }
+        groupBy(keys, 1, g, ws);
+        selectEntities(list, g.members, grouped);
+        ungroupEntities(grouped, g, restored);
+        ASSERT_EQ(restored.size(), n);
+        ASSERT_EQ(restored.width, width);
+        if (n > 0) ASSERT_EQ(std::memcmp(restored.scopes.data(), list.scopes.data(), n * sizeof(Scope)), 0);
+        if (!list.values.empty())
+            ASSERT_EQ(std::memcmp(restored.values.data(), list.values.data(), list.values.size() * sizeof(double)), 0);
+    }
+}
+
+TEST(ListAggregate, PerGroupEqualsThePerGroupLeftToRightLoop) {
+    Rng rng(37);
+    Grouping g;
+    ListWorkspace ws;
+    for (int list = 0; list < 1000; ++list) {
+        const std::uint32_t n = rng.below(60);
+        std::vector<double> keys(n), values(n);
+        std::vector<glm::dvec3> vectors(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            keys[i] = double(rng.below(6));
+            values[i] = randomValue(rng, true);
+            vectors[i] = {randomValue(rng, false), randomValue(rng, false), randomValue(rng, false)};
+        }
+        groupBy(keys, 1, g, ws);
+        std::vector<double> out(g.count());
+        std::vector<glm::dvec3> outVectors(g.count());
+        for (const Aggregate kind : {Aggregate::Min, Aggregate::Max, Aggregate::Avg, Aggregate::Sum}) {
+            aggregateGroups(kind, values, g, out);
+            aggregateGroups(kind, std::span<const glm::dvec3>(vectors), g, outVectors);
+            const auto reference = referenceGroups(keys, 1);
+            for (std::uint32_t k = 0; k < g.count(); ++k) {
+                ASSERT_TRUE(sameBits(out[k], referenceAggregate(kind, values, reference[k])));
+                std::vector<double> xs(n);
+                for (std::uint32_t i = 0; i < n; ++i) xs[i] = vectors[i].y;
+                ASSERT_TRUE(sameBits(outVectors[k].y, referenceAggregate(kind, xs, reference[k])));
+            }
+        }
+    }
+}
+
+TEST(ListAmountFilterByGroup, KeepsTheWindowOfEveryGroupInListOrder) {
+    // Facades of 4 houses, interleaved; one door per house: the first facade of each house.
+    const std::vector<double> house{0, 1, 0, 2, 1, 3, 3, 0, 2};
+    Grouping g;
+    ListWorkspace ws;
+    groupBy(house, 1, g, ws);
+    std::vector<std::uint32_t> kept, rest;
+    amountFilterByGroup(g, 0, 1, kept, rest);
+    EXPECT_EQ(kept, (std::vector<std::uint32_t>{0, 1, 3, 5}));
+    EXPECT_EQ(rest, (std::vector<std::uint32_t>{2, 4, 6, 7, 8}));
+    amountFilterByGroup(g, 1, 5, kept, rest);
+    EXPECT_EQ(kept, (std::vector<std::uint32_t>{2, 4, 6, 7, 8}));
+    EXPECT_EQ(rest, (std::vector<std::uint32_t>{0, 1, 3, 5}));
+}
+
+}  // namespace list_aggregate_group_test
+}  // namespace shapevo::lists
