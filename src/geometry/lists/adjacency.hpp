@@ -6,10 +6,10 @@
 // size.z = 0, the shape itself; a volume counts by that mid-section). Two scopes are adjacent when
 // an edge of one and an edge of the other share a segment: both longer than `tolerance`, each
 // one's end points within `tolerance` (world distance) of the other's line, and their overlap
-// along the direction of the edge of the earlier scope in the list longer than `tolerance`. So tiles of one grid that share a
-// side, and the corner tiles of two facades meeting at a box's edge, are adjacent; tiles that
-// touch only at a corner are not. Edges are paired by a sort-and-sweep over their boxes (grown by
-// the tolerance), which finds every pair the plain all-pairs test finds.
+// along the edge of the earlier scope in the list longer than `tolerance`. So tiles of one grid
+// that share a side, and the corner tiles of two facades meeting at a box's edge, are adjacent;
+// tiles that touch only at a corner are not. Edges are paired by a sort-and-sweep over their
+// boxes (grown by the tolerance), which finds every pair the plain all-pairs test finds.
 #pragma once
 #include <span>
 

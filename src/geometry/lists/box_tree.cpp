@@ -70,7 +70,7 @@ void BoxTree::build(std::span<const Scope> boxes) {
             double lo = corners[0][a], hi = lo;
             for (const glm::dvec3& c : corners) lo = std::min(lo, c[a]), hi = std::max(hi, c[a]);
             // Grown beyond the rounding of the corners and of the queries' slab arithmetic.
-            const double pad = 1e-9 * (std::abs(lo) + std::abs(hi) + (hi - lo)) + 1e-12;
+            const double pad = 1e-7 * (std::abs(lo) + std::abs(hi) + (hi - lo)) + 1e-9;
             b[a] = lo - pad;
             b[3 + a] = hi + pad;
         }
