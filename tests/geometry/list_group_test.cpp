@@ -8,40 +8,15 @@
 #include <limits>
 #include <vector>
 
+#include "../list_test_support.hpp"
 #include "base/random.hpp"
 #include "geometry/lists/grouping.hpp"
 
 namespace shapevo::lists {
 namespace list_group_test {
 
-/// Values of mixed magnitudes (so the summation order shows in the bits), sometimes NaN.
-double randomValue(Rng& rng, bool withNaN) {
-    if (withNaN && rng.below(25) == 0) return std::numeric_limits<double>::quiet_NaN();
-    return (rng.uniform() - 0.5) * std::pow(10.0, double(rng.below(33)) - 16.0);
-}
-
-/// Key equality for grouping: == except NaN equals NaN.
-bool sameKey(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-/// The reference grouping: scan the groups found so far for an equal key, else open a new one.
-std::vector<std::vector<std::uint32_t>> referenceGroups(const std::vector<double>& keys, std::uint32_t m) {
-    std::vector<std::vector<std::uint32_t>> groups;
-    const std::uint32_t n = std::uint32_t(keys.size() / m);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        bool placed = false;
-        for (auto& g : groups) {
-            bool equal = true;
-            for (std::uint32_t k = 0; k < m; ++k) equal = equal && sameKey(keys[g[0] * m + k], keys[i * m + k]);
-            if (equal) {
-                g.push_back(i);
-                placed = true;
-                break;
-            }
-        }
-        if (!placed) groups.push_back({i});
-    }
-    return groups;
-}
+using test::list_support::randomValue;
+using test::list_support::referenceGroups;
 
 std::vector<std::vector<std::uint32_t>> groupsOf(const Grouping& g) {
     std::vector<std::vector<std::uint32_t>> out;

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "../list_test_support.hpp"
 #include "base/random.hpp"
 #include "geometry/lists/adjacency.hpp"
 #include "geometry/lists/merge.hpp"
@@ -19,11 +20,6 @@
 
 namespace shapevo::lists {
 namespace list_merge_unify_test {
-
-glm::mat3 randomRotation(Rng& rng) {
-    const glm::dquat q = glm::normalize(glm::dquat(rng.normal(), rng.normal(), rng.normal(), rng.normal()));
-    return glm::mat3(glm::mat3_cast(q));
-}
 
 /// A face of a box as comp makes it (geometry/pieces.hpp): front (+z) or right (+x).
 Scope boxFace(const Scope& box, bool right) {
@@ -101,7 +97,7 @@ TEST(ListMerge, BoundsEveryMemberCornerAndTouchesEachFaceOfItsBox) {
         std::vector<Scope> members(1 + rng.below(8));
         for (Scope& s : members) {
             s.origin = glm::vec3(float(rng.normal() * 10), float(rng.normal() * 10), float(rng.normal() * 10));
-            s.axes = randomRotation(rng);
+            s.axes = test::list_support::randomRotationAxes(rng);
             s.size = glm::vec3(float(rng.uniform() * 5), float(rng.uniform() * 5), rng.below(2) ? 0.0f : float(rng.uniform() * 5));
         }
         const Scope m = mergeScopes(members);
@@ -154,7 +150,7 @@ TEST(ListUnify, EqualsBruteForceUnionFindOfEdgeAdjacencyOnRandomFacadeTiles) {
         for (std::uint32_t b = 0; b < boxes; ++b) {
             Scope box;
             box.origin = glm::vec3(float(rng.below(3) * 6), 0.0f, float(rng.below(3) * 6));
-            box.axes = rng.below(2) ? glm::mat3(1.0f) : randomRotation(rng);
+            box.axes = rng.below(2) ? glm::mat3(1.0f) : test::list_support::randomRotationAxes(rng);
             box.size = glm::vec3(float(2 + rng.below(4)), float(2 + rng.below(4)), float(2 + rng.below(4)));
             for (const bool right : {false, true}) {
                 const Scope face = boxFace(box, right);
@@ -167,7 +163,7 @@ TEST(ListUnify, EqualsBruteForceUnionFindOfEdgeAdjacencyOnRandomFacadeTiles) {
         for (std::uint32_t extra = rng.below(4); extra > 0; --extra) {  // loose flat scopes
             Scope s;
             s.origin = glm::vec3(float(rng.normal() * 5), float(rng.normal() * 5), float(rng.normal() * 5));
-            s.axes = randomRotation(rng);
+            s.axes = test::list_support::randomRotationAxes(rng);
             s.size = glm::vec3(float(1 + rng.uniform() * 3), float(1 + rng.uniform() * 3), 0.0f);
             tiles.push_back(s);
         }

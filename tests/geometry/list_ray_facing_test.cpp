@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
+#include "../list_test_support.hpp"
 #include "base/random.hpp"
 #include "geometry/lists/facing.hpp"
 #include "geometry/lists/ray_cast.hpp"
@@ -42,16 +43,11 @@ double plainRayBox(glm::dvec3 origin, glm::dvec3 direction, const Scope& box) {
 
 bool sameScope(const Scope& a, const Scope& b) { return a.origin == b.origin && a.axes == b.axes && a.size == b.size; }
 
-glm::mat3 randomRotation(Rng& rng) {
-    const glm::dquat q = glm::normalize(glm::dquat(rng.normal(), rng.normal(), rng.normal(), rng.normal()));
-    return glm::mat3(glm::mat3_cast(q));
-}
-
 std::vector<Scope> randomBoxes(Rng& rng, std::uint32_t n, double spread) {
     std::vector<Scope> boxes(n);
     for (Scope& s : boxes) {
         s.origin = glm::vec3(float(rng.normal() * spread), float(rng.normal() * spread), float(rng.normal() * spread));
-        s.axes = rng.below(4) == 0 ? glm::mat3(1.0f) : randomRotation(rng);
+        s.axes = rng.below(4) == 0 ? glm::mat3(1.0f) : test::list_support::randomRotationAxes(rng);
         s.size = glm::vec3(float(0.2 + rng.uniform() * 4), float(0.2 + rng.uniform() * 4), rng.below(3) == 0 ? 0.0f : float(0.2 + rng.uniform() * 4));
     }
     return boxes;
