@@ -89,9 +89,12 @@ TEST(ListUngroup, RestoresTheOriginalEntitiesBitForBitInOrder) {
         ungroupEntities(grouped, g, restored);
         ASSERT_EQ(restored.size(), n);
         ASSERT_EQ(restored.width, width);
-        if (n > 0) ASSERT_EQ(std::memcmp(restored.scopes.data(), list.scopes.data(), n * sizeof(Scope)), 0);
-        if (!list.values.empty())
+        if (n > 0) {
+            ASSERT_EQ(std::memcmp(restored.scopes.data(), list.scopes.data(), n * sizeof(Scope)), 0);
+        }
+        if (!list.values.empty()) {
             ASSERT_EQ(std::memcmp(restored.values.data(), list.values.data(), list.values.size() * sizeof(double)), 0);
+        }
     }
 }
 

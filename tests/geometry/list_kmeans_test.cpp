@@ -81,9 +81,12 @@ TEST(ListKMeans, EqualsAReferenceLloydIterationBitForBitOnRandomLists) {
         ASSERT_EQ(r.rounds, ref.rounds) << "list " << list;
         ASSERT_EQ(r.converged, ref.converged);
         ASSERT_EQ(r.clusters, ref.centroids.size());
-        if (!points.empty()) ASSERT_EQ(clusterOf, ref.clusterOf);
-        if (!centroids.empty())
+        if (!points.empty()) {
+            ASSERT_EQ(clusterOf, ref.clusterOf);
+        }
+        if (!centroids.empty()) {
             ASSERT_EQ(std::memcmp(centroids.data(), ref.centroids.data(), centroids.size() * sizeof(glm::dvec3)), 0);
+        }
         converged += r.converged;
     }
     EXPECT_GT(converged, 300);  // both ways of stopping are exercised
@@ -105,7 +108,9 @@ TEST(ListKMeans, EndsAtAFixedPointWhereEveryEntityIsNearestToItsOwnCentroid) {
             int count = 0;
             for (std::size_t i = 0; i < points.size(); ++i)
                 if (clusterOf[i] == c) sum += points[i], ++count;
-            if (count > 0) ASSERT_EQ(centroids[c], sum / double(count));
+            if (count > 0) {
+                ASSERT_EQ(centroids[c], sum / double(count));
+            }
         }
     }
 }

@@ -181,7 +181,7 @@ TEST(ListUnify, EqualsBruteForceUnionFindOfEdgeAdjacencyOnRandomFacadeTiles) {
 TEST(ListUnify, TheCornerTilesOfTwoFacadesLandInOneComponent) {
     Scope box;
     box.origin = glm::vec3(1, 2, 3);
-    box.axes = glm::mat3(glm::rotate(glm::dquat(1, 0, 0, 0), 0.3, glm::dvec3(0, 1, 0)));
+    box.axes = glm::mat3(glm::mat3_cast(glm::rotate(glm::dquat(1, 0, 0, 0), 0.3, glm::dvec3(0, 1, 0))));
     box.size = glm::vec3(6, 3, 4);
     // One floor: the front's left and right tiles, the right facade's left (front corner) and right tiles.
     const Scope front = boxFace(box, false), right = boxFace(box, true);

@@ -124,8 +124,9 @@ TEST(ListRayCast, EqualsBruteForceRayOrientedBoxIntersectionOn1000RandomScenes) 
             const glm::dvec3 expected = origin + direction * best;
             ASSERT_LE(glm::length(out[i].point - expected), 1e-5 * std::max(1.0, glm::length(expected)));
             // The nearest box, or one the brute force finds at the same distance (within rounding).
-            if (out[i].target != bestIndex)
+            if (out[i].target != bestIndex) {
                 ASSERT_NEAR(plainRayBox(origin, direction, targets[out[i].target]), best, 1e-9 * std::max(1.0, best));
+            }
         }
     }
     EXPECT_GT(hits, rays / 20);  // the scenes make hits and misses
