@@ -176,6 +176,30 @@ TEST(ListRayCast, StartsInsideABoxAtDistanceZeroAndSkipsItself) {
     EXPECT_NEAR(out[2].distance, 9.0, 1e-6);
 }
 
+TEST(ListRayCast, EqualDistancesGoToTheLowestIndexWhicheverPartOfTheTreeIsWalkedFirst) {
+    // Two unit boxes side by side, x in [0, 1] (A, the last index) and [1, 2] (B, index 0); a ray up
+    // x = 1 meets both at z = 5. Eight boxes far on each side put A and B into different halves of
+    // the tree, and A's half is walked first.
+    auto unitBox = [](float x, float z) {
+        Scope s;
+        s.origin = glm::vec3(x, 0.0f, z);
+        return s;
+    };
+    std::vector<Scope> targets{unitBox(1.5f, 5.5f)};
+    for (int k = 0; k < 8; ++k) targets.push_back(unitBox(10.0f + k, 50.0f));
+    for (int k = 0; k < 8; ++k) targets.push_back(unitBox(-10.0f - k, 50.0f));
+    targets.push_back(unitBox(0.5f, 5.5f));
+    Scope caster;
+    caster.origin = glm::vec3(1.0f, 0.0f, 0.0f);
+    caster.size = glm::vec3(0.1f);
+    BoxTree tree;
+    std::vector<RayHit> out(1);
+    rayCast(std::vector<Scope>{caster}, RayAxis{2, false}, targets, tree, out);
+    ASSERT_TRUE(out[0].hit);
+    EXPECT_EQ(out[0].distance, 5.0);
+    EXPECT_EQ(out[0].target, 0u);
+}
+
 TEST(ListFacing, AgreesWithBruteForceRaySamplingOnSyntheticBoxesWithAndWithoutAnOccluder) {
     Rng rng(71);
     BoxTree tree;
