@@ -43,6 +43,25 @@ double plainRayBox(glm::dvec3 origin, glm::dvec3 direction, const Scope& box) {
 
 bool sameScope(const Scope& a, const Scope& b) { return a.origin == b.origin && a.axes == b.axes && a.size == b.size; }
 
+/// The nearest of `targets` along the caster's ray by `distance(origin, direction, box)` (ties:
+/// the lowest index), skipping targets equal to the caster when `skipSelf`; every box tried.
+struct BruteHit {
+    glm::dvec3 origin, direction;
+    double distance = kMiss;
+    std::uint32_t index = kNoBox;
+};
+template <class Distance>
+BruteHit bruteNearest(const Scope& caster, RayAxis along, const std::vector<Scope>& targets, Distance distance, bool skipSelf) {
+    BruteHit h;
+    casterRay(caster, along, h.origin, h.direction);
+    for (std::uint32_t j = 0; j < targets.size(); ++j) {
+        if (skipSelf && sameScope(targets[j], caster)) continue;
+        const double t = distance(h.origin, h.direction, targets[j]);
+        if (t < h.distance) h.distance = t, h.index = j;
+    }
+    return h;
+}
+
 std::vector<Scope> randomBoxes(Rng& rng, std::uint32_t n, double spread) {
     std::vector<Scope> boxes(n);
     for (Scope& s : boxes) {
@@ -108,15 +127,10 @@ TEST(ListRayCast, EqualsBruteForceRayOrientedBoxIntersectionOn1000RandomScenes) 
         std::vector<RayHit> out(casters.size());
         rayCast(casters, along, targets, tree, out);
         for (std::size_t i = 0; i < casters.size(); ++i) {
-            glm::dvec3 origin, direction;
-            casterRay(casters[i], along, origin, direction);
-            double best = kMiss;
-            std::uint32_t bestIndex = kNoBox;
-            for (std::uint32_t j = 0; j < targets.size(); ++j) {
-                if (sameScope(targets[j], casters[i])) continue;
-                const double t = plainRayBox(origin, direction, targets[j]);
-                if (t < best) best = t, bestIndex = j;
-            }
+            const BruteHit h = bruteNearest(casters[i], along, targets, plainRayBox, true);
+            const glm::dvec3 origin = h.origin, direction = h.direction;
+            const double best = h.distance;
+            const std::uint32_t bestIndex = h.index;
             ASSERT_EQ(out[i].hit, bestIndex != kNoBox) << "scene " << scene << " ray " << i;
             ++rays;
             if (!out[i].hit) continue;
@@ -141,16 +155,9 @@ TEST(ListRayCast, TheTreeEqualsTestingEveryBoxExactlyOnAThousandByAThousand) {
     for (const RayAxis along : {RayAxis{0, false}, RayAxis{2, true}}) {
         rayCast(casters, along, targets, tree, out);
         for (std::size_t i = 0; i < casters.size(); ++i) {
-            glm::dvec3 origin, direction;
-            casterRay(casters[i], along, origin, direction);
-            double best = kNoDistance;
-            std::uint32_t bestIndex = kNoBox;
-            for (std::uint32_t j = 0; j < targets.size(); ++j) {
-                const double t = rayBoxDistance(origin, direction, targets[j]);
-                if (t < best) best = t, bestIndex = j;  // ties: the first (lowest) index stays
-            }
-            ASSERT_EQ(out[i].target, bestIndex) << i;
-            ASSERT_EQ(out[i].distance, best);
+            const BruteHit h = bruteNearest(casters[i], along, targets, rayBoxDistance, false);
+            ASSERT_EQ(out[i].target, h.index) << i;
+            ASSERT_EQ(out[i].distance, h.distance);
         }
     }
 }
