@@ -1,6 +1,7 @@
 // renderWithGraphviz (graphviz_render.hpp).
 #include "report/graphviz_render.hpp"
 
+#include <mutex>
 #include <stdexcept>
 
 #include <graphviz/cgraph.h>
@@ -39,14 +40,25 @@ private:
     agerrlevel_t level_;
 };
 
-/// A context, its graph and the graph's layout, freed in the order Graphviz needs.
+/// The process's one Graphviz context, made on first use and kept until exit. Graphviz 2.43's
+/// pango text-layout plug-in remembers the last font name in a static variable that points into
+/// the font table of the context that measured it, so freeing a context and making another one
+/// later reads freed memory (AddressSanitizer: heap-use-after-free in pango_textlayout). One
+/// context for the process keeps that pointer valid; it is reachable until exit, so it is no
+/// leak. Graphviz is not thread-safe: every use holds graphvizMutex.
+std::mutex graphvizMutex;
+GVC_t* processContext() {
+    static GVC_t* const context = gvContext();
+    return context;
+}
+
+/// One graph and its layout, freed in the order Graphviz needs.
 class Render {
 public:
-    Render() : context_(gvContext()) {}
+    explicit Render(GVC_t* context) : context_(context) {}
     ~Render() {
         if (laidOut_) gvFreeLayout(context_, graph_);
         if (graph_) agclose(graph_);
-        if (context_) gvFreeContext(context_);
     }
     Render(const Render&) = delete;
     Render& operator=(const Render&) = delete;
@@ -66,9 +78,10 @@ public:
 }  // namespace
 
 std::string renderWithGraphviz(const std::string& dot, std::string_view format) {
+    const std::lock_guard<std::mutex> lock(graphvizMutex);
     std::string messages;
     const MessageCapture capture(messages);
-    Render r;
+    Render r(processContext());
     if (!r.context_) fail("start (gvContext)", messages);
     r.graph_ = agmemread(dot.c_str());
     if (!r.graph_) fail("read the graph", messages);

@@ -69,10 +69,10 @@ TEST(GraphCommand, TheTreesRecursionIsDashedAndItsBranchesStarred) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("(4 rules, 12 edges, 6 cyclic, 3 on a loop;"), std::string::npos) << r.output;
     const std::string dot = readFile(dir.file("tree.dot"));
-    EXPECT_NE(dot.find("\"1 Trunk\\n"), std::string::npos) << dot;
-    EXPECT_NE(dot.find("\"2 Branch(0, 120) *\\n"), std::string::npos) << dot;
-    EXPECT_NE(dot.find("\"3 Branch(120, 240) *\\n"), std::string::npos) << dot;
-    EXPECT_NE(dot.find("\"4 Branch(240, 360) *\\n"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("<TD>1 Trunk</TD>"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("<TD>2 Branch(0, 120) *</TD>"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("<TD>3 Branch(120, 240) *</TD>"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("<TD>4 Branch(240, 360) *</TD>"), std::string::npos) << dot;
     EXPECT_EQ(countOf(dot, "style=dashed"), 6u) << dot;
 }
 
