@@ -56,7 +56,8 @@ std::string portRow(const pcg::DiagramNode& node, bool inputs) {
         const std::string tooltip = std::string(inputs ? "input " : "output ") + p.name +
                                     (p.kind == pcg::PortKind::Collective ? " (collective)" : " (single)") +
                                     (p.blocked ? ", blocked" : "") + (p.gate ? ", gate" : "");
-        row += "<TD PORT=\"p" + std::to_string(k) + "\" BORDER=\"" + (p.gate ? "2" : "0") + "\" TOOLTIP=\"" + html(tooltip) + "\">";
+        row += "<TD PORT=\"p" + std::to_string(k) + "\" BORDER=\"" + (p.gate ? "2" : "0") + "\" TOOLTIP=\"" + html(tooltip) +
+               "\">";
         const std::string name = named ? "<FONT POINT-SIZE=\"8\">" + html(p.name) + "</FONT>" : "";
         row += inputs ? portGlyph(p) + (named ? "<BR/>" + name : "") : (named ? name + "<BR/>" : "") + portGlyph(p);
         row += "</TD>";

@@ -16,7 +16,8 @@ void writeDiagram(const pcg::GraphDiagram& diagram, std::string_view format, con
     if (format == "dot") bytes = dot;
     else if (format == "svg" || format == "png") bytes = renderWithGraphviz(dot, format);
     else throw InputError(path, "", "unknown graph picture format '" + std::string(format) + "' (expected dot, svg or png)");
-    writeStreamAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); }, Replace::Never);
+    writeStreamAtomically(
+        path, [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); }, Replace::Never);
 }
 
 }  // namespace shapevo

@@ -19,7 +19,7 @@ using test::sourcePath;
 using test::TempDir;
 using test::writeFile;
 
-std::size_t countOf(const std::string& text, const std::string& needle) {
+std::size_t occurrencesOf(const std::string& text, const std::string& needle) {
     std::size_t n = 0;
     for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
     return n;
@@ -73,7 +73,7 @@ TEST(GraphCommand, TheTreesRecursionIsDashedAndItsBranchesStarred) {
     EXPECT_NE(dot.find("<TD>2 Branch(0, 120) *</TD>"), std::string::npos) << dot;
     EXPECT_NE(dot.find("<TD>3 Branch(120, 240) *</TD>"), std::string::npos) << dot;
     EXPECT_NE(dot.find("<TD>4 Branch(240, 360) *</TD>"), std::string::npos) << dot;
-    EXPECT_EQ(countOf(dot, "style=dashed"), 6u) << dot;
+    EXPECT_EQ(occurrencesOf(dot, "style=dashed"), 6u) << dot;
 }
 
 TEST(GraphCommand, BadInputIsExit2NamingTheFileAndWritesNothing) {

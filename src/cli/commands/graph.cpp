@@ -45,9 +45,11 @@ void GraphCommand::run(const CommandContext&) {
     const std::string format = requireOutputFormat(o.out, kDiagramFormats, "-o");
     refuseExisting(o.out);
     const std::string extension = std::filesystem::path(o.path).extension().string();
-    if (!findGrammarFrontEnd(extension))
-        throw InputError(o.path, "", (extension.empty() ? std::string("has no file extension") : "unknown grammar file extension '" + shortened(extension) + "'") +
-                                         "; shapevo graph reads " + grammarExtensions() + " files");
+    if (!findGrammarFrontEnd(extension)) {
+        const std::string what =
+            extension.empty() ? "has no file extension" : "unknown grammar file extension '" + shortened(extension) + "'";
+        throw InputError(o.path, "", what + "; shapevo graph reads " + grammarExtensions() + " files");
+    }
     const pcg::GraphDiagram diagram = grammarDiagram(loadGrammar(o.path, parseAttrOptions(o.attrs)));
     writeDiagram(diagram, format, o.out);
     const pcg::DiagramCounts c = countDiagram(diagram);

@@ -127,7 +127,8 @@ std::vector<std::uint8_t> loopNodes(std::size_t nodeCount, std::span<const Order
             calls.pop_back();
             if (!calls.empty()) low[calls.back().node] = std::min(low[calls.back().node], low[v]);
             if (low[v] != index[v]) continue;
-            const std::size_t root = std::size_t(std::find(component.rbegin(), component.rend(), v).base() - component.begin()) - 1;
+            std::size_t root = component.size() - 1;  // v and the nodes above it on the stack form its component
+            while (component[root] != v) --root;
             const bool cycle = component.size() - root > 1;
             for (std::size_t k = root; k < component.size(); ++k) {
                 onComponentStack[component[k]] = 0;
