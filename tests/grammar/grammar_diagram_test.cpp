@@ -93,4 +93,20 @@ TEST(GrammarDiagram, TheShippedTreesBranchInstancesAreLoopNodes) {
     }
 }
 
+TEST(GrammarDiagram, AFileIsDrawnByItsFrontEndAndAnUnknownExtensionIsRefused) {
+    const std::string rule = test::sourcePath("grammars/castlemaker/toy-castle.rule");
+    const pcg::GraphDiagram d = grammarFileDiagram(rule);
+    EXPECT_EQ(nodeNames(d), nodeNames(grammarDiagram(loadGrammar(rule))));
+    EXPECT_FALSE(d.nodes.empty());
+    test::TempDir dir;
+    test::writeFile(dir.file("tree.txt"), "start A\nrule A {\n  box\n}\n");
+    try {
+        grammarFileDiagram(dir.file("tree.txt"));
+        ADD_FAILURE() << "a .txt file was drawn";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), dir.file("tree.txt"));
+        EXPECT_NE(e.message().find("unknown grammar file extension '.txt'"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace shapevo

@@ -113,8 +113,11 @@ TEST(GraphOrder, NumbersFollowEveryNonCyclicEdgeAndLeaveNoCycle) {
         }
         // source nodes first, in file order
         std::uint32_t next = 0;
-        for (std::size_t v = 0; v < g.nodes; ++v)
-            if (source[v]) ASSERT_EQ(o.order[v], next++) << "trial " << trial << " source " << v;
+        for (std::size_t v = 0; v < g.nodes; ++v) {
+            if (source[v]) {
+                ASSERT_EQ(o.order[v], next++) << "trial " << trial << " source " << v;
+            }
+        }
     }
 }
 
