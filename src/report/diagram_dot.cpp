@@ -3,6 +3,8 @@
 
 #include <sstream>
 
+#include "report/svg_painter.hpp"  // xmlEscape: HTML-like labels escape as XML does
+
 namespace shapevo {
 
 namespace {
@@ -19,19 +21,6 @@ std::string quoted(const std::string& text) {
         else out += c;
     }
     return out + "\"";
-}
-
-/// `text` inside an HTML-like label.
-std::string html(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '&') out += "&amp;";
-        else if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '"') out += "&quot;";
-        else out += c;
-    }
-    return out;
 }
 
 std::string nodeId(std::size_t node) { return "n" + std::to_string(node); }
@@ -56,9 +45,9 @@ std::string portRow(const pcg::DiagramNode& node, bool inputs) {
         const std::string tooltip = std::string(inputs ? "input " : "output ") + p.name +
                                     (p.kind == pcg::PortKind::Collective ? " (collective)" : " (single)") +
                                     (p.blocked ? ", blocked" : "") + (p.gate ? ", gate" : "");
-        row += "<TD PORT=\"p" + std::to_string(k) + "\" BORDER=\"" + (p.gate ? "2" : "0") + "\" TOOLTIP=\"" + html(tooltip) +
+        row += "<TD PORT=\"p" + std::to_string(k) + "\" BORDER=\"" + (p.gate ? "2" : "0") + "\" TOOLTIP=\"" + xmlEscape(tooltip) +
                "\">";
-        const std::string name = named ? "<FONT POINT-SIZE=\"8\">" + html(p.name) + "</FONT>" : "";
+        const std::string name = named ? "<FONT POINT-SIZE=\"8\">" + xmlEscape(p.name) + "</FONT>" : "";
         row += inputs ? portGlyph(p) + (named ? "<BR/>" + name : "") : (named ? name + "<BR/>" : "") + portGlyph(p);
         row += "</TD>";
     }
@@ -68,8 +57,8 @@ std::string portRow(const pcg::DiagramNode& node, bool inputs) {
 void writeNode(std::ostream& out, std::size_t i, const pcg::DiagramNode& n) {
     out << "  " << nodeId(i) << " [label=<<TABLE BORDER=\"" << (n.start ? 3 : 1)
         << "\" CELLBORDER=\"0\" CELLSPACING=\"0\" CELLPADDING=\"2\" STYLE=\"rounded\">" << portRow(n, true) << "<TR><TD>"
-        << html(diagramNodeTitle(n)) << "</TD></TR>";
-    if (!n.detail.empty()) out << "<TR><TD><FONT POINT-SIZE=\"9\">" << html(n.detail) << "</FONT></TD></TR>";
+        << xmlEscape(diagramNodeTitle(n)) << "</TD></TR>";
+    if (!n.detail.empty()) out << "<TR><TD><FONT POINT-SIZE=\"9\">" << xmlEscape(n.detail) << "</FONT></TD></TR>";
     out << portRow(n, false) << "</TABLE>>];\n";
 }
 
