@@ -7,7 +7,7 @@ namespace shapevo {
 
 namespace {
 
-constexpr std::array<CommandEntry, 10> kCommands{{
+constexpr std::array<CommandEntry, 11> kCommands{{
     {"run", "Evolve a model: shapevo run CONFIG.toml", true, RunCommand::addOptions, RunCommand::run},
     {"sample",
      "Write random derivations of a grammar (no evolution): every sibling position of a slot is expressed with the slot's "
@@ -36,6 +36,11 @@ constexpr std::array<CommandEntry, 10> kCommands{{
      "Draw a shaded picture of a model (PNG; on the CPU, no display needed): shapevo render MODEL|RUN_DIR|CHECKPOINT -o "
      "view.png",
      false, RenderCommand::addOptions, RenderCommand::run},
+    {"graph",
+     "Draw a grammar's generator graph (rules as nodes, child slots and inline calls as edges, cyclic edges dashed, "
+     "topological numbers, loop nodes starred, as in the PCGR paper) with Graphviz's library: shapevo graph FILE.grammar -o "
+     "graph.svg",
+     false, GraphCommand::addOptions, GraphCommand::run},
     {"reference",
      "Print the reference written from the code: every config key (config), every command's --help (commands) or the man "
      "page (man): shapevo reference config",

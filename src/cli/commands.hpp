@@ -52,6 +52,7 @@ struct ResumeCommand { static void addOptions(CLI::App& command); static void ru
 struct InspectCommand { static void addOptions(CLI::App& command); static void run(const CommandContext& context); };
 struct ExportCommand { static void addOptions(CLI::App& command); static void run(const CommandContext& context); };
 struct RenderCommand { static void addOptions(CLI::App& command); static void run(const CommandContext& context); };
+struct GraphCommand { static void addOptions(CLI::App& command); static void run(const CommandContext& context); };
 struct ReferenceCommand { static void addOptions(CLI::App& command); static void run(const CommandContext& context); };
 
 /// What inspect and export accept for a checkpoint (checkpoint/checkpoint_path.hpp).

@@ -1,5 +1,5 @@
 // shapevo command line: the commands of cli/commands.hpp (run, sample, target, translate,
-// evaluate, resume, inspect, export, render, reference), one file each in cli/commands/. Bad input
+// evaluate, resume, inspect, export, render, graph, reference), one file each in cli/commands/. Bad input
 // (InputError, bad arguments, a wrong MPI set-up) prints one message and exits with code 2;
 // other failures exit with code 1. Under mpirun every rank runs this; only the commands the
 // table marks (run and resume) use more than one rank. Results go to stdout; errors, warnings

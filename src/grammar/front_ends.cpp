@@ -10,6 +10,7 @@
 #include "base/input_error.hpp"
 #include "base/word_list.hpp"
 #include "grammar/crl/crl_translator.hpp"
+#include "grammar/grammar_diagram.hpp"
 #include "grammar/parser.hpp"
 
 namespace shapevo {
@@ -81,6 +82,18 @@ Grammar parseGrammar(const std::string& text, const std::string& path, const Att
 Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides) {
     const GrammarFrontEnd& fe = grammarFrontEndFor(path);
     return fe.compile(readGrammarFile(path, fe), path, overrides);
+}
+
+pcg::GraphDiagram grammarFileDiagram(const std::string& path, const AttrOverrides& overrides) {
+    const std::string extension = std::filesystem::path(path).extension().string();
+    const GrammarFrontEnd* fe = findGrammarFrontEnd(extension);
+    if (!fe) {
+        const std::string what =
+            extension.empty() ? "has no file extension" : "unknown grammar file extension '" + shortened(extension) + "'";
+        throw InputError(path, "", what + "; shapevo graph reads " + grammarExtensions() + " files");
+    }
+    const std::string text = readGrammarFile(path, *fe);
+    return fe->diagram ? fe->diagram(text, path, overrides) : grammarDiagram(fe->compile(text, path, overrides));
 }
 
 std::string translateGrammarFile(const std::string& path, const AttrOverrides& overrides) {

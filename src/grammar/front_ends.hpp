@@ -1,7 +1,7 @@
 // The grammar front ends: one table, one entry per kind of grammar file (its extension, its name,
 // a one-line summary, how it compiles a file into the Grammar, how it translates one into the
-// shapevo language if it does, and what a derivation of it may do). loadGrammar, `shapevo
-// translate`, `shapevo sample` and --help all read this table, so a new front end is its folder
+// shapevo language if it does, what a derivation of it may do, and what `shapevo graph` draws
+// of it). loadGrammar, `shapevo translate`, `shapevo sample`, `shapevo graph` and --help all read this table, so a new front end is its folder
 // plus one entry in front_ends.cpp. Every front end reports a problem at file:line:column of the
 // user's own file (InputError).
 #pragma once
@@ -11,6 +11,7 @@
 
 #include "grammar/attr_overrides.hpp"
 #include "grammar/grammar.hpp"
+#include "grammar/pcg/graph_diagram.hpp"
 #include "grammar/translation.hpp"
 
 namespace shapevo {
@@ -29,6 +30,9 @@ struct GrammarFrontEnd {
     /// castlemaker-crl.txt §5.2), so an uncontrolled derivation may grow without end whatever
     /// hasOptionalRecursion (genome/sample.hpp) finds in the compiled Grammar.
     bool recursionsEndOnlyByChance = false;
+    /// Its own picture for `shapevo graph` (a graph file's nodes and ports); nullptr: the
+    /// generator graph of the compiled Grammar (grammar/grammar_diagram.hpp). @throw InputError
+    pcg::GraphDiagram (*diagram)(const std::string& text, const std::string& path, const AttrOverrides& overrides) = nullptr;
 };
 
 /// Every front end, the shapevo language first.
@@ -51,6 +55,11 @@ std::string translatingFrontEnds();
 Grammar parseGrammar(const std::string& text, const std::string& path, const AttrOverrides& overrides = {});
 /// Read and parse a grammar file of any front end.
 Grammar loadGrammar(const std::string& path, const AttrOverrides& overrides = {});
+
+/// What `shapevo graph` draws for grammar file `path`: its front end's own picture, or else the
+/// generator graph of the Grammar it compiles into (grammar/grammar_diagram.hpp).
+/// @throw InputError for an extension no front end names (unlike loadGrammar, no default); any problem of the file.
+pcg::GraphDiagram grammarFileDiagram(const std::string& path, const AttrOverrides& overrides = {});
 
 /// The shapevo-language text a file of a translating front end compiles into, as `shapevo
 /// translate` prints it, after the same checks loadGrammar makes.

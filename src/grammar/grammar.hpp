@@ -169,6 +169,14 @@ struct Rule {
     std::uint32_t geneWords() const { return 2u + childOffsets + paramFloats; }
 };
 
+/// An inline rule call (a rule named as a statement or as a successor of a split, comp or lot),
+/// kept for the picture of the generator graph (`shapevo graph`); derive never reads it.
+struct InlineCall {
+    std::uint16_t rule = 0;   ///< the rule whose gene runs the call (nested calls: the outermost rule)
+    std::string callee;       ///< the called rule's name (one with arguments may have no Rule of its own)
+    SourceLocation where;     ///< the first such call in that rule
+};
+
 struct Grammar {
     std::string path;        ///< file it was read from
     std::string source;      ///< its full text (stored in outputs and checkpoints)
@@ -186,6 +194,7 @@ struct Grammar {
     std::vector<Texture> textures;   ///< images of `texture` statements (which set hasAppearance too), read when the grammar is loaded
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;
+    std::vector<InlineCall> inlineCalls;  ///< each (rule, callee) pair once, by rule id, in the order met
     int maxStack = 0;        ///< deepest expression evaluation stack
     /// Largest number of genes a freshly grown gene of each rule brings with it (mandatory children).
     std::vector<std::uint32_t> mandatoryGenes;

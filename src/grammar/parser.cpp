@@ -125,6 +125,7 @@ Grammar Parser::run() {
         scope.attrs = &headers_[h].attrs;
         tokens_.seek(headers_[h].body);
         inlineStack_ = {int(h)};
+        currentRule_ = std::uint16_t(headers_[h].plainId);
         parseBlock(rules_[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
     }
     for (std::size_t q = 0; q < queue_.size(); ++q) {
@@ -134,6 +135,7 @@ Grammar Parser::run() {
         scope.bindings = p.args;
         tokens_.seek(headers_[std::size_t(p.header)].body);
         inlineStack_ = {p.header};
+        currentRule_ = std::uint16_t(p.id);
         parseBlock(rules_[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
     }
     g_.rules.assign(std::make_move_iterator(rules_.begin()), std::make_move_iterator(rules_.end()));

@@ -95,6 +95,8 @@ public:
     using CompiledSuccessors = std::map<std::string, std::pair<std::uint32_t, std::uint32_t>>;
     void parseSuccessor(Rule& rule, BodyScope& scope, Piece& piece, ScopeForm form, CompiledSuccessors* compiled = nullptr);
     void inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeForm form);
+    /// Grammar::inlineCalls gains (currentRule_, name) unless it holds it.
+    void recordInlineCall(const Token& name);
     void parseTerminal(Rule& rule, BodyScope& scope, const SourceLocation& at);
     std::uint16_t parseMesh();
     // --- texture_statement.cpp ---
@@ -131,6 +133,7 @@ public:
     };
     std::vector<UndefinedRef> undefined_;
     std::vector<int> inlineStack_;             ///< headers being compiled inline (cycle check)
+    std::uint16_t currentRule_ = 0;            ///< the rule whose body is being compiled (Grammar::inlineCalls)
     std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
 };
 

@@ -57,6 +57,7 @@ void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeF
     }
     if (int(inlineStack_.size()) >= kMaxInlineDepth)
         tokens_.fail(name.where, "inline calls are nested more than " + std::to_string(kMaxInlineDepth) + " deep");
+    recordInlineCall(name);
     BodyScope callee;
     callee.attrs = &headers_[std::size_t(header)].attrs;
     callee.prefix = caller.prefix + name.text + ".";
@@ -68,6 +69,13 @@ void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeF
     parseBlock(rule, callee, "rule " + name.text);
     tokens_.seek(resume);
     inlineStack_.pop_back();
+}
+
+void Parser::recordInlineCall(const Token& name) {
+    // A rule's calls are recorded while its body compiles, so they are the last entries.
+    for (auto c = g_.inlineCalls.rbegin(); c != g_.inlineCalls.rend() && c->rule == currentRule_; ++c)
+        if (c->callee == name.text) return;
+    g_.inlineCalls.push_back({currentRule_, name.text, name.where});
 }
 
 void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form) {
