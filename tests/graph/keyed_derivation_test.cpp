@@ -69,20 +69,13 @@ TEST(KeyedDerivation, OneSeedAndOneSetOfOverridesGiveOneGraph) {
     EXPECT_NE(elementsByKey(deriveKeyed(g, 7).graph), elementsByKey(deriveKeyed(g, 8).graph));
 }
 
-// Four vertices labelled free; "take" marks one. Which is taken first, and second, over seeds.
-const char* kTake = R"(
-host_graphs:
-  H:
-    id: 1
-    vertices:
-    - {id: 2, attr: {x: 0, y: 0, state: free}}
-    - {id: 3, attr: {x: 1, y: 0, state: free}}
-    - {id: 4, attr: {x: 2, y: 0, state: free}}
-    - {id: 5, attr: {x: 3, y: 0, state: free}}
-    edges: []
-productions:
-  take:
-    id: 10
+/// `hostVertices` free vertices in a row and one production `name` that marks a free vertex taken
+/// and, with `sprout`, makes a new free vertex above it.
+std::string freeVerticesGrammar(const std::string& name, int hostVertices, bool sprout) {
+    std::string s = "host_graphs:\n  H:\n    id: 1\n    vertices:\n";
+    for (int i = 0; i < hostVertices; ++i)
+        s += "    - {id: " + std::to_string(2 + i) + ", attr: {x: " + std::to_string(i) + ", y: 0, state: free}}\n";
+    s += "    edges: []\nproductions:\n  " + name + ":\n" + R"(    id: 10
     mother_graph:
       id: 11
       vertices:
@@ -96,9 +89,13 @@ productions:
         id: 22
         vertices:
         - {id: 23, attr: {x: 0, y: 0, state: "'taken'"}}
-        edges: []
-result_graphs: {}
 )";
+    if (sprout) s += "        - {id: 24, attr: {x: 0, y: 5, state: \"'free'\"}}\n";
+    return s + "        edges: []\nresult_graphs: {}\n";
+}
+
+// Four vertices labelled free; "take" marks one. Which is taken first, and second, over seeds.
+const std::string kTake = freeVerticesGrammar("take", 4, false);
 
 /// The index (0..3) of the first host vertex whose state is `taken` and not in `skip`.
 int takenVertex(const GraphGrammar& g, const HostGraph& graph, const std::set<int>& skip) {
@@ -131,34 +128,7 @@ TEST(KeyedDerivation, EveryStepPicksUniformlyAmongTheMatchesLikeTheSequentialDer
 // Two free vertices; "sprout" takes one and makes a new free one. The second step takes the older
 // survivor or the new vertex with equal chance (firing levels of matches found later start from the
 // production's clock then, so an older match is not favoured or disfavoured).
-const char* kSprout = R"(
-host_graphs:
-  H:
-    id: 1
-    vertices:
-    - {id: 2, attr: {x: 0, y: 0, state: free}}
-    - {id: 3, attr: {x: 1, y: 0, state: free}}
-    edges: []
-productions:
-  sprout:
-    id: 10
-    mother_graph:
-      id: 11
-      vertices:
-      - {id: 12, attr: {x: 0, y: 0, state: "attr == 'free'"}}
-      edges: []
-    mappings:
-    - id: 20
-      mother_graph: 11
-      mapping: {id: 21, dict: {12: 23}}
-      daughter_graph:
-        id: 22
-        vertices:
-        - {id: 23, attr: {x: 0, y: 0, state: "'taken'"}}
-        - {id: 24, attr: {x: 0, y: 5, state: "'free'"}}
-        edges: []
-result_graphs: {}
-)";
+const std::string kSprout = freeVerticesGrammar("sprout", 2, true);
 
 TEST(KeyedDerivation, AMatchFoundLaterIsAsLikelyToFireAsAnOlderOne) {
     const GraphGrammar g = parseGraphGrammar(kSprout, "sprout.yml");
