@@ -1,5 +1,6 @@
 // Scorer: the one interface search methods see: chromosome -> fitness, a pure function.
-// Volume (score/volume/volume_scorer.hpp) and image (score/image/image_scorer.hpp) targets implement it;
+// Volume (score/volume/volume_scorer.hpp) and image (score/image/image_scorer.hpp) targets implement it
+// for derivation trees (through score/tree_scorer.hpp), score/image/drawing_scorer.hpp for drawings;
 // each thread brings its own workspace, made by the scorer that uses it. A model whose
 // derivation makes a non-finite or absurd number (geometry/derive.hpp) gets kWorstFitness; one
 // that reaches the primitive limit is scored as it stands (its first maxPrimitives primitives).
@@ -32,7 +33,7 @@ struct ScoreWorkspace {
     DeriveScratch derive;
     Geometry geometry;
     /// Derivations with the memo so far, and of the sampled ones the seconds with and without it
-    /// (Scorer::deriveCounted's trial: the memo stays on only where it is faster).
+    /// (TreeScorer::deriveCounted's trial: the memo stays on only where it is faster).
     std::uint32_t memoTrial = 0;
     double memoSeconds = 0, plainSeconds = 0;
     DeriveScratch checkDerive;  ///< the checking mode's (and the trial's) derivation without the memo...
@@ -79,9 +80,6 @@ public:
     /// A hint that `c` is scored next on this thread: bring what it will read towards the
     /// processor's cache (no result depends on it).
     virtual void prepare(const Chromosome& c) const { (void)c; }
-    /// The derivation-tree grammar a tree scorer derives with (deriveCounted). A scorer of another
-    /// model family (score/image/drawing_scorer.hpp) derives its own way and never calls it.
-    virtual const Grammar& grammar() const { throw std::logic_error("this scorer's model family has no derivation-tree grammar"); }
 
     /// Incremental scoring (score.incremental, score.cache_mb): each workspace made from now on
     /// keeps the rows its primitives drew in a PrimitiveCache of about `bytes` (0: off, every
@@ -109,10 +107,7 @@ public:
     Anomalies anomalies() const { return {nonFinite_.load(), truncated_.load()}; }
     /// Count the anomaly of a model that is not scored again (a duplicate of one scored with
     /// `status`), so that anomalies() stay the sums over every evaluation.
-    void countAgain(DeriveStatus status) const {
-        if (status == DeriveStatus::Truncated) truncated_.fetch_add(1, std::memory_order_relaxed);
-        if (status == DeriveStatus::NonFinite) nonFinite_.fetch_add(1, std::memory_order_relaxed);
-    }
+    void countAgain(DeriveStatus status) const { countAnomaly(status); }
 
 protected:
     void noteCacheFull() const {
@@ -128,31 +123,13 @@ protected:
         noteCacheFull();
         return false;
     }
-    /// Derives `c` into w.geometry and counts what went wrong; false: score kWorstFitness.
-    bool deriveCounted(const Chromosome& c, ScoreWorkspace& w) const {
-        if (w.derive.memo && w.derive.memo->on() && w.memoTrial < kMemoTrialEnd) [[unlikely]]
-            w.status = deriveOnTrial(c, w);
-        else
-            w.status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
-        if (checkIncremental_ && w.derive.memo) checkDerivation(c, w);
-        switch (w.status) {
-        case DeriveStatus::Complete: return true;
-        case DeriveStatus::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return true;
-        case DeriveStatus::NonFinite: break;
-        }
-        nonFinite_.fetch_add(1, std::memory_order_relaxed);
-        return false;
+    /// Count a derivation's anomaly in anomalies() (Truncated, NonFinite; Complete counts nothing).
+    void countAnomaly(DeriveStatus status) const {
+        if (status == DeriveStatus::Truncated) truncated_.fetch_add(1, std::memory_order_relaxed);
+        if (status == DeriveStatus::NonFinite) nonFinite_.fetch_add(1, std::memory_order_relaxed);
     }
 
 private:
-    /// The memo's trial: after kMemoTrialStart derivations (a warm memo), every 8th of the next
-    /// ones up to kMemoTrialEnd is derived both with and without the memo, timed; if the memo's
-    /// total is the larger, it is turned off for this workspace. Only the time depends on it.
-    static constexpr std::uint32_t kMemoTrialStart = 2048, kMemoTrialEnd = 3072;
-    DeriveStatus deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const;
-    /// Derive `c` again without the memo; throw IncrementalMismatch unless it gives w.geometry and w.status.
-    void checkDerivation(const Chromosome& c, ScoreWorkspace& w) const;
-
     std::size_t cacheBytes_ = 0;
     bool checkIncremental_ = false;
     mutable std::atomic<bool> cacheFull_{false};

@@ -8,6 +8,7 @@
 
 #include "genome/operators.hpp"
 #include "grammar/front_ends.hpp"
+#include "score/tree_scorer.hpp"
 #include "search/evaluator.hpp"
 #include "../small_tree_grammar.hpp"
 
@@ -55,7 +56,7 @@ const char* const kTree = test::kSmallTree;
 
 /// Scores by deriving (so anomalies are counted: max_primitives 3 truncates most trees) and counts
 /// the models it scored.
-class CountingScorer final : public Scorer {
+class CountingScorer final : public TreeScorer {
 public:
     explicit CountingScorer(const Grammar& g) : grammar_(g) { setMaxPrimitives(3); }
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<ScoreWorkspace>(); }

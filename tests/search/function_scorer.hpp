@@ -10,13 +10,11 @@ namespace shapevo::test {
 
 class FunctionScorer final : public Scorer {
 public:
-    FunctionScorer(const Grammar& g, std::function<double(const Chromosome&)> f) : grammar_(g), f_(std::move(f)) {}
+    FunctionScorer(const Grammar&, std::function<double(const Chromosome&)> f) : f_(std::move(f)) {}
     std::unique_ptr<ScoreWorkspace> makeWorkspace() const override { return std::make_unique<ScoreWorkspace>(); }
     double fitness(const Chromosome& c, ScoreWorkspace&) const override { return f_(c); }
-    const Grammar& grammar() const override { return grammar_; }
 
 private:
-    const Grammar& grammar_;
     std::function<double(const Chromosome&)> f_;
 };
 

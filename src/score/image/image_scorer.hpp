@@ -14,12 +14,12 @@
 #include "score/image/image_target.hpp"
 #include "score/image/model_store.hpp"
 #include "score/primitive_cache.hpp"
-#include "score/scorer.hpp"
+#include "score/tree_scorer.hpp"
 #include "score/image/silhouette_raster.hpp"
 
 namespace shapevo {
 
-class ImageScorer final : public Scorer {
+class ImageScorer final : public TreeScorer {
 public:
     struct Workspace : ScoreWorkspace {
         /// cacheBytes > 0: keep the primitives' rows (incremental scoring, Scorer::setIncremental):

@@ -6,14 +6,14 @@
 #include <vector>
 
 #include "score/primitive_cache.hpp"
-#include "score/scorer.hpp"
+#include "score/tree_scorer.hpp"
 #include "score/volume/volume_fitness.hpp"
 #include "score/volume/volume_target.hpp"
 #include "score/volume/voxelizer.hpp"
 
 namespace shapevo {
 
-class VolumeScorer final : public Scorer {
+class VolumeScorer final : public TreeScorer {
 public:
     struct Workspace : ScoreWorkspace {
         /// cacheBytes > 0: keep the primitives' voxel rows (incremental scoring, Scorer::setIncremental).

@@ -1,6 +1,5 @@
-// Scorer: the trial and the checking mode of incremental derivation (the rest of the interface
-// is in the header).
-#include "score/scorer.hpp"
+// TreeScorer: the trial and the checking mode of incremental derivation (the rest is in the header).
+#include "score/tree_scorer.hpp"
 
 #include <chrono>
 #include <string>
@@ -9,19 +8,19 @@
 
 namespace shapevo {
 
-DeriveStatus Scorer::deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const {
+DeriveStatus TreeScorer::deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const {
     using Clock = std::chrono::steady_clock;
     const std::uint32_t n = ++w.memoTrial;
-    if (n <= kMemoTrialStart || n % 8 != 0) return derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+    if (n <= kMemoTrialStart || n % 8 != 0) return derive(grammar(), c, w.geometry, w.derive, maxPrimitives());
     // Alternately first and second: whichever runs second finds the chromosome in the cache.
     const bool memoFirst = n % 16 == 0;
     DeriveStatus status = DeriveStatus::Complete;
     const Clock::time_point t0 = Clock::now();
-    if (memoFirst) status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
-    else derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);  // the same geometry, without
+    if (memoFirst) status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives());
+    else derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives());  // the same geometry, without
     const Clock::time_point t1 = Clock::now();
-    if (memoFirst) derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);
-    else status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives_);
+    if (memoFirst) derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives());
+    else status = derive(grammar(), c, w.geometry, w.derive, maxPrimitives());
     const Clock::time_point t2 = Clock::now();
     w.memoSeconds += std::chrono::duration<double>(memoFirst ? t1 - t0 : t2 - t1).count();
     w.plainSeconds += std::chrono::duration<double>(memoFirst ? t2 - t1 : t1 - t0).count();
@@ -29,8 +28,8 @@ DeriveStatus Scorer::deriveOnTrial(const Chromosome& c, ScoreWorkspace& w) const
     return status;
 }
 
-void Scorer::checkDerivation(const Chromosome& c, ScoreWorkspace& w) const {
-    const DeriveStatus status = derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives_);  // no memo
+void TreeScorer::checkDerivation(const Chromosome& c, ScoreWorkspace& w) const {
+    const DeriveStatus status = derive(grammar(), c, w.checkGeometry, w.checkDerive, maxPrimitives());  // no memo
     const auto& a = w.geometry.primitives;
     const auto& b = w.checkGeometry.primitives;
     std::size_t differ = a.size() == b.size() ? a.size() : 0;
