@@ -5,6 +5,7 @@
 // arguments and listed in Grammar::includes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 

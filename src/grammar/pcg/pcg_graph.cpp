@@ -11,7 +11,6 @@
 #include <sstream>
 
 #include "base/input_error.hpp"
-#include "grammar/pcg/graph_order.hpp"
 #include "grammar/pcg/pcg_expression_text.hpp"
 #include "grammar/pcg/pcg_syntax.hpp"
 
@@ -60,7 +59,8 @@ public:
         const PcgFile& f = files_.back();
         g_.name = f.name;
         g_.nameAt = f.nameAt;
-        stack_.push_back(fs::weakly_canonical(fs::path(path)).string());
+        std::error_code ec;
+        stack_.push_back(fs::weakly_canonical(fs::path(path), ec).string());
         instance(f, "", {}, nullptr);
         const bool hasInput = std::any_of(g_.nodes.begin(), g_.nodes.end(), [](const FlatNode& n) { return n.mainInput; });
         if (!hasInput) failAt(f.nameAt, "graph " + f.name + " has no input gate: write `in NAME : volume` (it receives the start scope)");
@@ -141,8 +141,8 @@ private:
             g_.edges.push_back({from, fromPort, to, toPort, e.from.where});
         }
         for (const PortRef& r : f.blocked) {
-            const auto [node, port] = source(r, local);
-            g_.nodes[node].outputs[port].blocked = true;
+            const auto [node, output] = source(r, local);
+            g_.nodes[node].outputs[output].blocked = true;
         }
     }
 

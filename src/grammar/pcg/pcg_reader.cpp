@@ -25,7 +25,7 @@ public:
         std::size_t statements = 0;
         while (in_.peek().kind != TokenKind::End) {
             if (++statements > kMaxStatements) in_.fail(in_.peek().where, "too many statements (at most 100000)");
-            const Token& t = in_.peek();
+            const Token t = in_.peek();  // a copy: peekSecond() may move the tokens
             if (t.kind != TokenKind::Identifier)
                 in_.expected("a statement (graph, attr, param, in, out, node, block or an edge SRC.PORT -> DST.PORT)");
             if (t.isWord("graph") && in_.peekSecond().kind == TokenKind::Identifier) readGraph(f);
@@ -188,7 +188,7 @@ private:
 
     void readEdge(PcgFile& f) {
         const PortRef from = portRef("a statement or an edge SRC.PORT -> DST.PORT");
-        const Token& dash = in_.peek();
+        const Token dash = in_.peek();  // a copy: peekSecond() may move the tokens
         if (!(dash.is('-') && in_.peekSecond().is('>') && dash.where.line == last_))
             in_.expected("'->' after " + from.node + (from.port.empty() ? "" : "." + from.port) +
                          " (statements: graph, attr, param, in, out, node, block; edges: SRC.PORT -> DST.PORT)");
