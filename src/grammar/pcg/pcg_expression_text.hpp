@@ -21,7 +21,8 @@ inline std::string expressionText(const Expr& e, const Renames& rename) {
             const auto it = rename.find(t.text);
             if (it != rename.end()) piece = it->second;
         }
-        const bool tight = t.is('.') || t.is(',') || t.is(')') || t.is(']') ||
+        const bool call = t.is('(') && prev && prev->kind == TokenKind::Identifier;  // uniform(0, 1)
+        const bool tight = call || t.is('.') || t.is(',') || t.is(')') || t.is(']') ||
                            (prev && (prev->is('.') || prev->is('(') || prev->is('[') || prev->is('\'') || prev->is('~')));
         if (prev && !tight) s += ' ';
         s += piece;

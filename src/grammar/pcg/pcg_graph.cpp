@@ -18,7 +18,7 @@ namespace shapevo::pcg {
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace graph_detail {
 
 constexpr std::size_t kMaxIncludeDepth = 32;
 constexpr std::size_t kMaxNodes = 20000;  // every instance's nodes together
@@ -313,7 +313,9 @@ private:
     std::vector<bool> gateInput_;     ///< per node: an input gate
 };
 
-}  // namespace
+}  // namespace graph_detail
+
+using namespace graph_detail;
 
 FlatGraph buildPcgGraph(const std::string& text, const std::string& path) {
     FlatGraph g = Builder(path).build(text, path);

@@ -9,7 +9,7 @@
 
 namespace shapevo::pcg {
 
-namespace {
+namespace graph_checks_detail {
 
 [[noreturn]] void failAt(const Location& l, const std::string& what) {
     throw InputError(l.file, std::to_string(l.line) + ":" + std::to_string(l.column), what);
@@ -118,7 +118,9 @@ void checkWaysOut(const FlatGraph& g) {
     }
 }
 
-}  // namespace
+}  // namespace graph_checks_detail
+
+using namespace graph_checks_detail;
 
 void checkPcgGraph(FlatGraph& g) {
     checkInputsConnected(g);

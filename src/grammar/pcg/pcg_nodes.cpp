@@ -6,7 +6,7 @@
 
 namespace shapevo::pcg {
 
-namespace {
+namespace nodes_detail {
 
 /// `STATEMENT` then what follows the only output.
 template <const char* Statement>
@@ -158,7 +158,9 @@ const std::vector<NodeOp>& table() {
     return ops;
 }
 
-}  // namespace
+}  // namespace nodes_detail
+
+using namespace nodes_detail;
 
 const char* portTypeName(PortType t) {
     switch (t) {

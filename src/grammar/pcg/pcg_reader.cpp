@@ -8,7 +8,7 @@
 
 namespace shapevo::pcg {
 
-namespace {
+namespace reader_detail {
 
 constexpr std::size_t kMaxStatements = 100000;  // a limit a hand-written graph never meets
 
@@ -208,7 +208,9 @@ private:
     int last_ = 0;  ///< the line of the last token taken
 };
 
-}  // namespace
+}  // namespace reader_detail
+
+using namespace reader_detail;
 
 PcgFile readPcg(const std::string& text, const std::string& path) { return Reader(text, path).read(); }
 

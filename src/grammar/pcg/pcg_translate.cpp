@@ -26,7 +26,7 @@
 
 namespace shapevo::pcg {
 
-namespace {
+namespace translate_detail {
 
 struct Lines {
     std::vector<std::string> text;
@@ -212,7 +212,9 @@ private:
     Lines* cur_ = nullptr;
 };
 
-}  // namespace
+}  // namespace translate_detail
+
+using namespace translate_detail;
 
 Translation translatePcg(const std::string& text, const std::string& path) {
     const FlatGraph g = buildPcgGraph(text, path);
