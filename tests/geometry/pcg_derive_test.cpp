@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "../geometry_compare.hpp"
@@ -77,6 +78,7 @@ TEST(PcgDerive, TheCyclicTreeGraphTurnsItsCyclicEdgeIntoAChildSlotAndRecurses) {
 
 TEST(PcgDerive, AnIncludedGraphIsBoundByItsNodeArgumentsAndListedAsAnInclude) {
     test::TempDir dir;
+    std::filesystem::create_directories(dir.file("parts"));
     test::writeFile(dir.file("parts/pillar.pcg"),
                     "graph Pillar\nparam h = uniform(1, 2)\nin base : volume\nout top : volume\n"
                     "node shape = size(0.5, h, 0.5)\nnode draw = box()\nbase -> shape\nshape -> draw\ndraw -> top\n");

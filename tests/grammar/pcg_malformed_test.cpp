@@ -57,7 +57,10 @@ const std::vector<MalformedGraph>& graphCases() {
          "split needs at least one size: split(x, 1, ~2, 1)"},
         {"RepeatWithCountAndSize", graph("node a = repeat(x, count: 3, size: 2)\nnode b = box()\nstart -> a\na -> b\n"), "bad.pcg:3:6",
          "repeat takes either count: N or size: SIZE (S, ~S or 'S), not both or neither"},
-        {"ExpressionErrorAtItsNodeLine", graph("node a = translate(x: nosuch)\nstart -> a\n"), "bad.pcg:3:6", ""},
+        {"ExpressionErrorAtItsNodeLine", graph("node a = translate(x: nosuch)\nstart -> a\n"), "bad.pcg:3:6",
+         "unknown name 'nosuch': expected a parameter declared above in this rule, an argument of the rule, a let value, an attr, "
+         "scope.size, parent.size, pi, or a function (min max abs sin cos sqrt floor) (in its translation to the shapevo language:   "
+         "translate (nosuch, 0, 0))"},
         // --- ports and edges ------------------------------------------------------------
         {"UnknownPort", graph("node a = box()\nstart -> a.inn\n"), "bad.pcg:4:10",
          "node 'a' (box) has no input port 'inn' (its inputs: in)"},
@@ -90,7 +93,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- includes -------------------------------------------------------------------
         {"MissingInclude", graph("node h = include \"nothere.pcg\"\nstart -> h\n"), "bad.pcg:3:18",
          "cannot open graph file 'nothere.pcg' (looked for ..."},
-        {"CyclicInclude", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:3:18",
+        {"CyclicInclude", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:3:21",
          "include cycle: bad.pcg -> sub.pcg -> bad.pcg",
          {{"sub.pcg", "graph Sub\nin lot : volume\nnode back = include \"bad.pcg\"\nlot -> back\n"}}},
         {"PositionalIncludeArgument", graph("node h = include \"sub.pcg\"(2)\nstart -> h\n"), "bad.pcg:3:28",
@@ -99,7 +102,9 @@ const std::vector<MalformedGraph>& graphCases() {
         {"IncludeArgumentNotAParam", graph("node h = include \"sub.pcg\"(v: 2)\nstart -> h\n"), "bad.pcg:3:28",
          "sub.pcg has no param or attr 'v'",
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
-        {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10", "",
+        {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
+         "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
+         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",
