@@ -29,22 +29,13 @@ void writeExtrude(NodeWriter& w) {
     w.flow(0);
 }
 std::string vec(const NodeWriter& w) { return "(" + w.arg(0) + ", " + w.arg(1) + ", " + w.arg(2) + ")"; }
-void writeTranslate(NodeWriter& w) {
-    w.line("translate " + vec(w));
+/// `STATEMENT (x, y, z)` from the first three arguments, then what follows the only output.
+template <const char* Statement>
+void vectorThenFlow(NodeWriter& w) {
+    w.line(std::string(Statement) + " " + vec(w));
     w.flow(0);
 }
-void writeScale(NodeWriter& w) {
-    w.line("scale " + vec(w));
-    w.flow(0);
-}
-void writeSize(NodeWriter& w) {
-    w.line("size " + vec(w));
-    w.flow(0);
-}
-void writeColor(NodeWriter& w) {
-    w.line("color " + vec(w));
-    w.flow(0);
-}
+constexpr char kTranslate[] = "translate", kScale[] = "scale", kSize[] = "size", kColor[] = "color";
 void writeRotate(NodeWriter& w) {
     w.line("rotate " + w.arg(0) + " " + w.arg(1));
     w.flow(0);
@@ -129,16 +120,16 @@ const std::vector<NodeOp>& table() {
         {"extrude", "a flat scope becomes a volume standing on it", {kFlatIn}, {kVolumeOut}, {{"height", ArgKind::Expr, nullptr}},
          writeExtrude},
         {"translate", "move along the scope's axes", {kAnyIn}, {kSameOut},
-         {{"x", ArgKind::Expr, "0"}, {"y", ArgKind::Expr, "0"}, {"z", ArgKind::Expr, "0"}}, writeTranslate},
+         {{"x", ArgKind::Expr, "0"}, {"y", ArgKind::Expr, "0"}, {"z", ArgKind::Expr, "0"}}, vectorThenFlow<kTranslate>},
         {"rotate", "turn about the scope's own axis (degrees)", {kAnyIn}, {kSameOut},
          {{"axis", ArgKind::Axis, nullptr}, {"angle", ArgKind::Expr, nullptr}}, writeRotate},
         {"scale", "multiply the size", {kAnyIn}, {kSameOut},
-         {{"x", ArgKind::Expr, "1"}, {"y", ArgKind::Expr, "1"}, {"z", ArgKind::Expr, "1"}}, writeScale},
+         {{"x", ArgKind::Expr, "1"}, {"y", ArgKind::Expr, "1"}, {"z", ArgKind::Expr, "1"}}, vectorThenFlow<kScale>},
         {"size", "set the size (a left-out axis keeps its size)", {kAnyIn}, {kSameOut},
          {{"x", ArgKind::Expr, "scope.size.x"}, {"y", ArgKind::Expr, "scope.size.y"}, {"z", ArgKind::Expr, "scope.size.z"}},
-         writeSize},
+         vectorThenFlow<kSize>},
         {"color", "the colour of what follows", {kAnyIn}, {kSameOut},
-         {{"r", ArgKind::Expr, nullptr}, {"g", ArgKind::Expr, nullptr}, {"b", ArgKind::Expr, nullptr}}, writeColor},
+         {{"r", ArgKind::Expr, nullptr}, {"g", ArgKind::Expr, nullptr}, {"b", ArgKind::Expr, nullptr}}, vectorThenFlow<kColor>},
         {"split", "pieces along an axis, one output per size (slice1, slice2, ...)", {kAnyIn}, {},
          {{"axis", ArgKind::Axis, nullptr}, {"sizes", ArgKind::Sizes, nullptr}}, writeSplit},
         {"repeat", "equal pieces along an axis (count: N or size: S, ~S)", {kAnyIn}, {{"piece", PortType::Same}},
