@@ -19,7 +19,7 @@ constexpr std::array<CommandEntry, 11> kCommands{{
      "a picture of its silhouette or shadow",
      false, TargetCommand::addOptions, TargetCommand::run},
     {"translate",
-     "Print what a grammar file of another front end (a CastleMaker rule file, .rule) compiles into, in the shapevo grammar "
+     "Print what a grammar file of another front end (a CastleMaker rule file .rule, a procedural content graph .pcg) compiles into, in the shapevo grammar "
      "language: shapevo translate FILE",
      false, TranslateCommand::addOptions, TranslateCommand::run},
     {"evaluate",

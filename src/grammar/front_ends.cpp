@@ -12,6 +12,7 @@
 #include "grammar/crl/crl_translator.hpp"
 #include "grammar/grammar_diagram.hpp"
 #include "grammar/parser.hpp"
+#include "grammar/pcg/pcg_front_end.hpp"
 
 namespace shapevo {
 
@@ -28,11 +29,23 @@ Grammar compileRuleFile(const std::string& text, const std::string& path, const 
     return compileTranslation(crl::translateCrl(text, path, overrides), text, path, overrides);
 }
 
-constexpr std::array<GrammarFrontEnd, 2> kFrontEnds{{
+Translation translateGraphFile(const std::string& text, const std::string& path, const AttrOverrides&) {
+    return pcg::translatePcg(text, path);  // attrs stay attrs: the shapevo parser applies the overrides
+}
+Grammar compileGraphFile(const std::string& text, const std::string& path, const AttrOverrides& overrides) {
+    return compileTranslation(pcg::translatePcg(text, path), text, path, overrides);
+}
+pcg::GraphDiagram graphFileDiagram(const std::string& text, const std::string& path, const AttrOverrides&) {
+    return pcg::pcgDiagram(text, path);
+}
+
+constexpr std::array<GrammarFrontEnd, 3> kFrontEnds{{
     {".grammar", "shapevo grammar", "the shapevo grammar language (grammars/README.md)", "grammar file",
      compileShapeGrammar, nullptr, false},
     {".rule", "CastleMaker rule file", "CastleMaker's CRL, translated into the shapevo language (grammars/castlemaker/README.md)",
      "rule file", compileRuleFile, translateRuleFile, true},
+    {".pcg", "procedural content graph", "a node graph (PCGR), translated into the shapevo language (grammars/pcg/README.md)",
+     "graph file", compileGraphFile, translateGraphFile, false, graphFileDiagram},
 }};
 
 /// The whole text of `path`, read for front end `fe`.

@@ -403,7 +403,7 @@ void readRunSection(SectionReader& r, RunSettings& run) {
 /// [grammar]: file (resolved against the config's folder) and [grammar.attr] NAME = number.
 void readGrammarSection(SectionReader& r, RunSettings& run) {
     r.string("file", run.grammarPath,
-             "the grammar file (.grammar, or a CastleMaker rule file .rule), relative to the config's folder; required");
+             "the grammar file (.grammar, a CastleMaker rule file .rule or a procedural content graph .pcg), relative to the config's folder; required");
     if (run.grammarPath.empty()) r.failKeys({"grammar.file"}, "", "missing [grammar] file = \"...\"");
     run.grammarPath = r.resolvePath(run.grammarPath);
     r.numberTable("attr", run.grammarAttrs,

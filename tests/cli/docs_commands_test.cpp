@@ -1,6 +1,6 @@
 // Every shapevo command the documentation shows is one shapevo accepts: each `shapevo ...` line
 // of a fenced code block (README.md, docs/ but its history/ and generated reference/, the
-// cluster and grammar READMEs) is parsed by the binary (SHAPEVO_CHECK_ARGUMENTS=1: command,
+// cluster, grammar and graph-file READMEs) is parsed by the binary (SHAPEVO_CHECK_ARGUMENTS=1: command,
 // options and option values checked, nothing run); the quick ones that need only shipped files
 // (sample, translate, reference) are run to the end in a temporary folder. In a block whose
 // commands carry a "$ " prompt, the other lines are output and are not commands.
@@ -26,7 +26,8 @@ struct DocsCommand {
 };
 
 std::vector<std::string> docsCommandFiles() {
-    std::vector<std::string> files{"README.md", "cluster/README.md", "grammars/README.md", "grammars/castlemaker/README.md"};
+    std::vector<std::string> files{"README.md", "cluster/README.md", "grammars/README.md", "grammars/castlemaker/README.md",
+                                   "grammars/pcg/README.md"};
     for (const auto& entry : fs::directory_iterator(test::sourcePath("docs")))
         if (entry.path().extension() == ".md") files.push_back("docs/" + entry.path().filename().string());
     return files;

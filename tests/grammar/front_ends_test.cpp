@@ -60,8 +60,8 @@ TEST(FrontEnds, FoundByExtension) {
 }
 
 TEST(FrontEnds, NamesForMessages) {
-    EXPECT_EQ(grammarExtensions(), "\".grammar\" or \".rule\"");
-    EXPECT_EQ(translatingFrontEnds(), "a CastleMaker rule file (.rule)");
+    EXPECT_EQ(grammarExtensions(), "\".grammar\", \".rule\" or \".pcg\"");
+    EXPECT_EQ(translatingFrontEnds(), "a CastleMaker rule file (.rule) or a procedural content graph (.pcg)");
 }
 
 TEST(FrontEnds, OnlyRuleFilesHaveRecursionsThatEndOnlyByChance) {
@@ -70,8 +70,9 @@ TEST(FrontEnds, OnlyRuleFilesHaveRecursionsThatEndOnlyByChance) {
     EXPECT_FALSE(grammarFrontEndFor("x.txt").recursionsEndOnlyByChance);
 }
 
-TEST(FrontEnds, OnlyTheRuleFileTranslates) {
+TEST(FrontEnds, OnlyRuleAndGraphFilesTranslate) {
     EXPECT_NE(grammarFrontEndFor("x.rule").translate, nullptr);
+    EXPECT_NE(grammarFrontEndFor("x.pcg").translate, nullptr);
     EXPECT_EQ(grammarFrontEndFor("x.grammar").translate, nullptr);
 }
 
@@ -113,9 +114,9 @@ TEST(TranslateGrammarFile, TakesAttrOverrides) {
 TEST(TranslateGrammarFile, RefusesAFileThatNeedsNoTranslation) {
     const std::string path = sourcePath("grammars/castle.grammar");
     EXPECT_EQ(inputErrorOf([&] { translateGrammarFile(path); }),
-              path + ": is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule)");
+              path + ": is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule) or a procedural content graph (.pcg)");
     EXPECT_EQ(inputErrorOf([&] { translateGrammarFile("missing.txt"); }),
-              "missing.txt: is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule)");
+              "missing.txt: is read as a shapevo grammar, which needs no translation; shapevo translate reads a CastleMaker rule file (.rule) or a procedural content graph (.pcg)");
     EXPECT_EQ(inputErrorOf([&] { translateGrammarFile("missing.rule"); }), "missing.rule: cannot open rule file");
 }
 

@@ -1,0 +1,181 @@
+// The `.pcg` node table (pcg_nodes.hpp): each operation's ports, arguments and shapevo text.
+#include "grammar/pcg/pcg_nodes.hpp"
+
+#include <array>
+
+
+namespace shapevo::pcg {
+
+namespace nodes_detail {
+
+/// `STATEMENT` then what follows the only output.
+template <const char* Statement>
+void statementThenFlow(NodeWriter& w) {
+    w.line(Statement);
+    w.flow(0);
+}
+constexpr char kBox[] = "box", kCylinder[] = "cylinder", kSphere[] = "sphere", kParaboloid[] = "paraboloid";
+
+void writeCone(NodeWriter& w) {
+    w.line(w.arg(0).empty() ? "cone" : "cone top " + w.arg(0));
+    w.flow(0);
+}
+void writeRoof(NodeWriter& w) {
+    w.line("roof " + w.arg(0));
+    w.flow(0);
+}
+void writeExtrude(NodeWriter& w) {
+    w.line("extrude " + w.arg(0));
+    w.flow(0);
+}
+std::string vec(const NodeWriter& w) { return "(" + w.arg(0) + ", " + w.arg(1) + ", " + w.arg(2) + ")"; }
+/// `STATEMENT (x, y, z)` from the first three arguments, then what follows the only output.
+template <const char* Statement>
+void vectorThenFlow(NodeWriter& w) {
+    w.line(std::string(Statement) + " " + vec(w));
+    w.flow(0);
+}
+constexpr char kTranslate[] = "translate", kScale[] = "scale", kSize[] = "size", kColor[] = "color";
+void writeRotate(NodeWriter& w) {
+    w.line("rotate " + w.arg(0) + " " + w.arg(1));
+    w.flow(0);
+}
+
+/// `{` what follows output `port` `}`, or `nil`.
+void successor(NodeWriter& w, std::size_t port, const std::string& before, const std::string& after) {
+    if (!w.flows(port)) {
+        w.line(before + "nil" + after);
+        return;
+    }
+    w.line(before + "{");
+    w.flow(port);
+    w.line("}" + after);
+}
+
+void writeSplit(NodeWriter& w) {
+    const std::vector<std::string>& sizes = w.sizes();
+    w.line("split " + w.arg(0) + " {");
+    for (std::size_t k = 0; k < sizes.size(); ++k) successor(w, k, (k ? "| " : "") + sizes[k] + ": ", "");
+    w.line("}");
+}
+
+void writeRepeat(NodeWriter& w) {
+    const std::string& count = w.arg(1);
+    const std::string& size = w.arg(2);
+    if (count.empty() == size.empty()) w.fail("repeat takes either count: N or size: SIZE (S, ~S or 'S), not both or neither");
+    successor(w, 0, "repeat " + w.arg(0) + (count.empty() ? " " + size : " count " + count) + " ", "");
+}
+
+constexpr std::array<const char*, 7> kFaces{"top", "bottom", "front", "back", "left", "right", "side"};
+void writeComp(NodeWriter& w) {
+    bool any = false;
+    for (std::size_t k = 0; k < kFaces.size(); ++k) any = any || w.flows(k);
+    if (!any) return;  // every face a leaf: nothing follows
+    w.line("comp {");
+    bool first = true;
+    for (std::size_t k = 0; k < kFaces.size(); ++k) {
+        if (!w.flows(k)) continue;
+        successor(w, k, std::string(first ? "" : "| ") + kFaces[k] + ": ", "");
+        first = false;
+    }
+    w.line("}");
+}
+
+void writeLotRect(NodeWriter& w) {
+    successor(w, 0, "lot rect (" + w.arg(0) + ", " + w.arg(1) + ", " + w.arg(2) + ", " + w.arg(3) + ") ", "");
+}
+
+void writeIf(NodeWriter& w) {
+    if (!w.flows(0) && !w.flows(1)) return;  // both leaves: nothing follows either way
+    w.line("if (" + w.arg(0) + ") {");
+    w.flow(0);
+    if (w.flows(1)) {
+        w.line("} else {");
+        w.flow(1);
+    }
+    w.line("}");
+}
+
+void writeChance(NodeWriter& w) {
+    if (w.flows(0)) w.line("child " + w.childRule(0) + " prob " + w.arg(0));
+}
+
+const PortSpec kVolumeIn{"in", PortType::Volume};
+const PortSpec kFlatIn{"in", PortType::Flat};
+const PortSpec kAnyIn{"in", PortType::Entity};
+const PortSpec kVolumeOut{"out", PortType::Volume};
+const PortSpec kSameOut{"out", PortType::Same};
+const PortSpec kFlatOut{"out", PortType::Flat};
+
+const std::vector<NodeOp>& table() {
+    static const std::vector<NodeOp> ops = {
+        {"box", "emit a box filling the scope", {kVolumeIn}, {kVolumeOut}, {}, statementThenFlow<kBox>},
+        {"cylinder", "emit a cylinder along the scope's y", {kVolumeIn}, {kVolumeOut}, {}, statementThenFlow<kCylinder>},
+        {"cone", "emit a cone (top: the top radius's fraction, a frustum)", {kVolumeIn}, {kVolumeOut},
+         {{"top", ArgKind::Expr, ""}}, writeCone},
+        {"sphere", "emit an ellipsoid filling the scope", {kVolumeIn}, {kVolumeOut}, {}, statementThenFlow<kSphere>},
+        {"paraboloid", "emit a parabolic cone", {kVolumeIn}, {kVolumeOut}, {}, statementThenFlow<kParaboloid>},
+        {"roof", "emit a roof (kind: gable, hip or pyramid)", {kVolumeIn}, {kVolumeOut},
+         {{"kind", ArgKind::Word, "gable", "gable hip pyramid"}}, writeRoof},
+        {"extrude", "a flat scope becomes a volume standing on it", {kFlatIn}, {kVolumeOut}, {{"height", ArgKind::Expr, nullptr}},
+         writeExtrude},
+        {"translate", "move along the scope's axes", {kAnyIn}, {kSameOut},
+         {{"x", ArgKind::Expr, "0"}, {"y", ArgKind::Expr, "0"}, {"z", ArgKind::Expr, "0"}}, vectorThenFlow<kTranslate>},
+        {"rotate", "turn about the scope's own axis (degrees)", {kAnyIn}, {kSameOut},
+         {{"axis", ArgKind::Axis, nullptr}, {"angle", ArgKind::Expr, nullptr}}, writeRotate},
+        {"scale", "multiply the size", {kAnyIn}, {kSameOut},
+         {{"x", ArgKind::Expr, "1"}, {"y", ArgKind::Expr, "1"}, {"z", ArgKind::Expr, "1"}}, vectorThenFlow<kScale>},
+        {"size", "set the size (a left-out axis keeps its size)", {kAnyIn}, {kSameOut},
+         {{"x", ArgKind::Expr, "scope.size.x"}, {"y", ArgKind::Expr, "scope.size.y"}, {"z", ArgKind::Expr, "scope.size.z"}},
+         vectorThenFlow<kSize>},
+        {"color", "the colour of what follows", {kAnyIn}, {kSameOut},
+         {{"r", ArgKind::Expr, nullptr}, {"g", ArgKind::Expr, nullptr}, {"b", ArgKind::Expr, nullptr}}, vectorThenFlow<kColor>},
+        {"split", "pieces along an axis, one output per size (slice1, slice2, ...)", {kAnyIn}, {},
+         {{"axis", ArgKind::Axis, nullptr}, {"sizes", ArgKind::Sizes, nullptr}}, writeSplit},
+        {"repeat", "equal pieces along an axis (count: N or size: S, ~S)", {kAnyIn}, {{"piece", PortType::Same}},
+         {{"axis", ArgKind::Axis, nullptr}, {"count", ArgKind::Expr, ""}, {"size", ArgKind::Expr, ""}}, writeRepeat},
+        {"comp", "a volume's faces as flat scopes", {kVolumeIn},
+         {{"top", PortType::Flat}, {"bottom", PortType::Flat}, {"front", PortType::Flat}, {"back", PortType::Flat},
+          {"left", PortType::Flat}, {"right", PortType::Flat}, {"side", PortType::Flat}},
+         {}, writeComp},
+        {"lot_rect", "a rectangular lot between two corners", {kAnyIn}, {kFlatOut},
+         {{"x1", ArgKind::Expr, nullptr}, {"y1", ArgKind::Expr, nullptr}, {"x2", ArgKind::Expr, nullptr}, {"y2", ArgKind::Expr, nullptr}},
+         writeLotRect},
+        {"if", "route to true or false by a condition", {kAnyIn}, {{"true", PortType::Same}, {"false", PortType::Same}},
+         {{"condition", ArgKind::Expr, nullptr}}, writeIf, true},
+        {"chance", "go on with probability p (a constant), in a gene of its own", {kAnyIn}, {{"yes", PortType::Same}},
+         {{"p", ArgKind::Expr, nullptr}}, writeChance, true},
+    };
+    return ops;
+}
+
+}  // namespace nodes_detail
+
+using namespace nodes_detail;
+
+const char* portTypeName(PortType t) {
+    switch (t) {
+    case PortType::Volume: return "volume";
+    case PortType::Flat: return "flat";
+    case PortType::Entity: return "entity";
+    case PortType::Same: return "entity";
+    }
+    return "?";
+}
+
+std::span<const NodeOp> nodeOps() { return table(); }
+
+const NodeOp* findNodeOp(const std::string& name) {
+    for (const NodeOp& op : table())
+        if (name == op.name) return &op;
+    return nullptr;
+}
+
+std::string nodeOpNames() {
+    const auto& ops = table();
+    std::string s;
+    for (std::size_t k = 0; k < ops.size(); ++k) s += (k ? ", " : "") + std::string(ops[k].name);
+    return s;
+}
+
+}  // namespace shapevo::pcg

@@ -1,0 +1,68 @@
+// libFuzzer target: arbitrary bytes -> parseGrammar as a procedural content graph (.pcg,
+// src/grammar/pcg/), read from this target's own scratch folder, where a few graph files exist
+// for includes to find (part.pcg, loop.pcg; the dictionary pcg.dict names them) and nothing else
+// resolves. A located InputError is the expected way to reject input: located inside the input,
+// or inside the other file it names (an included graph file); any other exception, a sanitizer
+// report, or a broken invariant of an accepted grammar (grammar_invariants.hpp, shared with
+// fuzz_grammar_parser) is a crash.
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "grammar_invariants.hpp"
+#include "scratch_folder.hpp"
+
+namespace {
+
+using namespace shapevo;
+
+void put(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) {
+        std::perror(path.c_str());
+        std::abort();
+    }
+}
+
+/// The scratch folder with its files, made once.
+const std::string& folder() {
+    static const std::string dir = [] {
+        const std::string d = fuzz::scratchFolder("fuzz_pcg_parser");
+        put(d + "/part.pcg", "graph Part\nparam h = uniform(1, 2)\nin base : volume\nout top : volume\n"
+                             "node s = size(1, h, 1)\nnode b = box()\nbase -> s\ns -> b\nb -> top\n");
+        put(d + "/loop.pcg", "graph Loop\nin base : volume\nnode l = include \"loop.pcg\"\nbase -> l\n");
+        return d;
+    }();
+    return dir;
+}
+
+std::string textOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    const std::string path = folder() + "/fuzz.pcg";
+    try {
+        const Grammar g = parseGrammar(text, path);
+        fuzz::checkAccepted(g);
+        FUZZ_CHECK(g.source == text);
+    } catch (const InputError& e) {
+        if (e.file() == path) {
+            fuzz::checkLocated(e, text, path);
+        } else {  // another file's place: it must be a file that was read
+            std::error_code ec;
+            FUZZ_CHECK(!e.file().empty() && std::filesystem::is_regular_file(e.file(), ec));
+            fuzz::checkLocated(e, textOf(e.file()), e.file());
+        }
+    }
+    return 0;
+}

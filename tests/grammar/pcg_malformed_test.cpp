@@ -1,0 +1,143 @@
+// Every malformed `.pcg` graph file (grammars/pcg/README.md) is rejected with an InputError whose
+// text is exactly `file:LINE:COLUMN: message`, at the place in the user's own .pcg file (never a
+// line of its translation), the message saying what is wrong. Each case is written into a fresh
+// folder as bad.pcg, with the other graph files it includes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../test_support.hpp"
+#include "base/input_error.hpp"
+#include "grammar/front_ends.hpp"
+
+namespace shapevo {
+namespace pcg_malformed_test_helpers {
+
+struct MalformedGraph {
+    const char* name;                                        ///< test name suffix: what is wrong
+    std::string text;                                        ///< bad.pcg
+    std::string where;                                       ///< expected "FILE:LINE:COL" (file name only)
+    std::string message;                                     ///< the expected message, exactly (ending "...": its start)
+    std::vector<std::pair<std::string, std::string>> files;  ///< other files in the folder
+};
+
+std::ostream& operator<<(std::ostream& os, const MalformedGraph& m) { return os << m.name; }
+
+// Lines 1-2 of most cases; the case's own lines start at line 3.
+std::string graph(const std::string& lines) { return "graph G\nin start : volume\n" + lines; }
+
+const std::vector<MalformedGraph>& graphCases() {
+    static const std::vector<MalformedGraph> all = {
+        // --- nodes and their operations -------------------------------------------------
+        {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
+         "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
+         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\""},
+        {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
+         "node id 'a' is used twice (first at line 3)"},
+        {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
+        // --- arguments ------------------------------------------------------------------
+        {"UnknownArgumentName", graph("node a = translate(w: 1)\nstart -> a\n"), "bad.pcg:3:20",
+         "translate has no argument 'w' (its arguments: x, y, z)"},
+        {"MissingArgument", graph("node a = rotate(x)\nstart -> a\n"), "bad.pcg:3:10", "rotate needs argument 'angle'"},
+        {"TooManyArguments", graph("node a = rotate(x, 1, 2)\nstart -> a\n"), "bad.pcg:3:23",
+         "rotate takes 2 arguments, this node gives 3"},
+        {"ArgumentGivenTwice", graph("node a = translate(x: 1, x: 2)\nstart -> a\n"), "bad.pcg:3:26",
+         "argument 'x' of translate is given twice"},
+        {"PositionalAfterNamed", graph("node a = translate(y: 1, 2)\nstart -> a\n"), "bad.pcg:3:26",
+         "a positional argument after a named one (translate)"},
+        {"BadAxis", graph("node a = split(w, 1, ~1)\nstart -> a\n"), "bad.pcg:3:16",
+         "argument 'axis' of split is one of x, y, z, not 'w'"},
+        {"BadRoofKind", graph("node a = roof(flat)\nstart -> a\n"), "bad.pcg:3:15",
+         "argument 'kind' of roof is one of gable, hip, pyramid, not 'flat'"},
+        {"SplitWithoutSizes", graph("node a = split(x)\nstart -> a\n"), "bad.pcg:3:10",
+         "split needs at least one size: split(x, 1, ~2, 1)"},
+        {"RepeatWithCountAndSize", graph("node a = repeat(x, count: 3, size: 2)\nnode b = box()\nstart -> a\na -> b\n"), "bad.pcg:3:6",
+         "repeat takes either count: N or size: SIZE (S, ~S or 'S), not both or neither"},
+        {"ExpressionErrorAtItsNodeLine", graph("node a = translate(x: nosuch)\nstart -> a\n"), "bad.pcg:3:6",
+         "unknown name 'nosuch': expected a parameter declared above in this rule, an argument of the rule, a let value, an attr, "
+         "scope.size, parent.size, pi, or a function (min max abs sin cos sqrt floor) (in its translation to the shapevo language:   "
+         "translate (nosuch, 0, 0))"},
+        // --- ports and edges ------------------------------------------------------------
+        {"UnknownPort", graph("node a = box()\nstart -> a.inn\n"), "bad.pcg:4:10",
+         "node 'a' (box) has no input port 'inn' (its inputs: in)"},
+        {"UnknownNodeInEdge", graph("start -> nowhere\n"), "bad.pcg:3:10", "unknown node 'nowhere'"},
+        {"PortNotNamedWhereThereAreSeveral", graph("node i = if(1)\nnode b = box()\nstart -> i\ni -> b\n"), "bad.pcg:6:1",
+         "node 'i' (if) has 2 output ports (true, false): name one, i.PORT"},
+        {"TypeMismatchNamesBothPorts", graph("node c = comp()\nnode b = box()\nstart -> c\nc.top -> b\n"), "bad.pcg:6:1",
+         "cannot connect c.top (flat) to b.in (volume): box takes a volume"},
+        {"GateWithAPort", graph("node a = box()\nstart.out -> a\n"), "bad.pcg:4:1",
+         "'start' is a gate, a port itself: write start without a port"},
+        {"EdgeFromAnOutputGate", graph("out done : volume\nnode a = box()\nstart -> a\ndone -> a\n"), "bad.pcg:6:1",
+         "'done' is an output gate: edges end there (... -> done)"},
+        {"MissingArrow", graph("node a = box()\nstart a\n"), "bad.pcg:4:7",
+         "expected '->' after start (statements: graph, attr, param, in, out, node, block; edges: SRC.PORT -> DST.PORT), found 'a'"},
+        {"UnconnectedRequiredInput", graph("node a = box()\nnode b = box()\nstart -> a\n"), "bad.pcg:4:6",
+         "input 'in' of node 'b' (box) is not connected: an edge must lead to it"},
+        {"NodeNeverReached", graph("node a = box()\nnode b = translate(x: 1)\nstart -> a\nb -> b\n"), "bad.pcg:4:6",
+         "node 'b' is never reached: no path leads to it from an input gate"},
+        {"CycleWithNoWayOut", graph("node a = translate(x: 1)\nnode b = box()\nstart -> a\na -> b\nb -> a\n"), "bad.pcg:7:1",
+         "a cycle with no way out (through a, b): it would never end; put an `if` or a `chance` node on it"},
+        // --- declarations ---------------------------------------------------------------
+        {"NoGraphName", "in start : volume\n", "bad.pcg:1:1", "no graph name: a .pcg file starts with `graph NAME`"},
+        {"NoInputGate", "graph G\n", "bad.pcg:1:7",
+         "graph G has no input gate: write `in NAME : volume` (it receives the start scope)"},
+        {"UnknownGateType", "graph G\nin start : solid\n", "bad.pcg:2:12", "unknown port type 'solid': expected volume, flat or entity"},
+        {"NameDeclaredTwice", "graph G\nattr w = 1\nparam w = uniform(0, 1)\nin start : volume\n", "bad.pcg:3:7",
+         "'w' is declared twice (first at line 2)"},
+        {"UnbalancedBracketInAttr", "graph G\nattr w = (1 + 2\nin start : volume\n", "bad.pcg:4:1",
+         "expected a closing bracket, found end of file"},
+        // --- includes -------------------------------------------------------------------
+        {"MissingInclude", graph("node h = include \"nothere.pcg\"\nstart -> h\n"), "bad.pcg:3:18",
+         "cannot open graph file 'nothere.pcg' (looked for ..."},
+        {"CyclicInclude", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:3:21",
+         "include cycle: bad.pcg -> sub.pcg -> bad.pcg",
+         {{"sub.pcg", "graph Sub\nin lot : volume\nnode back = include \"bad.pcg\"\nlot -> back\n"}}},
+        {"PositionalIncludeArgument", graph("node h = include \"sub.pcg\"(2)\nstart -> h\n"), "bad.pcg:3:28",
+         "include arguments are named: include \"sub.pcg\"(NAME: VALUE)",
+         {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
+        {"IncludeArgumentNotAParam", graph("node h = include \"sub.pcg\"(v: 2)\nstart -> h\n"), "bad.pcg:3:28",
+         "sub.pcg has no param or attr 'v'",
+         {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
+        {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
+         "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
+         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\"",
+         {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
+        {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
+         "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",
+         {{"sub.pcg", "graph Sub\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
+    };
+    return all;
+}
+
+}  // namespace pcg_malformed_test_helpers
+
+using namespace pcg_malformed_test_helpers;
+
+class GraphFileMalformed : public ::testing::TestWithParam<MalformedGraph> {};
+
+TEST_P(GraphFileMalformed, IsRejectedAtItsPlaceInTheGraphFileWithItsMessage) {
+    const MalformedGraph& m = GetParam();
+    test::TempDir dir;
+    test::writeFile(dir.file("bad.pcg"), m.text);
+    for (const auto& [name, text] : m.files) test::writeFile(dir.file(name), text);
+    try {
+        loadGrammar(dir.file("bad.pcg"));
+        FAIL() << "expected InputError for:\n" << m.text;
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::filesystem::path(e.file()).filename().string() + ":" + e.where(), m.where) << e.what();
+        const std::string_view expected = m.message;
+        if (expected.ends_with("..."))  // the rest names a temporary folder
+            EXPECT_EQ(e.message().substr(0, expected.size() - 3), expected.substr(0, expected.size() - 3)) << e.what();
+        else
+            EXPECT_EQ(e.message(), m.message) << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(GraphCases, GraphFileMalformed, ::testing::ValuesIn(graphCases()),
+                         [](const ::testing::TestParamInfo<MalformedGraph>& info) { return std::string(info.param.name); });
+
+}  // namespace shapevo
