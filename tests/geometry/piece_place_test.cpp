@@ -72,10 +72,11 @@ TEST(PiecePlace, CompFacesAreNumberedInTheOrderTheyAreListed) {
     // top, then side's four faces (front, right, back, left); x orders them: left, (top, front, back), right
     const Geometry geo = derived(with("comp { top: PROBE | side: PROBE }"));
     ASSERT_EQ(geo.primitives.size(), 5u);
-    std::set<std::pair<int, int>> seen(places(geo).begin(), places(geo).end());
+    const Places read = places(geo);
+    const std::set<std::pair<int, int>> seen(read.begin(), read.end());
     EXPECT_EQ(seen, (std::set<std::pair<int, int>>{{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}}));
-    EXPECT_EQ(places(geo).front(), (std::pair<int, int>{4, 5})) << "left, the last face";
-    EXPECT_EQ(places(geo).back(), (std::pair<int, int>{2, 5})) << "right, the second of side's";
+    EXPECT_EQ(read.front(), (std::pair<int, int>{4, 5})) << "left, the last face";
+    EXPECT_EQ(read.back(), (std::pair<int, int>{2, 5})) << "right, the second of side's";
 }
 
 TEST(PiecePlace, OutsideEveryPieceIndexIsZeroAndCountOne) {
