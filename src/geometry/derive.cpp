@@ -114,30 +114,40 @@ namespace {
     return std::uint32_t(looks.size() - 1);
 }
 
+/// The marks of the pieces just made (scratch.pieceMarks), for grammars that mark pieces: with
+/// `per piece` parameters the k-th piece of a kind (counted from the first) gets its key; with
+/// piece.index / piece.count each piece its place among them (nil ones too), except in `[ ]`.
+[[gnu::noinline]] void markPieces(const Grammar& g, const PieceList& list, const PieceMark& mark, DeriveScratch& scratch) {
+    const std::size_t n = scratch.pieces.size();
+    scratch.pieceMarks.assign(n, mark);
+    std::vector<std::uint32_t>& seen = scratch.repetitions;
+    if (g.usesPieceKeys) {
+        seen.assign(list.count, 0);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint16_t kind = g.pieces[list.first + scratch.pieces[k].piece].first;
+            scratch.pieceMarks[k].key = pieceKey(mark.key, kind, seen[kind]++);
+        }
+    }
+    if (g.usesPiecePlaces && list.kind != PiecesKind::Copy)
+        for (std::size_t k = 0; k < n; ++k) scratch.pieceMarks[k].place = piecePlace(std::uint32_t(k), std::uint32_t(n));
+}
+
 /// The pieces of a Pieces statement, each a task running its successor on its own scope.
 [[gnu::noinline]] void pushPieces(const Grammar& g, const Statement& st, std::uint32_t gene, const Scope& s,
                                   const float* params, const glm::vec3& parentSize, float* evalStack,
-                                  std::uint32_t frame, std::uint32_t key, DeriveScratch& scratch) {
+                                  std::uint32_t frame, PieceMark mark, DeriveScratch& scratch) {
     makePieces(g, g.pieceLists[st.slot], s, params, parentSize, evalStack, scratch.pieces);
     const PieceList& list = g.pieceLists[st.slot];
-    std::vector<std::uint32_t>& seen = scratch.repetitions;
-    if (g.usesPieceKeys) seen.assign(list.count, 0);
+    if (g.marksPieces) [[unlikely]]
+        markPieces(g, list, mark, scratch);
     // Last piece first, scope and task alike: the first piece runs first, and every task below
     // the one popped refers to scopes below its own (see derive's resize of `scopes`).
-    // With `per piece` parameters, the k-th piece of a kind (counted from the first) gets its key.
-    if (g.usesPieceKeys) {
-        scratch.pieceKeys.resize(scratch.pieces.size());
-        for (std::size_t k = 0; k < scratch.pieces.size(); ++k) {
-            const std::uint16_t kind = g.pieces[list.first + scratch.pieces[k].piece].first;
-            scratch.pieceKeys[k] = pieceKey(key, kind, seen[kind]++);
-        }
-    }
     for (std::size_t k = scratch.pieces.size(); k-- > 0;) {
         const Piece& piece = g.pieces[list.first + scratch.pieces[k].piece];
         if (piece.begin == piece.end) continue;  // nil
         scratch.scopes.push_back(scratch.pieces[k].scope);
         const auto at = std::uint32_t(scratch.scopes.size() - 1);
-        scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame, g.usesPieceKeys ? scratch.pieceKeys[k] : key});
+        scratch.stack.push_back({gene, piece.begin, piece.end, at, at, frame, g.marksPieces ? scratch.pieceMarks[k] : mark});
     }
 }
 /// With the memo: keep every open subtree whose last task is done (the stack is back to the
@@ -161,7 +171,8 @@ namespace {
                                     DeriveScratch& scratch, SubtreeMemo& memo, std::size_t& tasks, std::size_t maxTasks,
                                     std::size_t maxPrimitives) {
     const Scope& s = scratch.scopes[task.scope];
-    const SubtreeMemo::Start start(memo.contentOf(task.gene), g.usesPieceKeys ? task.key : 0,
+    const SubtreeMemo::Start start(memo.contentOf(task.gene), g.usesPieceKeys ? task.mark.key : 0,
+                                   g.usesPiecePlaces ? &task.mark.place : nullptr,
                                    g.hasAppearance ? &scratch.looks[s.look] : nullptr, s);
     SubtreeMemo::Found found;
     const std::size_t first = out.primitives.size();
@@ -206,9 +217,9 @@ void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_
     }
     // Live scopes are about as many as pending tasks: sized with the stack, they stop growing when it does.
     if (scratch.scopes.capacity() < scratch.stack.capacity()) scratch.scopes.reserve(scratch.stack.capacity());
-    scratch.params.resize(std::size_t(kPieceKeySlot) + 1);
+    scratch.params.resize(kParamBlockFloats);
     scratch.scopes.push_back(s);
-    scratch.stack.push_back({gene, 0, UINT32_MAX, 0, 0, DeriveScratch::kNoFrame, start.key});
+    scratch.stack.push_back({gene, 0, UINT32_MAX, 0, 0, DeriveScratch::kNoFrame, {start.key, start.place}});
 }
 
 /// Whether `task` is the first task of its gene's subtree, on its parent's scope (what the memo
@@ -260,16 +271,32 @@ struct Derivation {
     return nonFinite(scratch, rule);
 }
 
+/// `mark`'s piece key (its bits) and, with piece.index / piece.count, its place into the parameter block.
+[[gnu::always_inline]] inline void loadMark(const Grammar& g, const PieceMark& mark, float* params) {
+    std::memcpy(params + kPieceKeySlot, &mark.key, sizeof mark.key);
+    if (g.usesPiecePlaces) {
+        params[kPieceIndexSlot] = float(mark.place & 0xFFFFu);
+        params[kPieceCountSlot] = float(mark.place >> 16);
+    }
+}
+
 /// `params` for `task`: its gene's parameters, the let values it goes on with (a mirror's or a
-/// piece's continuation) and its piece key.
+/// piece's continuation) and its piece mark.
 [[gnu::always_inline]] inline void loadParams(const Derivation& d, const Rule& r, const DeriveScratch::Task& task,
                                               float* params) {
     if (r.paramFloats > 0)
         std::memcpy(params, &d.c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
     if (task.frame != DeriveScratch::kNoFrame) [[unlikely]]
         std::memcpy(params + kFrameBase, d.scratch.frames.data() + task.frame, r.frameFloats * sizeof(float));
-    if (d.g.usesPieceKeys) [[unlikely]]
-        std::memcpy(params + kPieceKeySlot, &task.key, sizeof task.key);
+    if (d.g.marksPieces) [[unlikely]]
+        loadMark(d.g, task.mark, params);
+}
+
+/// A ScopeFrame statement: the scope's world origin and axes into the parameter block, where
+/// scope.origin and scope.axis read them.
+[[gnu::noinline]] void writeScopeFrame(const Scope& s, float* params) {
+    std::memcpy(params + kScopeOriginSlot, &s.origin[0], 3 * sizeof(float));
+    std::memcpy(params + kScopeAxisSlot, &s.axes[0][0], 9 * sizeof(float));  // column a: axis a
 }
 
 /// Append the `count` let values of `params` to `frames`; returns where they start. Out of line:
@@ -301,7 +328,7 @@ template <class Eval>
     scopes.push_back(mirrored);
     // the parent scope stays where it is: at or below task.scope
     const std::uint32_t frame = snapshot(r, d.scratch.frames, params);
-    d.scratch.stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.key});
+    d.scratch.stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.mark});
 }
 
 /// What a primitive kind's emit reads (K::emit, setParams): its expressions and its slot.
@@ -358,7 +385,7 @@ template <Focus F>
                 stored = std::uint32_t(scopes.size() - 1);
             }
             d.scratch.stack.push_back({task.gene + std::uint32_t(off), 0, UINT32_MAX, stored, stored,
-                                       DeriveScratch::kNoFrame, task.key});
+                                       DeriveScratch::kNoFrame, task.mark});
         }
     }
 }
@@ -454,9 +481,12 @@ template <Focus F>
             s.look = textureLook(g, st, scratch.looks, s, params, parentSize, evalStack, d.out.textureFrames);
             stored = UINT32_MAX;
             break;
+        case StatementKind::ScopeFrame:
+            writeScopeFrame(s, params);
+            break;
         case StatementKind::Pieces:
             pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(r, scratch.frames, params),
-                       task.key, scratch);
+                       task.mark, scratch);
             stored = UINT32_MAX;
             i = st.end - 1;
             break;
@@ -490,7 +520,7 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
         if constexpr (F == Focus::Path) {
             if (task.gene == focus && startsSubtree(task)) {
                 const Scope& s = scopes[task.scope];
-                starts->push_back({s, g.hasAppearance ? scratch.looks[s.look] : Appearance{}, task.key});
+                starts->push_back({s, g.hasAppearance ? scratch.looks[s.look] : Appearance{}, task.mark.key, task.mark.place});
                 continue;
             }
             if (!onPath(d, task.gene)) continue;

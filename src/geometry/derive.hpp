@@ -11,13 +11,27 @@
 
 namespace shapevo {
 
-/// Where a gene's subtree starts being derived: its parent's scope, the look in force there and
-/// the piece key (what a SubtreeMemo::Start holds besides the content). What derive makes of the
-/// subtree depends on nothing else (subtree_memo.hpp).
+/// piece.index and piece.count packed in one word: index | count << 16 (both at most kMaxPieces).
+inline constexpr std::uint32_t piecePlace(std::uint32_t index, std::uint32_t count) { return index | count << 16; }
+/// The place outside any piece: piece.index 0, piece.count 1.
+inline constexpr std::uint32_t kNoPiecePlace = piecePlace(0, 1);
+
+/// Which piece a task runs in: its piece key (grammar/expression.hpp, pieceKey: which piece of
+/// its kind, for `per piece`) and its place (piecePlace: piece.index, piece.count). Children
+/// inherit their parent's; only grammars with Grammar::marksPieces give pieces their own.
+struct PieceMark {
+    std::uint32_t key = 0;
+    std::uint32_t place = kNoPiecePlace;
+};
+
+/// Where a gene's subtree starts being derived: its parent's scope, the look in force there, the
+/// piece key and place (what a SubtreeMemo::Start holds besides the content). What derive makes
+/// of the subtree depends on nothing else (subtree_memo.hpp).
 struct SubtreeStart {
     Scope scope;  ///< `look` unused: the look is `look`
     Appearance look;
     std::uint32_t key = 0;
+    std::uint32_t place = kNoPiecePlace;  ///< piecePlace(piece.index, piece.count)
 };
 
 /// Reusable work space for derive (no allocation once warm).
@@ -29,7 +43,7 @@ struct DeriveScratch {
         std::uint32_t scope;      ///< index in `scopes`: current scope when the task starts
         std::uint32_t parent;     ///< index in `scopes`: scope the gene received from its parent
         std::uint32_t frame;      ///< its let values in `frames` (kNoFrame: none)
-        std::uint32_t key = 0;    ///< piece key (grammar/expression.hpp, pieceKey): which piece of its kind it runs in
+        PieceMark mark;           ///< which piece it runs in (piece key, piece.index and piece.count)
     };
     static constexpr std::uint32_t kNoFrame = UINT32_MAX;
     std::vector<Task> stack;
@@ -42,7 +56,7 @@ struct DeriveScratch {
     std::vector<float> frames;
     std::vector<PieceScope> pieces;    ///< work space of split / comp / lot statements
     std::vector<std::uint32_t> repetitions;  ///< per kind of piece of a list: how many came before (`per piece`)
-    std::vector<std::uint32_t> pieceKeys;    ///< the piece keys of the pieces being pushed (`per piece`)
+    std::vector<PieceMark> pieceMarks;       ///< the marks of the pieces being pushed (Grammar::marksPieces)
     std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
     /// Set: incremental derivation. Every gene's subtree is looked up before it is derived and

@@ -145,6 +145,12 @@ void makePieces(const Grammar& g, const PieceList& list, const Scope& s, const f
     case PiecesKind::Copy:
         out.push_back({s, 0});
         return;
+    case PiecesKind::CopyCount: {  // N times the scope itself, successors in turn (N as repeat count's)
+        const float v = eval(list.arg[0]);
+        const float n = std::isfinite(v) ? std::clamp(std::floor(v), 0.0f, float(kMaxPieces)) : 0.0f;
+        for (std::uint32_t k = 0; float(k) < n; ++k) out.push_back({s, k % list.count});
+        return;
+    }
     case PiecesKind::Comp:
         for (std::uint32_t k = 0; k < list.count; ++k) face(s, FaceName(g.pieces[list.first + k].face), k, out);
         return;

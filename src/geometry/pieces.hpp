@@ -1,4 +1,4 @@
-// Pieces: the scopes a split, repeat, comp or lot statement makes of the current scope (the
+// Pieces: the scopes a split, repeat, comp, lot or copy statement makes of the current scope (the
 // statement kinds are in grammar/grammar.hpp, PiecesKind; the rules are in grammars/README.md).
 // Pure arithmetic on one scope; no allocation once `out` has grown.
 //

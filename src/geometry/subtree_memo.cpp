@@ -15,11 +15,13 @@ static_assert(sizeof(Primitive) % 4 == 0 && sizeof(Appearance) % 4 == 0, "record
 static_assert(std::is_trivially_copyable_v<Primitive> && std::is_trivially_copyable_v<Appearance>);
 }  // namespace
 
-SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const Appearance* look, const Scope& s) {
+SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const std::uint32_t* place, const Appearance* look,
+                          const Scope& s) {
     words[0] = std::uint32_t(content);
     words[1] = std::uint32_t(content >> 32);
     words[2] = key;
     std::uint32_t n = 3;
+    if (place) words[n++] = *place;
     if (look) {
         std::memcpy(&words[n], &look->color[0], 12);
         words[n + 3] = std::uint32_t(look->material) | std::uint32_t(look->texture) << 16;

@@ -7,7 +7,7 @@
 // first: the same rule, the same parameters bit for bit and children of the same numbers (in slot
 // order) get the same number, found in a table of the contents seen before (hash consing); a new
 // content gets a number never given before. A subtree's output is then kept by its number and its
-// start (the scope's origin, axes and size, its look, the piece key, bit for bit).
+// start (the scope's origin, axes and size, its look, the piece key and place, bit for bit).
 //
 // Promises:
 //  - Exact: numbers are compared, never only hashes: two subtrees share a number only if their
@@ -40,14 +40,16 @@ namespace shapevo {
 
 class SubtreeMemo {
 public:
-    /// Where a subtree starts: its content's number, its piece key, look (with colours) and scope, as words.
+    /// Where a subtree starts: its content's number, its piece key, its piece place (grammars
+    /// reading piece.index / piece.count), look (with colours) and scope, as words.
     struct Start {
-        static constexpr std::size_t kMaxWords = 3 + 5 + 15;
+        static constexpr std::size_t kMaxWords = 3 + 1 + 5 + 15;
         std::uint32_t words[kMaxWords];
         std::uint32_t count = 0;
         std::uint64_t hash = 0;
-        /// `look` is null for grammars without colours or materials.
-        Start(std::uint64_t content, std::uint32_t key, const Appearance* look, const Scope& s);
+        /// `place` is null for grammars that read no piece.index or piece.count, `look` for
+        /// grammars without colours or materials (so every start of one grammar has as many words).
+        Start(std::uint64_t content, std::uint32_t key, const std::uint32_t* place, const Appearance* look, const Scope& s);
     };
     /// A stored subtree's output, valid until the next store().
     struct Found {

@@ -11,12 +11,14 @@ struct Function {
     const char* name;
     char id;
     int arity;
-    OpCode op;
+    OpCode op;    ///< componentwise functions: the operation (vector functions compile their own)
+    bool vector;  ///< length, dot, distance: 3-vector arguments, a scalar result; not reserved names
 };
 constexpr Function kFunctions[] = {
-    {"min", 'm', 2, OpCode::Min}, {"max", 'M', 2, OpCode::Max},   {"abs", 'a', 1, OpCode::Abs},
-    {"sin", 's', 1, OpCode::Sin}, {"cos", 'c', 1, OpCode::Cos},   {"sqrt", 'q', 1, OpCode::Sqrt},
-    {"floor", 'f', 1, OpCode::Floor}, {"atan2", 't', 2, OpCode::Atan2},
+    {"min", 'm', 2, OpCode::Min, false}, {"max", 'M', 2, OpCode::Max, false},   {"abs", 'a', 1, OpCode::Abs, false},
+    {"sin", 's', 1, OpCode::Sin, false}, {"cos", 'c', 1, OpCode::Cos, false},   {"sqrt", 'q', 1, OpCode::Sqrt, false},
+    {"floor", 'f', 1, OpCode::Floor, false}, {"atan2", 't', 2, OpCode::Atan2, false},
+    {"length", 'L', 1, OpCode::Sqrt, true}, {"dot", 'D', 2, OpCode::Add, true}, {"distance", 'G', 2, OpCode::Sqrt, true},
 };
 const Function* findFunction(const std::string& name) {
     for (const auto& f : kFunctions)
@@ -32,7 +34,8 @@ int axisOf(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z"
 }  // namespace
 
 bool isReservedName(const std::string& name) {
-    return name == "scope" || name == "parent" || name == "pi" || findFunction(name) != nullptr;
+    const Function* f = findFunction(name);
+    return name == "scope" || name == "parent" || name == "pi" || (f != nullptr && !f->vector);
 }
 
 int ExpressionCompiler::add(Node n) {
@@ -229,7 +232,7 @@ int ExpressionCompiler::parsePrimary() {
 }
 
 int ExpressionCompiler::parseIdentifier(const Token& t) {
-    if (const Function* f = findFunction(t.text)) {
+    if (const Function* f = findFunction(t.text); f && (!f->vector || tokens_.peek().is('('))) {
         enter(t.where);
         tokens_.expect('(', "after function " + t.text);
         Node n{Node::Call};
@@ -239,9 +242,13 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
             if (a > 0) tokens_.expect(',', "between the arguments of " + t.text);
             n.child[a] = parseOr();
             n.dims = std::max(n.dims, nodes_[n.child[a]].dims);
+            if (f->vector && nodes_[n.child[a]].dims != 3)
+                tokens_.fail(nodes_[n.child[a]].where, t.text + " takes 3-vectors (such as scope.origin or (x, y, z)), "
+                                                                "but this argument is a scalar");
         }
         tokens_.expect(')', "after the " + std::to_string(f->arity) + " argument(s) of " + t.text);
         --depth_;
+        if (f->vector) n.dims = 1;
         return add(n);
     }
     if (ctx_->bindings) {
@@ -276,10 +283,9 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
             return add(n);
         }
     }
-    if (t.text == "scope" || t.text == "parent") {
-        if (!ctx_->allowScope)
-            tokens_.fail(t.where, std::string(ctx_->constantPlace ? ctx_->constantPlace : "this value") +
-                                      " must be known when the grammar is read, so it cannot use " + t.text + ".size");
+    if (t.text == "scope") return parseScopeField(t);
+    if (t.text == "parent") {
+        if (!ctx_->allowScope) failConstantPlace(t.where, "parent.size");
         tokens_.expect('.', "after '" + t.text + "' (only " + t.text + ".size is available)");
         const SourceLocation at = tokens_.peek().where;
         const std::string field = tokens_.expectIdentifier("'size' after '" + t.text + ".'");
@@ -316,10 +322,62 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
         n.where = t.where;
         return add(n);
     }
+    if (t.text == "piece" && tokens_.peek().is('.')) return parsePieceField(t);
     tokens_.fail(t.where, "unknown name '" + t.text +
                               "': expected a parameter declared above in this rule, an argument of the rule, "
-                              "a let value, an attr, scope.size, "
-                              "parent.size, pi, or a function (min max abs sin cos sqrt floor)");
+                              "a let value, an attr, scope.size, scope.origin, scope.axis.x (.y, .z), "
+                              "parent.size, piece.index, piece.count, pi, or a function "
+                              "(min max abs sin cos sqrt floor atan2 length dot distance)");
+}
+
+void ExpressionCompiler::failConstantPlace(const SourceLocation& at, const std::string& what) const {
+    tokens_.fail(at, std::string(ctx_->constantPlace ? ctx_->constantPlace : "this value") +
+                         " must be known when the grammar is read, so it cannot use " + what);
+}
+
+int ExpressionCompiler::parseScopeField(const Token& t) {
+    const Token& next = tokens_.peekSecond();
+    const std::string field = tokens_.peek().is('.') && next.kind == TokenKind::Identifier ? next.text : "size";
+    if (!ctx_->allowScope) failConstantPlace(t.where, "scope." + field);
+    tokens_.expect('.', "after 'scope' (scope.size, scope.origin or scope.axis.x, .y, .z)");
+    const SourceLocation at = tokens_.peek().where;
+    tokens_.expectIdentifier("'size', 'origin' or 'axis' after 'scope.'");
+    Node n{Node::ScopeSize};
+    n.dims = 3;
+    n.where = t.where;
+    if (field == "size") return add(n);
+    if (field == "origin") {
+        n.kind = Node::ParamRef;
+        n.first = kScopeOriginSlot;
+    } else if (field == "axis") {
+        tokens_.expect('.', "after 'scope.axis' (scope.axis.x, .y or .z: the scope's world axes)");
+        const SourceLocation axisAt = tokens_.peek().where;
+        const std::string name = tokens_.expectIdentifier("an axis x, y or z after 'scope.axis.'");
+        const int axis = axisOf(name);
+        if (axis < 0) tokens_.fail(axisAt, "expected an axis x, y or z after 'scope.axis.', found '" + name + "'");
+        n.kind = Node::ParamRef;
+        n.first = kScopeAxisSlot + 3 * axis;
+    } else {
+        tokens_.fail(at, "expected 'size', 'origin' or 'axis' after 'scope.', found '" + field + "'");
+    }
+    ++scopeFrameReads_;
+    return add(n);
+}
+
+int ExpressionCompiler::parsePieceField(const Token& t) {
+    const Token& next = tokens_.peekSecond();
+    const std::string field = next.kind == TokenKind::Identifier ? next.text : "index";
+    if (!ctx_->allowScope) failConstantPlace(t.where, "piece." + field);
+    tokens_.take();  // .
+    const SourceLocation at = tokens_.peek().where;
+    tokens_.expectIdentifier("'index' or 'count' after 'piece.'");
+    if (field != "index" && field != "count")
+        tokens_.fail(at, "expected 'index' or 'count' after 'piece.', found '" + field + "'");
+    Node n{Node::ParamRef};
+    n.first = field == "index" ? kPieceIndexSlot : kPieceCountSlot;
+    n.where = t.where;
+    ++piecePlaceReads_;
+    return add(n);
 }
 
 void ExpressionCompiler::emit(int index, int c, std::vector<Instr>& code) const {
@@ -363,8 +421,25 @@ void ExpressionCompiler::emit(int index, int c, std::vector<Instr>& code) const 
         break;
     case Node::Call: {
         const Function* f = functionById(n.op);
-        for (int a = 0; a < f->arity; ++a) emit(n.child[a], comp, code);
-        code.push_back({f->op});
+        if (!f->vector) {
+            for (int a = 0; a < f->arity; ++a) emit(n.child[a], comp, code);
+            code.push_back({f->op});
+            break;
+        }
+        // length: sqrt((x*x + y*y) + z*z); dot: (ax*bx + ay*by) + az*bz; distance: the length of a - b.
+        // Each argument's component is emitted once (so nested calls do not grow exponentially).
+        for (int k = 0; k < 3; ++k) {
+            emit(n.child[0], k, code);
+            if (n.op == 'L') {
+                code.push_back({OpCode::Square});
+            } else {
+                emit(n.child[1], k, code);
+                code.push_back({n.op == 'D' ? OpCode::Mul : OpCode::Sub});
+                if (n.op == 'G') code.push_back({OpCode::Square});
+            }
+            if (k > 0) code.push_back({OpCode::Add});
+        }
+        if (n.op != 'D') code.push_back({OpCode::Sqrt});
         break;
     }
     }
@@ -514,6 +589,7 @@ float evaluateProgram(const std::vector<Instr>& code, const ExprRef& e, const fl
         case OpCode::NormalCdf: stack[top] = float(0.5 * std::erfc(-double(stack[top]) * M_SQRT1_2)); break;
         case OpCode::NormalQuantile: stack[top] = float(normalQuantile(double(stack[top]))); break;
         case OpCode::Atan2: stack[top - 1] = std::atan2(stack[top - 1], stack[top]); --top; break;
+        case OpCode::Square: stack[top] *= stack[top]; break;
         case OpCode::Fresh: {
             std::uint32_t key;
             std::memcpy(&key, params + kPieceKeySlot, sizeof key);

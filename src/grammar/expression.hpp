@@ -40,7 +40,9 @@ inline constexpr int kMaxExpressionNesting = 64;
 inline constexpr int kMaxExpressionNodes = 4096;
 
 /// True for names an expression gives a meaning of its own (scope, parent, pi and the
-/// functions), which therefore cannot name a parameter or an attr.
+/// functions), which therefore cannot name a parameter or an attr. The vector functions
+/// length, dot and distance (and `piece`) are not reserved: they mean themselves only where no
+/// parameter, argument, let value or attr of that name is visible (`length(` always calls).
 bool isReservedName(const std::string& name);
 
 class ExpressionCompiler {
@@ -52,6 +54,11 @@ public:
     void compile(const ExpressionContext& ctx, int dims, std::vector<Instr>& code, ExprRef out[3], int& maxStack);
     /// Dimension (1 or 3) of the last compiled expression, before any broadcast.
     int lastDims() const { return lastDims_; }
+    /// How many times the expressions compiled so far read scope.origin or scope.axis (the
+    /// parser puts a StatementKind::ScopeFrame before each statement that does).
+    int scopeFrameReads() const { return scopeFrameReads_; }
+    /// How many times the expressions compiled so far read piece.index or piece.count.
+    int piecePlaceReads() const { return piecePlaceReads_; }
 
 private:
     struct Node {
@@ -78,6 +85,12 @@ private:
     int add(Node n);
     /// Enter one nesting level at `at` (fails beyond kMaxExpressionNesting); leave with --depth_.
     void enter(const SourceLocation& at);
+    /// `scope.FIELD...` after `scope` (size, origin, axis.x / .y / .z).
+    int parseScopeField(const Token& t);
+    /// `piece.index` or `piece.count` after `piece`.
+    int parsePieceField(const Token& t);
+    /// The located error for a run-time value `what` in a constant place.
+    [[noreturn]] void failConstantPlace(const SourceLocation& at, const std::string& what) const;
     void emit(int node, int component, std::vector<Instr>& code) const;
 
     TokenStream& tokens_;
@@ -86,6 +99,8 @@ private:
     int depth_ = 0;
     SourceLocation start_;
     int lastDims_ = 1;
+    int scopeFrameReads_ = 0;
+    int piecePlaceReads_ = 0;
 };
 
 /// True if the compiled scalar expression reads nothing but constants (so it can be folded).

@@ -3,6 +3,7 @@
 // slots (edges). Expressions are compiled once into a flat instruction array; deriving a genome
 // never re-reads text. See grammars/README.md for the language.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -22,6 +23,7 @@ enum class OpCode : std::uint8_t {
     NormalCdf, NormalQuantile,             // the standard normal's CDF and its inverse (run-time normal priors)
     Atan2,                                 // atan2(y, x) in radians
     Fresh,  // u in [0, 1] -> u itself in the first piece of its kind, else a value in [0, 1) hashed from u and the piece key (`per piece`)
+    Square,  // x * x (length, dot and distance of 3-vectors are compiled into Square, Mul, Add, Sub and Sqrt)
 };
 struct Instr {
     OpCode op;
@@ -90,6 +92,8 @@ enum class StatementKind : std::uint8_t {
     Color,     // the colour of what follows: expr[0..2]
     Material,  // the named material of what follows: slot (index into Grammar::materialNames)
     Texture,   // the textured material of what follows: slot (index into Grammar::textures), stretch expr[0..1]
+    ScopeFrame,  // the current scope's origin and axes into the parameter block (kScopeOriginSlot...): put
+                 // right before each statement whose expressions read scope.origin or scope.axis
 };
 struct Statement {
     StatementKind kind;
@@ -133,7 +137,8 @@ enum class PiecesKind : std::uint8_t {
     Center,       ///< center (w, d) A: a lot of w x d units in the middle of a flat scope
     Corners,      ///< corners (rx, ry) [on (a, b, c, d)] [inside] A | ...: square lots on a flat scope's corners
     Edges,        ///< edges (rx, ry) (n1, n2, n3, n4) A | ...: lots along a flat scope's edges, x along the edge
-    Copy,         ///< [ STATEMENTS ]: one piece, the scope itself (CGA's push / pop)
+    Copy,         ///< [ STATEMENTS ]: one piece, the scope itself (CGA's push / pop); keeps piece.index / piece.count
+    CopyCount,    ///< copy N A | B ...: N pieces, each the scope itself, successors in turn (PCGR's copy)
 };
 /// Most pieces one split may list (a repeat group makes any number of them).
 inline constexpr std::size_t kMaxSplitPieces = 256;
@@ -155,6 +160,16 @@ inline constexpr std::uint16_t kFrameBase = 256;
 /// Parameter-block index where derive keeps the running task's piece key (its bits, for
 /// OpCode::Fresh): after the frame values.
 inline constexpr std::uint16_t kPieceKeySlot = 2 * kFrameBase;
+/// Parameter-block indices of the running task's piece.index and piece.count (floats; derive
+/// writes them only when Grammar::usesPiecePlaces).
+inline constexpr std::uint16_t kPieceIndexSlot = kPieceKeySlot + 1;
+inline constexpr std::uint16_t kPieceCountSlot = kPieceKeySlot + 2;
+/// Parameter-block indices of the current scope's world origin and axes x, y, z (3 floats each),
+/// written by a ScopeFrame statement (which the compiler puts only where they are read).
+inline constexpr std::uint16_t kScopeOriginSlot = kPieceKeySlot + 3;
+inline constexpr std::uint16_t kScopeAxisSlot = kScopeOriginSlot + 3;  ///< axis a at kScopeAxisSlot + 3 * a
+/// Floats of derive's parameter block: the last slot above, plus one.
+inline constexpr std::size_t kParamBlockFloats = std::size_t(kScopeAxisSlot) + 9;
 
 struct Rule {
     std::string name;
@@ -191,6 +206,8 @@ struct Grammar {
     std::vector<std::string> materialNames{""};  ///< index 0: no named material
     bool hasAppearance = false;      ///< a `color` or `material` statement exists (derive fills Geometry::appearance)
     bool usesPieceKeys = false;      ///< a `per piece` parameter exists (derive keeps piece keys for OpCode::Fresh)
+    bool usesPiecePlaces = false;    ///< an expression reads piece.index or piece.count (derive keeps them per task)
+    bool marksPieces = false;        ///< usesPieceKeys || usesPiecePlaces (set once parsed: derive tests one flag)
     std::vector<Texture> textures;   ///< images of `texture` statements (which set hasAppearance too), read when the grammar is loaded
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;

@@ -148,6 +148,8 @@ Grammar Parser::run() {
                               "without arguments that derives it: child " + startName + "(...))");
     g_.start = std::uint16_t(headers_[std::size_t(start->second)].plainId);
     if (!undefined_.empty()) tokens_.fail(undefined_.front().where, "rule '" + undefined_.front().name + "' is not defined");
+    g_.usesPiecePlaces = exprs_.piecePlaceReads() > 0;
+    g_.marksPieces = g_.usesPieceKeys || g_.usesPiecePlaces;
     checkGrammar(g_, [this](const SourceLocation& at, const std::string& m) { tokens_.fail(at, m); });
     return std::move(g_);
 }

@@ -87,7 +87,8 @@ public:
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
     void parseCopy(Rule& rule, BodyScope& scope);
     void storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces);
-    void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces);
+    /// `readsScope`: set when a piece's size reads scope.origin or scope.axis.
+    void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, bool& readsScope);
     void parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, ScopeForm form);
     /// One successor (a rule name with arguments: inline; `{ ... }`; `nil`): fills piece.begin/end.
     /// Successors of one statement already compiled, by name (a plain name without arguments
@@ -111,6 +112,16 @@ public:
     /// run-time prior. Returns the (non-constant) binding that names it.
     Binding letValue(Rule& rule, const std::string& name, int dims, const ExprRef* expr, const SourceLocation& at);
     std::string statementList() const;
+    /// Whether the expressions compiled since the last call read scope.origin or scope.axis
+    /// (each statement's are taken just before it is appended, so they are its own).
+    bool takeScopeFrameReads();
+    /// A ScopeFrame statement appended to `rule` if takeScopeFrameReads(): call right before
+    /// appending a statement with expressions.
+    void frameScopeIfRead(Rule& rule);
+    /// A ScopeFrame statement inserted at `at` (before a Pieces statement whose own expressions
+    /// read the scope's frame, known once its successors are compiled): every statement index
+    /// from `at` on, in `rule`, its stored piece lists and `pending` (the list's pieces), moves up one.
+    void insertScopeFrame(Rule& rule, std::size_t at, std::vector<Piece>& pending);
 
     TokenStream tokens_;
     ExpressionCompiler exprs_;
@@ -135,6 +146,7 @@ public:
     std::vector<int> inlineStack_;             ///< headers being compiled inline (cycle check)
     std::uint16_t currentRule_ = 0;            ///< the rule whose body is being compiled (Grammar::inlineCalls)
     std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
+    int framedReads_ = 0;                        ///< exprs_.scopeFrameReads() at the last takeScopeFrameReads()
 };
 
 }  // namespace shapevo::grammar_detail

@@ -1,6 +1,8 @@
 // Statements that make several scopes out of one, each running a successor: split and repeat
-// along an axis, comp (a volume's faces), lots (rect, circle, center, corners, edges). The
-// Pieces statement comes first; each successor's statements follow it in the rule, in order
+// along an axis, comp (a volume's faces), lots (rect, circle, center, corners, edges), copy (N
+// times the scope itself). The
+// Pieces statement comes first (after a ScopeFrame when its own numbers read scope.origin or
+// scope.axis); each successor's statements follow it in the rule, in order
 // (a successor named twice without arguments, or comp's `side`, is compiled once and shared),
 // then the statement after the whole construct. Successors: a rule name with arguments (compiled inline: its
 // parameters and child slots become this gene's), `{ statements }`, or `nil`.
@@ -88,7 +90,7 @@ void Parser::parseSuccessorList(Rule& rule, BodyScope& scope, std::vector<Piece>
     } while (tokens_.peek().is('|'));
 }
 
-void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces) {
+void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, bool& readsScope) {
     const SourceLocation open = tokens_.peek().where;
     tokens_.expect('{', "after the split axis (split AXIS { SIZE: SUCCESSOR | ... })");
     CompiledSuccessors compiled;
@@ -113,6 +115,7 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pi
         if (tokens_.peek().is(':') || tokens_.peek().is('|') || tokens_.peek().is('}'))
             tokens_.expected("the size of a piece (a number of units, 'FRACTION or ~SIZE) before ':'");
         compileScalar(scope, p.value);
+        readsScope = takeScopeFrameReads() || readsScope;
         tokens_.expect(':', "after the size of a piece (SIZE: SUCCESSOR)");
         parseSuccessor(rule, scope, p, scope.form, &compiled);
         pieces.push_back(p);
@@ -145,6 +148,7 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pi
 void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     PieceList list;
     std::vector<Piece> pieces;
+    bool readsScope = false;  // its own expressions (not its successors') read scope.origin / scope.axis
     const std::size_t at = rule.statements.size();
     Statement st{};
     st.kind = StatementKind::Pieces;
@@ -158,6 +162,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
                 tokens_.expect(',', "between the numbers of " + what);
             }
             compileScalar(scope, list.arg[first + k]);
+            readsScope = takeScopeFrameReads() || readsScope;
         }
         if (!tokens_.peek().is(')'))
             tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives more");
@@ -178,7 +183,7 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     if (w == "split") {
         list.kind = PiecesKind::Split;
         list.axis = axis();
-        parseSplitList(rule, scope, pieces);
+        parseSplitList(rule, scope, pieces, readsScope);
     } else if (w == "repeat") {
         list.axis = axis();
         if (tokens_.peek().isWord("count")) {
@@ -192,6 +197,15 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
             }
         }
         compileScalar(scope, list.arg[0]);
+        readsScope = takeScopeFrameReads();
+        parseSuccessorList(rule, scope, pieces, scope.form);
+    } else if (w == "copy") {
+        list.kind = PiecesKind::CopyCount;
+        if (tokens_.peek().kind == TokenKind::Identifier && headerIndex_.count(tokens_.peek().text) &&
+            !tokens_.peekSecond().is('('))
+            tokens_.expected("the number of copies before the successor (copy N SUCCESSOR)");
+        compileScalar(scope, list.arg[0]);
+        readsScope = takeScopeFrameReads();
         parseSuccessorList(rule, scope, pieces, scope.form);
     } else if (w == "comp") {
         if (scope.form == ScopeForm::Flat)
@@ -282,7 +296,8 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     }
     if (pieces.empty()) tokens_.fail(word.where, "'" + w + "' needs at least one piece");
     if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp and lot statements (at most 65535)");
-    storePieces(rule, at, list, pieces);
+    if (readsScope) insertScopeFrame(rule, at, pieces);
+    storePieces(rule, readsScope ? at + 1 : at, list, pieces);
 }
 
 void Parser::parseCopy(Rule& rule, BodyScope& scope) {

@@ -18,7 +18,7 @@ int stackDepth(const std::vector<Instr>& code, std::uint32_t begin, std::uint32_
         switch (code[i].op) {
         case OpCode::Const: case OpCode::Param: case OpCode::ScopeSize: case OpCode::ParentSize: ++depth; break;
         case OpCode::Neg: case OpCode::Abs: case OpCode::Sin: case OpCode::Cos: case OpCode::Sqrt: case OpCode::Floor:
-        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: case OpCode::Fresh: break;
+        case OpCode::Not: case OpCode::NormalCdf: case OpCode::NormalQuantile: case OpCode::Fresh: case OpCode::Square: break;
         default: --depth; break;  // the binary operations
         }
         deepest = std::max(deepest, depth);

@@ -18,7 +18,7 @@ namespace {
 /// error messages list them: these, then the kinds' keywords, then the second list.
 constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "scale", "size", "translate", "rotate", "mirror"};
 constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "texture", "extrude", "split", "repeat", "comp", "lot",
-                                                 "center", "corners", "edges", "if", "case", "terminal", "child"};
+                                                 "center", "corners", "edges", "copy", "if", "case", "terminal", "child"};
 
 bool isStatementWord(const std::string& w) {
     for (std::string_view s : kWordsBeforeKinds)
@@ -66,7 +66,47 @@ std::uint16_t Parser::allocateFrame(Rule& rule, int floats, const SourceLocation
     return index;
 }
 
+bool Parser::takeScopeFrameReads() {
+    const bool read = exprs_.scopeFrameReads() != framedReads_;
+    framedReads_ = exprs_.scopeFrameReads();
+    return read;
+}
+
+void Parser::frameScopeIfRead(Rule& rule) {
+    if (!takeScopeFrameReads()) return;
+    Statement frame{};
+    frame.kind = StatementKind::ScopeFrame;
+    rule.statements.push_back(frame);
+}
+
+void Parser::insertScopeFrame(Rule& rule, std::size_t at, std::vector<Piece>& pending) {
+    for (std::size_t i = at; i < rule.statements.size(); ++i) {
+        Statement& st = rule.statements[i];
+        switch (st.kind) {
+        case StatementKind::TerminalBegin: case StatementKind::If: case StatementKind::Jump: case StatementKind::Pieces:
+            ++st.end;
+            break;
+        default: break;
+        }
+        if (st.kind == StatementKind::Pieces && i != at) {  // a nested list, stored already
+            const PieceList& list = g_.pieceLists[st.slot];
+            for (std::uint32_t k = 0; k < list.count; ++k) {
+                ++g_.pieces[list.first + k].begin;
+                ++g_.pieces[list.first + k].end;
+            }
+        }
+    }
+    for (Piece& p : pending) {
+        ++p.begin;
+        ++p.end;
+    }
+    Statement frame{};
+    frame.kind = StatementKind::ScopeFrame;
+    rule.statements.insert(rule.statements.begin() + std::ptrdiff_t(at), frame);
+}
+
 Binding Parser::letValue(Rule& rule, const std::string& name, int dims, const ExprRef* expr, const SourceLocation& at) {
+    frameScopeIfRead(rule);
     Statement let{};
     let.kind = StatementKind::Let;
     let.axis = std::uint8_t(dims);
@@ -209,7 +249,7 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
     } else if (word.text == "texture") {
         parseTexture(scope, s);
     } else if (word.text == "split" || word.text == "repeat" || word.text == "comp" || word.text == "lot" ||
-               word.text == "center" || word.text == "corners" || word.text == "edges") {
+               word.text == "center" || word.text == "corners" || word.text == "edges" || word.text == "copy") {
         return parsePieces(rule, scope, word);
     } else if (word.text == "child") {
         if (terminalAt_)
@@ -222,6 +262,7 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
     } else {
         tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + statementList());
     }
+    frameScopeIfRead(rule);
     rule.statements.push_back(s);
 }
 
@@ -243,6 +284,7 @@ void Parser::parseIf(Rule& rule, BodyScope& scope, const char* keyword) {
         cond.expr[0] = e[0];
         tokens_.expect(')', "to close the condition");
         tokens_.expect('{', std::string("to open the block of '") + keyword + "'");
+        frameScopeIfRead(rule);
         const std::size_t condIndex = rule.statements.size();
         rule.statements.push_back(cond);
         BodyScope inner = scope;

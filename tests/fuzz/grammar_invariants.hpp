@@ -93,7 +93,8 @@ inline void checkAccepted(const Grammar& g) {
         // stored block or in the rule's frame values.
         // The block derive evaluates with: stored floats, frame values, then the piece key that
         // `per piece` parameters (OpCode::Fresh) read.
-        float params[kPieceKeySlot + 1], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
+        float params[kParamBlockFloats], scope[3] = {1, 2, 3}, parent[3] = {4, 5, 6};
+        for (std::size_t i = kPieceIndexSlot; i < kParamBlockFloats; ++i) params[i] = 0.25f * float(i);
         for (std::size_t i = 0; i < kPieceKeySlot; ++i) params[i] = 0.5f + float(i);
         const std::uint32_t pieceKey = 12345;
         std::memcpy(&params[kPieceKeySlot], &pieceKey, sizeof pieceKey);
@@ -103,7 +104,8 @@ inline void checkAccepted(const Grammar& g) {
             for (std::uint32_t i = e.begin; i < e.end; ++i) {
                 if (g.code[i].op == OpCode::Param)
                     FUZZ_CHECK(g.code[i].index < rule.paramFloats ||
-                          (g.code[i].index >= kFrameBase && g.code[i].index < kFrameBase + rule.frameFloats));
+                          (g.code[i].index >= kFrameBase && g.code[i].index < kFrameBase + rule.frameFloats) ||
+                          (g.code[i].index >= kPieceIndexSlot && g.code[i].index < kParamBlockFloats));
                 if (g.code[i].op == OpCode::ScopeSize || g.code[i].op == OpCode::ParentSize) FUZZ_CHECK(g.code[i].component < 3);
             }
             float stack[kMaxExpressionStack];

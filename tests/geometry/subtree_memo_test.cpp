@@ -198,6 +198,49 @@ TEST(SubtreeMemo, AModelWhoseSubtreesOutgrowTheMemoTurnsItOffAndDerivesTheSame) 
     EXPECT_EQ(memoized.memo->stats().hits + memoized.memo->stats().misses, after.hits + after.misses);
 }
 
+TEST(SubtreeMemo, ChildrenInCopiesOfOneScopeThatReadPieceIndexAreNotConfused) {
+    // `copy` gives every piece the same scope, so the child B of each copy starts on the same
+    // scope with the same content: only its piece place (piece.index) tells the starts apart.
+    const Grammar g = parseGrammar(R"(
+start A
+rule A {
+  param n = int(1, 4)
+  copy n + 1 { child B }
+}
+rule B {
+  param h = uniform(1, 2)
+  translate (piece.index * 2, 0, 0)
+  size (1, h * (piece.index + 1), 1)
+  box
+  child B prob 0.5
+}
+)", "copies.grammar");
+    DeriveScratch plain, memoized;
+    memoized.memo = std::make_unique<SubtreeMemo>(4 << 20);
+    Geometry a, b;
+    for (const Chromosome& c : modelsAndChildren(g, 200, 11)) {
+        ASSERT_EQ(int(derive(g, c, a, plain)), int(derive(g, c, b, memoized)));
+        ASSERT_TRUE(identical(a, b));
+    }
+    EXPECT_GT(memoized.memo->stats().hits, 50u);
+    // findSubtreeStarts names each copy's start by its place; deriving from it gives that copy's boxes.
+    Rng rng(2);
+    Chromosome c;
+    growRandomLength(g, c, rng, GenomeLimits{40}, 6, 12);
+    derive(g, c, a, plain);
+    const auto b0 = std::uint32_t(c.child(0, 0));
+    ASSERT_GT(b0, 0u);
+    std::vector<SubtreeStart> starts;
+    ASSERT_EQ(findSubtreeStarts(g, c, b0, plain, starts), DeriveStatus::Complete);
+    ASSERT_GE(starts.size(), 2u);
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+        EXPECT_EQ(starts[k].place, piecePlace(std::uint32_t(k), std::uint32_t(starts.size())));
+        ASSERT_EQ(deriveSubtree(g, c, b0, starts[k], b, plain), DeriveStatus::Complete);
+        ASSERT_FALSE(b.primitives.empty());
+        EXPECT_EQ(b.primitives[0].centre.x, float(k) * 2.0f) << "copy " << k << " read its own piece.index";
+    }
+}
+
 TEST(SubtreeMemo, EqualContentsShareANumberWhereverTheyAreAndOthersDoNot) {
     const Grammar g = parseGrammar(test::kSmallTree, "tree.grammar");
     Rng rng(21);

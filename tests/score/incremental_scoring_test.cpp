@@ -332,7 +332,7 @@ TEST(IncrementalScoring, AWholeSubtreesKeyHashesAsItsStart) {
         s.size = {u(0, 3), u(0, 3), u(0, 3)};
         s.axes[1][2] = u(-1, 1);
         s.look = rng.below(4);
-        const SubtreeMemo::Start start(rng.below(1000000), rng.below(16), i % 2 ? &look : nullptr, s);
+        const SubtreeMemo::Start start(rng.below(1000000), rng.below(16), nullptr, i % 2 ? &look : nullptr, s);
         EXPECT_EQ(SubtreeKey(start).hash(), start.hash) << i;
     }
 }
