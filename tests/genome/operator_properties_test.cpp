@@ -92,6 +92,12 @@ INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
 
 INSTANTIATE_TEST_SUITE_P(ShippedGraphFiles, OperatorProperties, ::testing::ValuesIn(shippedGraphFiles()), pathTestName);
 
+TEST(OperatorPropertiesFiles, TheShippedGraphFilesAreAllThere) {  // an empty list would run nothing and pass
+    const std::vector<std::string> files = shippedGraphFiles();
+    for (const char* shipped : {"grammars/pcg/tree.pcg", "grammars/pcg/window.pcg"})
+        EXPECT_NE(std::find(files.begin(), files.end(), shipped), files.end()) << shipped;
+}
+
 TEST(Cut, NeverRemovesMandatoryChildren) {
     const Grammar g = loadGrammar(test::sourcePath("grammars/coral.grammar"));
     Rng rng(7);
