@@ -151,6 +151,27 @@ inline void checkAccepted(const Grammar& g) {
                     if (list.kind == PiecesKind::Split) checkExpression(piece.value);
                 }
             }
+            if (st.kind == StatementKind::Open) FUZZ_CHECK(g.hasLists && st.end >= 1 && st.slot + st.end <= g.gathers.size());
+            if (st.kind == StatementKind::Send) FUZZ_CHECK(st.slot < g.listNames.size());
+            if (st.kind == StatementKind::Gather) {  // its steps' expressions and its route's successors (after it, up to its end)
+                FUZZ_CHECK(st.slot < g.gathers.size() && st.end > index && st.end <= count);
+                const Gather& gather = g.gathers[st.slot];
+                FUZZ_CHECK(gather.list < g.listNames.size() && gather.ops >= 1 && gather.firstOp + gather.ops <= g.listOps.size());
+                for (std::uint32_t k = 0; k < gather.ops; ++k) {
+                    const ListOp& op = g.listOps[gather.firstOp + k];
+                    const bool route = op.kind == ListOpKind::KeepFirst || op.kind == ListOpKind::Each || op.kind == ListOpKind::Where;
+                    FUZZ_CHECK(route == (k + 1 == gather.ops));
+                    const int exprs = op.kind == ListOpKind::Aggregate ? op.dims : op.kind == ListOpKind::KeepFirst ? 2
+                                      : op.kind == ListOpKind::Reverse || op.kind == ListOpKind::Each ? 0 : 1;
+                    for (int e = 0; e < exprs; ++e) checkExpression(op.expr[e]);
+                    if (op.kind == ListOpKind::OrderBy) FUZZ_CHECK(op.keys >= 1);
+                    if (op.kind == ListOpKind::Aggregate)
+                        FUZZ_CHECK((op.dims == 1 || op.dims == 3) && op.detail < 4 && op.slot >= kFrameBase &&
+                                   op.slot + op.dims <= kFrameBase + rule.frameFloats);
+                    if (route)
+                        for (int r = 0; r < 2; ++r) FUZZ_CHECK(op.begin[r] > index && op.begin[r] <= op.end[r] && op.end[r] <= st.end);
+                }
+            }
             for (int c = 0; c < n; ++c) checkExpression(st.expr[c]);
         }
     }

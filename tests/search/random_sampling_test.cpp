@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "genome/families/tree_family.hpp"
+#include "grammar/front_ends.hpp"
 #include "run/config_file.hpp"
 #include "run/scene.hpp"
 #include "search/evaluator.hpp"
