@@ -43,6 +43,7 @@ const std::vector<MalformedGraph>& graphCases() {
         {"UnknownArgumentName", graph("node a = translate(w: 1)\nstart -> a\n"), "bad.pcg:3:20",
          "translate has no argument 'w' (its arguments: x, y, z)"},
         {"MissingArgument", graph("node a = rotate(x)\nstart -> a\n"), "bad.pcg:3:10", "rotate needs argument 'angle'"},
+        {"CopyWithoutCount", graph("node c = copy()\nstart -> c\n"), "bad.pcg:3:10", "copy needs argument 'count'"},
         {"TooManyArguments", graph("node a = rotate(x, 1, 2)\nstart -> a\n"), "bad.pcg:3:23",
          "rotate takes 2 arguments, this node gives 3"},
         {"ArgumentGivenTwice", graph("node a = translate(x: 1, x: 2)\nstart -> a\n"), "bad.pcg:3:26",
