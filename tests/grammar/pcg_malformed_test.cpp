@@ -35,7 +35,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- nodes and their operations -------------------------------------------------
         {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
          "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\""},
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\""},
         {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
          "node id 'a' is used twice (first at line 3)"},
         {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
@@ -60,7 +60,8 @@ const std::vector<MalformedGraph>& graphCases() {
          "repeat takes either count: N or size: SIZE (S, ~S or 'S), not both or neither"},
         {"ExpressionErrorAtItsNodeLine", graph("node a = translate(x: nosuch)\nstart -> a\n"), "bad.pcg:3:6",
          "unknown name 'nosuch': expected a parameter declared above in this rule, an argument of the rule, a let value, an attr, "
-         "scope.size, parent.size, pi, or a function (min max abs sin cos sqrt floor) (in its translation to the shapevo language:   "
+         "scope.size, scope.origin, scope.axis.x (.y, .z), parent.size, piece.index, piece.count, pi, or a function (min max abs "
+         "sin cos sqrt floor atan2 length dot distance) (in its translation to the shapevo language:   "
          "translate (nosuch, 0, 0))"},
         // --- ports and edges ------------------------------------------------------------
         {"UnknownPort", graph("node a = box()\nstart -> a.inn\n"), "bad.pcg:4:10",
@@ -105,7 +106,7 @@ const std::vector<MalformedGraph>& graphCases() {
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
         {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
          "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\"",
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",

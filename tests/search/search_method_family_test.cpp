@@ -83,7 +83,7 @@ TEST(SearchMethodFamilies, MethodsThatNeedATreeAreRefusedForAFamilyWithoutOne) {
             EXPECT_EQ(e.file(), "configs/x.toml");
             EXPECT_EQ(e.where(), "search.method");
             EXPECT_EQ(e.message(), "search.method = \"" + s.method +
-                                       "\" needs a derivation-tree grammar (a \".grammar\" or \".rule\" file); counter "
+                                       "\" needs a derivation-tree grammar (a \".grammar\", \".rule\" or \".pcg\" file); counter "
                                        "genomes run with \"hybrid\", \"ga\" or \"random\"");
         }
     }
