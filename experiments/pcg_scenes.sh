@@ -18,7 +18,7 @@ run() {  # run CONFIG SEED GENERATIONS FOLDER
     mpirun --allow-run-as-root --oversubscribe -np 2 nice "$build/shapevo" run "configs/$1.toml" -q --threads 1 --seed "$2" \
         --set run.wall_time=0 --set ga.generations="$3" --out "$4" >/dev/null ||
         { status=$?; echo "pcg_scenes.sh: $1, seed $2 failed (exit $status)" >&2; exit 1; }
-    echo "$(date +%s.%N) - $start" | bc > "$4/seconds"
+    awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN { print a - b }' > "$4/seconds"
 }
 for s in $(seq 1 "$seeds"); do
     run pcg-stairway-volume "$s" "$stair_generations" "$out/pcg-stairway-volume-$s"
