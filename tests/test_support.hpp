@@ -18,13 +18,14 @@ namespace shapevo::test {
 inline std::string sourcePath(const std::string& relative) { return std::string(SHAPEVO_SOURCE_DIR) + "/" + relative; }
 /// The spaceship scene's config, the one most CLI tests run.
 inline std::string spaceshipConfig() { return sourcePath("configs/spaceship.toml"); }
-/// Every shipped grammar and CastleMaker rule file (grammars/, grammars/castlemaker/), sorted.
+/// Every shipped grammar, CastleMaker rule file and procedural content graph (.grammar, .rule and
+/// .pcg files in grammars/, grammars/castlemaker/ and grammars/pcg/), sorted.
 inline std::vector<std::string> shippedGrammarFiles() {
     std::vector<std::string> paths;
-    for (const char* folder : {"grammars", "grammars/castlemaker"})
+    for (const char* folder : {"grammars", "grammars/castlemaker", "grammars/pcg"})
         for (const auto& entry : std::filesystem::directory_iterator(sourcePath(folder))) {
             const std::string ext = entry.path().extension().string();
-            if (ext == ".grammar" || ext == ".rule") paths.push_back(entry.path().string());
+            if (ext == ".grammar" || ext == ".rule" || ext == ".pcg") paths.push_back(entry.path().string());
         }
     std::sort(paths.begin(), paths.end());
     return paths;

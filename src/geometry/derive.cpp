@@ -10,6 +10,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/gather.hpp"
 #include "geometry/texture_look.hpp"
 #include "grammar/expression.hpp"
 #include "mesh/mesh_material.hpp"
@@ -209,6 +210,7 @@ void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_
     scratch.stack.clear();
     scratch.scopes.clear();
     scratch.frames.clear();
+    scratch.collections.clear();
     Scope s = start.scope;
     if (g.hasAppearance) {
         scratch.looks.clear();
@@ -310,6 +312,41 @@ struct Derivation {
 [[gnu::always_inline]] inline std::uint32_t snapshot(const Rule& r, std::vector<float>& frames, const float* params) {
     if (r.frameFloats == 0) return DeriveScratch::kNoFrame;
     return storeFrame(frames, params, r.frameFloats);
+}
+
+/// An Open statement: one collection per gather of the body, and below everything the
+/// invocation will push, a marker for each (the first gather's on top: it runs first, so its
+/// routes may send to the later ones).
+[[gnu::noinline]] void openCollections(const Grammar& g, const Rule& r, const Statement& st, const DeriveScratch::Task& task,
+                                       const Scope& s, const float* params, DeriveScratch& scratch) {
+    scratch.scopes.push_back(s);
+    const auto at = std::uint32_t(scratch.scopes.size() - 1);
+    const std::uint32_t frame = snapshot(r, scratch.frames, params);
+    for (std::uint32_t k = st.end; k-- > 0;) {
+        const std::uint32_t gather = st.slot + k;
+        scratch.collections.push(g.gathers[gather].list, gather, frame);
+        scratch.stack.push_back({task.gene, gather, DeriveScratch::kGatherMarker, at, task.parent, frame, task.mark});
+    }
+}
+
+/// A Send statement: `s` into the innermost open collection of its list (one exists: the parser
+/// checks it); false when that collection is full (kMaxListEntities).
+[[gnu::noinline]] bool sendScope(Collections& collections, const Statement& st, const Scope& s) {
+    Collection* c = collections.innermost(st.slot);
+    if (c == nullptr || c->entities.size() >= kMaxListEntities) return false;
+    c->entities.scopes.push_back(s);
+    return true;
+}
+
+/// A gather's marker task: its gene's parameters, the gather's let values and the invocation's
+/// mark, then the gather (geometry/gather.hpp).
+[[gnu::noinline]] void runMarker(const Derivation& d, const DeriveScratch::Task& task, float* params, float* evalStack) {
+    const Rule& r = d.g.rules[d.c.rule(task.gene)];
+    const Collection& c = d.scratch.collections.pool[d.scratch.collections.open - 1];
+    DeriveScratch::Task loaded = task;
+    loaded.frame = c.frame;
+    loadParams(d, r, loaded, params);
+    runGather(d.g, r, task, params, evalStack, d.scratch);
 }
 
 /// The three expressions of a Scale / Size / Translate statement.
@@ -484,6 +521,17 @@ template <Focus F>
         case StatementKind::ScopeFrame:
             writeScopeFrame(s, params);
             break;
+        case StatementKind::Open:
+            openCollections(g, r, st, task, s, params, scratch);
+            break;
+        case StatementKind::Send:
+            if (!sendScope(scratch.collections, st, s)) [[unlikely]]
+                return DeriveStatus::Truncated;
+            break;
+        case StatementKind::Gather:
+            if (Collection* open = scratch.collections.ofGather(st.slot)) open->frame = snapshot(r, scratch.frames, params);
+            i = st.end - 1;
+            break;
         case StatementKind::Pieces:
             pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(r, scratch.frames, params),
                        task.mark, scratch);
@@ -528,6 +576,10 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
         // A gene's subtree, from its first statement on its parent's scope: derived before? (Not
         // the root's: the whole model recurs only as a duplicate, which search methods never
         // score twice, and keeping it would copy every primitive of every model.)
+        if (g.hasLists && task.end == DeriveScratch::kGatherMarker) [[unlikely]] {
+            runMarker(d, task, params, evalStack);
+            continue;
+        }
         if (memo && task.gene != 0 && startsSubtree(task))
             if (reuseSubtree(g, task, out, scratch, *memo, tasks, maxTasks, maxPrimitives)) continue;
         if (const DeriveStatus why = runTask<F>(d, task, params, evalStack); why != DeriveStatus::Complete) [[unlikely]]

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "genome/chromosome.hpp"
+#include "geometry/collections.hpp"
 #include "geometry/pieces.hpp"
 #include "geometry/subtree_memo.hpp"
 #include "shape/primitive.hpp"
@@ -46,6 +47,9 @@ struct DeriveScratch {
         PieceMark mark;           ///< which piece it runs in (piece key, piece.index and piece.count)
     };
     static constexpr std::uint32_t kNoFrame = UINT32_MAX;
+    /// Task::end of a gather's marker (Task::statement: the gather's index in Grammar::gathers):
+    /// pushed below every task of its invocation, it pops when they are all done.
+    static constexpr std::uint32_t kGatherMarker = UINT32_MAX - 1;
     std::vector<Task> stack;
     /// Scopes the pending tasks start from, stored once per pushed batch of children (a stack:
     /// entries above the popped task's own scope are no longer referenced).
@@ -58,6 +62,7 @@ struct DeriveScratch {
     std::vector<std::uint32_t> repetitions;  ///< per kind of piece of a list: how many came before (`per piece`)
     std::vector<PieceMark> pieceMarks;       ///< the marks of the pieces being pushed (Grammar::marksPieces)
     std::vector<Appearance> looks;     ///< appearances of this derivation (Scope::look)
+    Collections collections;           ///< open lists (send / gather; only grammars with Grammar::hasLists)
     std::uint32_t badRule = 0;  ///< after DeriveStatus::NonFinite: the rule whose primitive it was
     /// Set: incremental derivation. Every gene's subtree is looked up before it is derived and
     /// kept after (geometry/subtree_memo.hpp); the geometry is the same bit for bit. Not with

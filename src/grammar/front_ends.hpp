@@ -1,9 +1,13 @@
-// The grammar front ends: one table, one entry per kind of grammar file (its extension, its name,
-// a one-line summary, how it compiles a file into the Grammar, how it translates one into the
-// shapevo language if it does, what a derivation of it may do, and what `shapevo graph` draws
-// of it). loadGrammar, `shapevo translate`, `shapevo sample`, `shapevo graph` and --help all read this table, so a new front end is its folder
-// plus one entry in front_ends.cpp. Every front end reports a problem at file:line:column of the
-// user's own file (InputError).
+// The grammar front ends: one table, one entry per kind of grammar file — `.grammar` (the shapevo
+// language), `.rule` (CastleMaker's CRL, grammar/crl/) and `.pcg` (procedural content graphs,
+// grammar/pcg/) — each with its extension, its name, a one-line summary, how it compiles a file
+// into the Grammar, how it translates one into the shapevo language if it does, what a derivation
+// of it may do, and what `shapevo graph` draws of it. Every command that takes a grammar (`run`,
+// `resume`, `evaluate`, `export`, `render`, `inspect`, `sample`, `translate`, `graph`) and --help
+// read this table, so a new front end is its folder plus one entry in front_ends.cpp. Every front
+// end reports a problem at file:line:column of the user's own file (InputError), and lists the
+// other files it reads (Grammar::includes), which a run hashes so `resume` refuses a changed one.
+// (2D graph grammars, .yml / .yaml, are another model family: graph/read_graph_grammar.hpp.)
 #pragma once
 #include <span>
 #include <string>

@@ -94,6 +94,10 @@ enum class StatementKind : std::uint8_t {
     Texture,   // the textured material of what follows: slot (index into Grammar::textures), stretch expr[0..1]
     ScopeFrame,  // the current scope's origin and axes into the parameter block (kScopeOriginSlot...): put
                  // right before each statement whose expressions read scope.origin or scope.axis
+    Open,    // first statement of a rule body that gathers: opens Grammar::gathers [slot, slot + end), one
+             // collection each, gathered once everything this invocation started is done
+    Send,    // a copy of the current scope goes into the innermost open collection of list `slot` (Grammar::listNames)
+    Gather,  // gather Grammar::gathers[slot] { ... }: the place its frame is taken; its routes' bodies follow; `end` is after them
 };
 struct Statement {
     StatementKind kind;
@@ -154,6 +158,38 @@ struct SourceLocation {
     int line = 0, column = 0;
 };
 
+/// One step of a gather block (PCGR's collective nodes, grammars/README.md "Lists"): operations
+/// reorder the collected entities or compute a value over them; the last step is a route, which
+/// sends each entity to a successor (statements [begin, end) of the rule; empty: nil).
+enum class ListOpKind : std::uint8_t {
+    OrderBy,    ///< order by E [asc|desc]: expr[0] per entity; detail 1 = descending; `keys` OrderBy ops in a row form one sort
+    Reverse,    ///< reverse
+    Shuffle,    ///< shuffle U: a permutation drawn from expr[0] (a value in [0, 1]) and the invocation's piece key
+    Aggregate,  ///< let NAME = min|max|avg|sum(E): detail = AggregateKind, dims 1 or 3, into frame floats [slot, slot + dims)
+    KeepFirst,  ///< route: keep first N [from K] : A | rest : B (expr[0] N, expr[1] K)
+    Each,       ///< route: each : A
+    Where,      ///< route: where (E) : A | else : B (expr[0] per entity)
+};
+enum class AggregateKind : std::uint8_t { Min, Max, Avg, Sum };
+struct ListOp {
+    ListOpKind kind = ListOpKind::Reverse;
+    std::uint8_t detail = 0;     ///< OrderBy: 1 descending; Aggregate: AggregateKind
+    std::uint8_t dims = 1;       ///< Aggregate: floats of its value
+    std::uint8_t keys = 1;       ///< OrderBy (the first of a sort): how many OrderBy ops make its keys
+    std::uint16_t slot = 0;      ///< Aggregate: its frame index
+    ExprRef expr[3];
+    std::uint32_t begin[2] = {}, end[2] = {};  ///< routes: successor 0 (first / each / where) and 1 (rest / else)
+};
+/// A gather block: the list it gathers and its steps Grammar::listOps [firstOp, firstOp + ops)
+/// (the last one a route).
+struct Gather {
+    std::uint16_t list = 0;      ///< index in Grammar::listNames
+    std::uint32_t firstOp = 0, ops = 0;
+    SourceLocation where;
+};
+/// Most entities one collection holds: beyond it the derivation stops as Truncated.
+inline constexpr std::uint32_t kMaxListEntities = 65535;
+
 /// Parameter-block index where a rule's frame values (`let`, inline calls' arguments) start: they
 /// follow the (at most 256) stored parameter floats in derive's work space, never in genes.
 inline constexpr std::uint16_t kFrameBase = 256;
@@ -212,6 +248,10 @@ struct Grammar {
     std::map<std::string, double> attrs;  ///< every attr's final value (after overrides)
     std::uint32_t edgeCount = 0;
     std::vector<InlineCall> inlineCalls;  ///< each (rule, callee) pair once, by rule id, in the order met
+    std::vector<std::string> listNames;   ///< lists named by send / gather
+    std::vector<Gather> gathers;          ///< every gather block (Open and Gather statements index it)
+    std::vector<ListOp> listOps;
+    bool hasLists = false;                ///< a gather exists (derive checks its markers)
     int maxStack = 0;        ///< deepest expression evaluation stack
     /// Largest number of genes a freshly grown gene of each rule brings with it (mandatory children).
     std::vector<std::uint32_t> mandatoryGenes;

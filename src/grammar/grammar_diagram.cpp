@@ -40,6 +40,7 @@ std::string slotLabel(const Slot& slot, std::size_t k, std::size_t alternative) 
 pcg::GraphDiagram grammarDiagram(const Grammar& g) {
     pcg::GraphDiagram d;
     d.title = std::filesystem::path(g.path).filename().string();
+    d.nodeNoun = "rules";
     std::map<std::string, std::uint32_t> byName;
     for (std::size_t id = 0; id < g.rules.size(); ++id) {
         const Rule& r = g.rules[id];

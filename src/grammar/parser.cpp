@@ -126,8 +126,10 @@ Grammar Parser::run() {
         tokens_.seek(headers_[h].body);
         inlineStack_ = {int(h)};
         currentRule_ = std::uint16_t(headers_[h].plainId);
-        parseBlock(rules_[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
+        deferSends_ = true;  // a plain rule may be used only inline, where its sends find their gathers
+        parseBody(rules_[std::size_t(headers_[h].plainId)], scope, "rule " + headers_[h].name);
     }
+    deferSends_ = false;
     for (std::size_t q = 0; q < queue_.size(); ++q) {
         const PendingInstance p = queue_[q];
         BodyScope scope;
@@ -136,7 +138,7 @@ Grammar Parser::run() {
         tokens_.seek(headers_[std::size_t(p.header)].body);
         inlineStack_ = {p.header};
         currentRule_ = std::uint16_t(p.id);
-        parseBlock(rules_[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
+        parseBody(rules_[p.id], scope, "rule " + headers_[std::size_t(p.header)].name);
     }
     g_.rules.assign(std::make_move_iterator(rules_.begin()), std::make_move_iterator(rules_.end()));
     if (headers_.empty()) tokens_.fail(endAt, "the grammar has no rules (expected 'rule NAME { ... }')");
@@ -148,6 +150,7 @@ Grammar Parser::run() {
                               "without arguments that derives it: child " + startName + "(...))");
     g_.start = std::uint16_t(headers_[std::size_t(start->second)].plainId);
     if (!undefined_.empty()) tokens_.fail(undefined_.front().where, "rule '" + undefined_.front().name + "' is not defined");
+    checkDeferredSends();
     g_.usesPiecePlaces = exprs_.piecePlaceReads() > 0;
     g_.marksPieces = g_.usesPieceKeys || g_.usesPiecePlaces;
     checkGrammar(g_, [this](const SourceLocation& at, const std::string& m) { tokens_.fail(at, m); });

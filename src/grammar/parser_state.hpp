@@ -100,6 +100,38 @@ public:
     void recordInlineCall(const Token& name);
     void parseTerminal(Rule& rule, BodyScope& scope, const SourceLocation& at);
     std::uint16_t parseMesh();
+    // --- list_statements.cpp ---
+    /// A rule's body up to its closing '}' (taken): when it gathers (a scan of its tokens finds
+    /// `gather` at its top level), an Open statement first, then parseBlock.
+    void parseBody(Rule& rule, BodyScope& scope, const std::string& closes);
+    /// Whether the body whose first token is at `body` has a `gather` at its top level.
+    bool bodyGathers(std::size_t body);
+    void parseSend(Rule& rule, const Token& word);
+    /// `gather NAME { STEPS }` at the next token.
+    void parseGather(Rule& rule, BodyScope& scope);
+    /// The route that ends a gather block (after its word); successors into `op`.
+    void parseRoute(Rule& rule, BodyScope& scope, const Token& word, ListOp& op);
+    std::uint16_t listName(const std::string& name, const SourceLocation& at);
+    /// Rule bodies being compiled that gather, innermost last: their gathers (Grammar::gathers
+    /// [first, first + tokens.size())) by the token position of their `gather` word.
+    struct GatheringBody {
+        std::uint32_t first = 0;
+        std::vector<std::size_t> tokens;
+        std::size_t next = 0;        ///< the next of them to be compiled
+        std::size_t closed = 0;      ///< gathers [0, closed) are done: a route's send goes past them
+    };
+    std::vector<GatheringBody> bodies_;
+    /// Sends no gather takes in a plain rule compiled on its own: an error only if that rule
+    /// is derived as a gene (the start rule or a child slot's), found once every rule is compiled.
+    struct DeferredSend {
+        std::uint16_t rule;
+        SourceLocation where;
+        std::string message;
+    };
+    std::vector<DeferredSend> deferredSends_;
+    bool deferSends_ = false;
+    void checkDeferredSends();
+
     // --- texture_statement.cpp ---
     /// `texture NAME "FILE.png" (SX, SY)` after its keyword, into `s` (the image read and checked).
     void parseTexture(const BodyScope& scope, Statement& s);

@@ -68,7 +68,7 @@ void Parser::inlineCall(Rule& rule, BodyScope& caller, const Token& name, ScopeF
     inlineStack_.push_back(header);
     const std::size_t resume = tokens_.mark();
     tokens_.seek(headers_[std::size_t(header)].body);
-    parseBlock(rule, callee, "rule " + name.text);
+    parseBody(rule, callee, "rule " + name.text);
     tokens_.seek(resume);
     inlineStack_.pop_back();
 }

@@ -18,7 +18,8 @@ namespace {
 /// error messages list them: these, then the kinds' keywords, then the second list.
 constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "scale", "size", "translate", "rotate", "mirror"};
 constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "texture", "extrude", "split", "repeat", "comp", "lot",
-                                                 "center", "corners", "edges", "copy", "if", "case", "terminal", "child"};
+                                                 "center", "corners", "edges", "copy", "if", "case", "terminal", "child",
+                                                 "send", "gather"};
 
 bool isStatementWord(const std::string& w) {
     for (std::string_view s : kWordsBeforeKinds)
@@ -178,6 +179,7 @@ struct PrimitiveArguments {
 
 void Parser::parseStatement(Rule& rule, BodyScope& scope) {
     if (tokens_.peek().is('[')) return parseCopy(rule, scope);
+    if (tokens_.peek().isWord("gather")) return parseGather(rule, scope);
     const Token word = tokens_.take();
     if (word.kind != TokenKind::Identifier)
         tokens_.fail(word.where, "expected a statement (" + statementList() + "), found " + word.describe());
@@ -257,8 +259,25 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
                                          std::to_string(terminalAt_->line) + "): it runs only on genes without children");
         s.kind = StatementKind::Child;
         parseChild(rule, s, word.where, scope);
+    } else if (word.text == "send") {
+        return parseSend(rule, word);
     } else if (headerIndex_.count(word.text)) {
-        return inlineCall(rule, scope, word, scope.form);
+        // A rule that gathers finishes (its gathers run) before what follows the call: it runs
+        // on a copy of the scope, as in `[ Rule ]`.
+        if (!bodyGathers(headers_[std::size_t(headerIndex_.at(word.text))].body))
+            return inlineCall(rule, scope, word, scope.form);
+        if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
+        const std::size_t at = rule.statements.size();
+        Statement copy{};
+        copy.kind = StatementKind::Pieces;
+        rule.statements.push_back(copy);
+        PieceList list;
+        list.kind = PiecesKind::Copy;
+        std::vector<Piece> pieces(1);
+        pieces[0].begin = std::uint32_t(rule.statements.size());
+        inlineCall(rule, scope, word, scope.form);
+        pieces[0].end = std::uint32_t(rule.statements.size());
+        return storePieces(rule, at, list, pieces);
     } else {
         tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + statementList());
     }

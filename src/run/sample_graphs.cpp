@@ -57,7 +57,7 @@ double parseMargin(const std::string& text) {
 /// The options `sample` has for tree grammars only, refused by name.
 void refuseTreeOptions(const SampleRequest& r) {
     const auto refuse = [&](const char* option, const char* what) {
-        throw InputError(option, "", std::string(what) + " applies to tree grammars (.grammar, .rule), not to the graph grammar " +
+        throw InputError(option, "", std::string(what) + " applies to tree grammars (.grammar, .rule, .pcg), not to the graph grammar " +
                                          shortened(r.grammarPath, 256));
     };
     if (r.minGenesGiven) refuse("--min-genes", "a derivation's size window");

@@ -22,7 +22,7 @@ inline constexpr std::uint32_t kMaxSampleCount = 1000000;
 /// The options of `shapevo sample`, as the command line gives them (texts are read, and refused
 /// with an InputError naming the option, by sampleModels).
 struct SampleRequest {
-    std::string grammarPath;         ///< .grammar or CastleMaker .rule file, or a .yml graph grammar
+    std::string grammarPath;         ///< .grammar, CastleMaker .rule or .pcg graph file, or a .yml graph grammar
     std::string seed = "1";          ///< --seed: 0 to 2^64-1; file k uses seed + k - 1 (mod 2^64)
     std::string count = "1";         ///< --count: 1 to kMaxSampleCount files
     std::uint32_t minGenes = 1;      ///< --min-genes: smaller derivations are drawn again

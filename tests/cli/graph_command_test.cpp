@@ -1,5 +1,6 @@
-// `shapevo graph FILE.grammar|.rule -o OUT.dot|.svg|.png` end to end: the .dot of every shipped
-// grammar and rule file names every rule and every slot; .svg and .png are valid files; the
+// `shapevo graph FILE.grammar|.rule|.pcg -o OUT.dot|.svg|.png` end to end: the .dot of every shipped
+// grammar and rule file names every rule and every slot, that of every shipped graph file every
+// node (and its summary counts nodes, not rules); .svg and .png are valid files; the
 // shipped tree's recursion edges are dashed and its Branch instances starred; bad input (a
 // grammar or output extension it does not take, a missing file, a grammar error, an existing or
 // unwritable output) is exit 2 with the file in the message and nothing written.
@@ -9,6 +10,7 @@
 
 #include "../test_support.hpp"
 #include "grammar/front_ends.hpp"
+#include "grammar/pcg/pcg_graph.hpp"
 
 namespace shapevo {
 namespace graph_command_test_helpers {
@@ -32,11 +34,19 @@ using namespace graph_command_test_helpers;
 TEST(GraphCommand, TheDotOfEveryShippedGrammarNamesEveryRuleAndSlot) {
     TempDir dir;
     for (const std::string& path : test::shippedGrammarFiles()) {
-        const std::string out = dir.file(std::filesystem::path(path).stem().string() + ".dot");
+        const std::string out = dir.file(std::filesystem::path(path).filename().string() + ".dot");  // window.pcg, window.grammar
         const auto r = runShapevo("graph " + path + " -o " + out);
         ASSERT_EQ(r.exitCode, 0) << path << "\n" << r.output;
         EXPECT_NE(r.output.find("wrote " + out), std::string::npos) << r.output;
         const std::string dot = readFile(out);
+        if (std::filesystem::path(path).extension() == ".pcg") {  // the graph itself: its nodes
+            const pcg::FlatGraph graph = pcg::buildPcgGraph(readFile(path), path);
+            ASSERT_FALSE(graph.nodes.empty()) << path;
+            for (const pcg::FlatNode& node : graph.nodes) EXPECT_NE(dot.find(" " + node.name), std::string::npos) << path << ": node " << node.name;
+            EXPECT_NE(r.output.find("(" + std::to_string(graph.nodes.size()) + " nodes, "), std::string::npos) << r.output;
+            continue;
+        }
+        EXPECT_NE(r.output.find(" rules, "), std::string::npos) << r.output;
         const Grammar g = loadGrammar(path);
         for (const Rule& rule : g.rules) {
             EXPECT_NE(dot.find(" " + rule.name), std::string::npos) << path << ": rule " << rule.name;

@@ -1,7 +1,8 @@
 // Deriving one changed subtree (geometry/derive.hpp: findSubtreeStarts, deriveSubtree): for every
 // shipped grammar and every operator that names what it changed (genome Lineage), the child's
 // primitives are the parent's, less the old subtree's at each of its starts, plus the new
-// subtree's there — as multisets, bit for bit — and so are the task counts the limits check.
+// subtree's there — as multisets, bit for bit — and so are the task counts the limits check; a
+// changed gene the derivation never reaches (no start) leaves the parent's model as it was.
 // This is what scoring a child from its parent (score/image/image_from_parent.cpp) rests on.
 #include <gtest/gtest.h>
 
@@ -48,7 +49,7 @@ bool patch(Keys parent, const Keys& removed, const Keys& added, Keys& out) {
 
 TEST(SubtreeStarts, AChildIsItsParentLessTheOldSubtreePlusTheNewAtEveryStartForEveryShippedGrammar) {
     const auto dummy = std::make_shared<EvaluatedModel>();
-    std::size_t checked = 0, manyStarts = 0;
+    std::size_t checked = 0, manyStarts = 0, unreached = 0;
     for (const std::string& path : test::shippedGrammarFiles()) {
         SCOPED_TRACE(path);
         const Grammar g = loadGrammar(path);
@@ -84,7 +85,10 @@ TEST(SubtreeStarts, AChildIsItsParentLessTheOldSubtreePlusTheNewAtEveryStartForE
             std::sort(child.begin(), child.end());
             if (l.childGene != Lineage::kNone) ASSERT_EQ(findSubtreeStarts(g, x, l.childGene, d, starts), DeriveStatus::Complete);
             else ASSERT_EQ(findSubtreeStarts(g, a, l.parentGene, d, starts), DeriveStatus::Complete);
-            ASSERT_FALSE(starts.empty()) << "operator " << op;
+            // No start: the gene hangs where the derivation never goes (a child slot under an `if`
+            // its scope fails, as tree.pcg's recursion): the child is the parent, which the check
+            // below then proves (nothing removed, nothing added).
+            unreached += starts.empty();
             manyStarts += starts.size() > 1;
             std::int64_t tasks = std::int64_t(parentTasks);
             for (const SubtreeStart& s : starts) {
@@ -108,6 +112,7 @@ TEST(SubtreeStarts, AChildIsItsParentLessTheOldSubtreePlusTheNewAtEveryStartForE
     }
     EXPECT_GT(checked, 300u);
     EXPECT_GT(manyStarts, 0u);  // mirrors and repeated pieces: a subtree derived at several starts
+    EXPECT_LT(unreached, checked / 4) << "most changes are reached";
 }
 
 TEST(SubtreeStarts, ASecondChangeOrAnUnknownParentLeavesNoLineageToTrust) {

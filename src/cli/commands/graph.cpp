@@ -1,7 +1,9 @@
-// `shapevo graph FILE.grammar|.rule -o OUT.dot|.svg|.png`: what the file's front end draws
+// `shapevo graph FILE.grammar|.rule|.pcg -o OUT.dot|.svg|.png`: what the file's front end draws
 // (grammar/front_ends.hpp, grammarFileDiagram: for .grammar and .rule the generator graph of
-// grammar/grammar_diagram.hpp — rules as nodes, child slots and inline calls as edges) in PCGR's
-// notation (report/diagram_writer.hpp): cyclic edges dashed, topological numbers and loop stars.
+// grammar/grammar_diagram.hpp — rules as nodes, child slots and inline calls as edges; for .pcg
+// the graph itself, its nodes and ports) in PCGR's notation (report/diagram_writer.hpp): cyclic
+// edges dashed, topological numbers and loop stars. The summary line counts the diagram's nodes
+// by what they are ("rules" or "nodes").
 // The output name is checked before anything is read; nothing is written on bad input.
 #include <iostream>
 #include <string>
@@ -45,7 +47,7 @@ void GraphCommand::run(const CommandContext&) {
     const pcg::GraphDiagram diagram = grammarFileDiagram(o.path, parseAttrOptions(o.attrs));
     writeDiagram(diagram, format, o.out);
     const pcg::DiagramCounts c = countDiagram(diagram);
-    std::cout << "wrote " << o.out << " (" << c.nodes << " rules, " << c.edges << " edges, " << c.cyclicEdges << " cyclic, "
+    std::cout << "wrote " << o.out << " (" << c.nodes << " " << diagram.nodeNoun << ", " << c.edges << " edges, " << c.cyclicEdges << " cyclic, "
               << c.loopNodes << " on a loop; " << o.path << ")\n";
 }
 

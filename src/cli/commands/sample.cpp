@@ -23,7 +23,8 @@ void SampleCommand::addOptions(CLI::App& command) {
     SampleRequest& o = sampleOptions;
     const std::string redraws = std::to_string(kSampleAttempts);
     command.add_option("grammar", o.grammarPath, "grammar file: .grammar (grammars/README.md), a CastleMaker .rule file "
-                                                  "(grammars/castlemaker/README.md) or a 2D graph grammar, .yml or .yaml "
+                                                  "(grammars/castlemaker/README.md), a procedural content graph .pcg "
+                                                  "(grammars/pcg/README.md) or a 2D graph grammar, .yml or .yaml "
                                                   "(docs/graph-grammars.md)")
         ->required();
     command.add_option("--seed", o.seed, "random seed, 0 to 2^64-1; with --count N, file k uses seed + k - 1 (mod 2^64)")

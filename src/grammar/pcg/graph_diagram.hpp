@@ -2,7 +2,8 @@
 // plain data, in PCGR's notation (pcgr/NOTES.md §4.6): nodes with ports — single (drawn round) or
 // collective (square), blocked (filled), gates (thick) — and directed edges with flags: cyclic
 // (§3.5; drawn dashed), an inline call (no gene boundary) or blocked. Every front end builds one
-// (grammar/grammar_diagram.hpp for .grammar and .rule files); report/diagram_writer.hpp draws it.
+// (grammar/grammar_diagram.hpp for .grammar and .rule files, grammar/pcg/pcg_front_end.hpp for
+// .pcg files); report/diagram_writer.hpp draws it.
 // numberDiagram() fills the §3.4 / §3.5 results (cyclic edges, topological numbers, loop nodes)
 // from the nodes and edges alone, so every front end's picture follows the same order.
 #pragma once
@@ -52,6 +53,7 @@ struct DiagramEdge {
 
 struct GraphDiagram {
     std::string title;                ///< the file it shows
+    std::string nodeNoun = "nodes";   ///< what its nodes are, plural, for a summary line: a grammar's are "rules"
     std::vector<DiagramNode> nodes;   ///< in file order (the §3.4 tie order)
     std::vector<DiagramEdge> edges;   ///< in file order (the §3.5 search order)
 };

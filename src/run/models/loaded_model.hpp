@@ -1,6 +1,6 @@
 // LoadedModel: a run's model family with its grammar, loaded once from the config's grammar file
 // — the model-family seam's side in run/ (the genome's side is genome/genome_family.hpp). A
-// member per family: run/models/tree_model.cpp (.grammar, .rule: derivation trees, drawn as
+// member per family: run/models/tree_model.cpp (.grammar, .rule, .pcg: derivation trees, drawn as
 // meshes) and run/models/graph_model.cpp (.yml, .yaml: 2D graph grammars, drawn as SVG and PNG).
 // Everything in run/ that depends on what a model is — the input files a run hashes, the formats
 // `export` and `sample` write, the best model's files of a run folder, the words that describe a

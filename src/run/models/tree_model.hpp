@@ -1,4 +1,4 @@
-// The derivation-tree family's LoadedModel (.grammar, .rule): its grammar through the front ends
+// The derivation-tree family's LoadedModel (.grammar, .rule, .pcg): its grammar through the front ends
 // (grammar/front_ends.hpp), its genome TreeFamily, its models written as meshes.
 #pragma once
 #include <memory>

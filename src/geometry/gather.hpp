@@ -1,0 +1,20 @@
+// Running a gather (grammar/grammar.hpp ListOp): its steps on the collection its invocation
+// filled, in order, then its route, which pushes one task per routed entity running the route's
+// successor on that entity's scope. Internal to derive (geometry/derive.cpp).
+//
+// Promises: deterministic (the list operations of geometry/lists/ are; values are evaluated per
+// entity in list order); an entity routed to successor s is the k-th of n entities routed there,
+// and its task reads piece.index k and piece.count n and, for `per piece` parameters, the piece
+// key of the k-th piece of kind s below the invocation's; the first routed entity runs first.
+#pragma once
+#include "geometry/derive.hpp"
+
+namespace shapevo {
+
+/// The gather of marker task `marker` (end kGatherMarker, statement: the gather's index) on the
+/// innermost open collection, which it closes. `params` holds the gene's parameters, the gather's
+/// let values and the invocation's mark.
+void runGather(const Grammar& g, const Rule& r, const DeriveScratch::Task& marker, float* params, float* evalStack,
+               DeriveScratch& scratch);
+
+}  // namespace shapevo
