@@ -1,7 +1,8 @@
 // `.pcg` graph files derive what they say: PCGR's Fig. 2 window written as a graph derives the
 // very primitives (bit for bit) of the same window written by hand in the shapevo language, for
 // the same genomes; a cyclic graph (Fig. 3's kind of tree) translates its cyclic edge into a
-// child slot and derives a tree that recurses; an included graph is bound by its node's
+// child slot and its chance nodes into slots with their probability, and derives a tree that
+// recurses until thin pieces carry oranges; an included graph is bound by its node's
 // arguments and listed in Grammar::includes.
 #include <gtest/gtest.h>
 
@@ -59,7 +60,8 @@ TEST(PcgDerive, TheCyclicTreeGraphTurnsItsCyclicEdgeIntoAChildSlotAndRecurses) {
     const std::string text = test::readFile(path);
     const Translation t = pcg::translatePcg(text, path);
     EXPECT_NE(t.text.find("child pcg_c_wood optional"), std::string::npos) << t.text;
-    EXPECT_NE(t.text.find("child pcg_y_more prob 0.45"), std::string::npos) << t.text;
+    for (const char* slot : {"child pcg_y_first prob 0.35", "child pcg_y_second prob 0.35", "child pcg_y_third prob 0.35"})
+        EXPECT_NE(t.text.find(slot), std::string::npos) << slot << "\n" << t.text;
     const Grammar g = loadGrammar(path);
     ASSERT_GE(g.findRule("pcg_c_wood"), 0);
     std::size_t deepest = 0, oranges = 0;
@@ -70,7 +72,8 @@ TEST(PcgDerive, TheCyclicTreeGraphTurnsItsCyclicEdgeIntoAChildSlotAndRecurses) {
         ASSERT_TRUE(o.found) << "seed " << seed;
         const Geometry geo = deriveWith(g, c);
         deepest = std::max(deepest, countKind(geo, PrimitiveKind::Cone));
-        oranges += countKind(geo, PrimitiveKind::Sphere);
+        for (const Primitive& prim : geo.primitives)  // an orange: a sphere of 0.25 (leaves are spheres too)
+            oranges += prim.kind == PrimitiveKind::Sphere && std::abs(prim.half.x - 0.125f) < 1e-6f;
     }
     EXPECT_GE(deepest, 3u) << "some tree has branches (trunk, two branches at least)";
     EXPECT_GT(oranges, 0u);

@@ -35,7 +35,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- nodes and their operations -------------------------------------------------
         {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
          "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\""},
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\""},
         {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
          "node id 'a' is used twice (first at line 3)"},
         {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
@@ -43,6 +43,7 @@ const std::vector<MalformedGraph>& graphCases() {
         {"UnknownArgumentName", graph("node a = translate(w: 1)\nstart -> a\n"), "bad.pcg:3:20",
          "translate has no argument 'w' (its arguments: x, y, z)"},
         {"MissingArgument", graph("node a = rotate(x)\nstart -> a\n"), "bad.pcg:3:10", "rotate needs argument 'angle'"},
+        {"CopyWithoutCount", graph("node c = copy()\nstart -> c\n"), "bad.pcg:3:10", "copy needs argument 'count'"},
         {"TooManyArguments", graph("node a = rotate(x, 1, 2)\nstart -> a\n"), "bad.pcg:3:23",
          "rotate takes 2 arguments, this node gives 3"},
         {"ArgumentGivenTwice", graph("node a = translate(x: 1, x: 2)\nstart -> a\n"), "bad.pcg:3:26",
@@ -105,7 +106,7 @@ const std::vector<MalformedGraph>& graphCases() {
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
         {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
          "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, comp, lot_rect, if, chance or include \"FILE.pcg\"",
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",

@@ -67,6 +67,8 @@ void writeRepeat(NodeWriter& w) {
 }
 
 constexpr std::array<const char*, 7> kFaces{"top", "bottom", "front", "back", "left", "right", "side"};
+void writeCopy(NodeWriter& w) { successor(w, 0, "copy " + w.arg(0) + " ", ""); }
+
 void writeComp(NodeWriter& w) {
     bool any = false;
     for (std::size_t k = 0; k < kFaces.size(); ++k) any = any || w.flows(k);
@@ -134,6 +136,8 @@ const std::vector<NodeOp>& table() {
          {{"axis", ArgKind::Axis, nullptr}, {"sizes", ArgKind::Sizes, nullptr}}, writeSplit},
         {"repeat", "equal pieces along an axis (count: N or size: S, ~S)", {kAnyIn}, {{"piece", PortType::Same}},
          {{"axis", ArgKind::Axis, nullptr}, {"count", ArgKind::Expr, ""}, {"size", ArgKind::Expr, ""}}, writeRepeat},
+        {"copy", "N copies of the scope (PCGR's copy node), each telling itself apart by piece.index (0..N-1)", {kAnyIn},
+         {{"out", PortType::Same}}, {{"count", ArgKind::Expr, nullptr}}, writeCopy},
         {"comp", "a volume's faces as flat scopes", {kVolumeIn},
          {{"top", PortType::Flat}, {"bottom", PortType::Flat}, {"front", PortType::Flat}, {"back", PortType::Flat},
           {"left", PortType::Flat}, {"right", PortType::Flat}, {"side", PortType::Flat}},

@@ -1,0 +1,38 @@
+#!/bin/sh
+# The procedural-content-graph scenes (docs/pcg-scenes.md): for 5 seeds on 2 MPI ranks, PCGR's
+# Fig. 4 stairway (configs/pcg-stairway-volume.toml) toward its reachable volume, and Fig. 3's
+# tree as a .pcg graph (configs/pcg-tree-volume.toml) against grammars/tree.grammar
+# (configs/tree-volume.toml) toward the papers' tree volume. The budget is a number of
+# generations (the same evaluations for both trees, whatever else loads the machine); the two
+# trees run alternately, seed by seed. Prints one markdown row per scene: mean voxel IoU,
+# min-max, mean evaluations, mean seconds.
+#   experiments/pcg_scenes.sh [SEEDS=5] [TREE_GENERATIONS=1000] [STAIR_GENERATIONS=1500] [BUILD=build]
+set -eu
+seeds=${1:-5}; tree_generations=${2:-1000}; stair_generations=${3:-1500}; build=${4:-build}
+cd "$(dirname "$0")/.."
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+value() { sed -n "s/.*\"$1\": \([0-9.e+-]*\).*/\1/p" "$2" | head -1; }
+run() {  # run CONFIG SEED GENERATIONS FOLDER
+    start=$(date +%s.%N)
+    mpirun --allow-run-as-root --oversubscribe -np 2 nice "$build/shapevo" run "configs/$1.toml" -q --threads 1 --seed "$2" \
+        --set run.wall_time=0 --set ga.generations="$3" --out "$4" >/dev/null ||
+        { status=$?; echo "pcg_scenes.sh: $1, seed $2 failed (exit $status)" >&2; exit 1; }
+    awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN { print a - b }' > "$4/seconds"
+}
+for s in $(seq 1 "$seeds"); do
+    run pcg-stairway-volume "$s" "$stair_generations" "$out/pcg-stairway-volume-$s"
+    run tree-volume "$s" "$tree_generations" "$out/tree-volume-$s"
+    run pcg-tree-volume "$s" "$tree_generations" "$out/pcg-tree-volume-$s"
+done
+echo "| scene | grammar | mean voxel IoU | min–max | mean evaluations | mean seconds |"
+echo "| --- | --- | ---: | ---: | ---: | ---: |"
+for scene in pcg-stairway-volume tree-volume pcg-tree-volume; do
+    grammar=$(sed -n 's|^file = "\.\./\(.*\)".*|\1|p' "configs/$scene.toml" | head -1)
+    for s in $(seq 1 "$seeds"); do
+        f=$out/$scene-$s/summary.json
+        echo "$(value voxel_iou "$f") $(value evaluations "$f") $(cat "$out/$scene-$s/seconds")"
+    done | awk -v scene="$scene" -v grammar="$grammar" '
+        { s += $1; e += $2; t += $3; if (min == "" || $1 < min) min = $1; if ($1 > max) max = $1 }
+        END { printf "| %s | %s | %.3f | %.3f–%.3f | %d | %.0f |\n", scene, grammar, s / NR, min, max, e / NR, t / NR }'
+done
