@@ -4,7 +4,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${1:-build/shapevo}
-rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb \
+rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb targets/houses-reachable.vdb \
       targets/spaceship-paper.vdb targets/tree-volume.vdb targets/tree-avoid.vdb targets/castle.vdb
 
 # A reachable target: one fixed derivation of the spaceship grammar (14 genes), kept as source
@@ -22,6 +22,11 @@ rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb \
 # genome scores voxel IoU 0.925 against it (`shapevo evaluate configs/pcg-stairway-volume.toml
 # targets/pcg-stairway-reachable.genome`), the search finds 0.929 (docs/pcg-scenes.md).
 "$BIN" target targets/pcg-stairway-reachable.obj --voxel-size 0.05 -o targets/pcg-stairway-reachable.vdb
+
+# A reachable target for the houses street (configs/houses-volume.toml): one derivation of
+# grammars/houses.grammar (4 genes, 103 primitives), kept as source data with its chromosome, drawn by
+#   shapevo sample grammars/houses.grammar --seed 3 --genome targets/houses-reachable.genome -o targets/houses-reachable.obj
+"$BIN" target targets/houses-reachable.obj --voxel-size 0.5 -o targets/houses-reachable.vdb
 
 # The papers' spaceship target mesh (crest01/ShapeGenetics, MIT licence: targets/shapegenetics/LICENSE).
 "$BIN" target targets/shapegenetics/spaceship_target.obj --voxel-size 0.1 -o targets/spaceship-paper.vdb

@@ -273,15 +273,6 @@ struct Derivation {
     return nonFinite(scratch, rule);
 }
 
-/// `mark`'s piece key (its bits) and, with piece.index / piece.count, its place into the parameter block.
-[[gnu::always_inline]] inline void loadMark(const Grammar& g, const PieceMark& mark, float* params) {
-    std::memcpy(params + kPieceKeySlot, &mark.key, sizeof mark.key);
-    if (g.usesPiecePlaces) {
-        params[kPieceIndexSlot] = float(mark.place & 0xFFFFu);
-        params[kPieceCountSlot] = float(mark.place >> 16);
-    }
-}
-
 /// `params` for `task`: its gene's parameters, the let values it goes on with (a mirror's or a
 /// piece's continuation) and its piece mark.
 [[gnu::always_inline]] inline void loadParams(const Derivation& d, const Rule& r, const DeriveScratch::Task& task,
@@ -291,7 +282,7 @@ struct Derivation {
     if (task.frame != DeriveScratch::kNoFrame) [[unlikely]]
         std::memcpy(params + kFrameBase, d.scratch.frames.data() + task.frame, r.frameFloats * sizeof(float));
     if (d.g.marksPieces) [[unlikely]]
-        loadMark(d.g, task.mark, params);
+        loadPieceMark(d.g, task.mark, params);
 }
 
 /// A ScopeFrame statement: the scope's world origin and axes into the parameter block, where
@@ -312,41 +303,6 @@ struct Derivation {
 [[gnu::always_inline]] inline std::uint32_t snapshot(const Rule& r, std::vector<float>& frames, const float* params) {
     if (r.frameFloats == 0) return DeriveScratch::kNoFrame;
     return storeFrame(frames, params, r.frameFloats);
-}
-
-/// An Open statement: one collection per gather of the body, and below everything the
-/// invocation will push, a marker for each (the first gather's on top: it runs first, so its
-/// routes may send to the later ones).
-[[gnu::noinline]] void openCollections(const Grammar& g, const Rule& r, const Statement& st, const DeriveScratch::Task& task,
-                                       const Scope& s, const float* params, DeriveScratch& scratch) {
-    scratch.scopes.push_back(s);
-    const auto at = std::uint32_t(scratch.scopes.size() - 1);
-    const std::uint32_t frame = snapshot(r, scratch.frames, params);
-    for (std::uint32_t k = st.end; k-- > 0;) {
-        const std::uint32_t gather = st.slot + k;
-        scratch.collections.push(g.gathers[gather].list, gather, frame);
-        scratch.stack.push_back({task.gene, gather, DeriveScratch::kGatherMarker, at, task.parent, frame, task.mark});
-    }
-}
-
-/// A Send statement: `s` into the innermost open collection of its list (one exists: the parser
-/// checks it); false when that collection is full (kMaxListEntities).
-[[gnu::noinline]] bool sendScope(Collections& collections, const Statement& st, const Scope& s) {
-    Collection* c = collections.innermost(st.slot);
-    if (c == nullptr || c->entities.size() >= kMaxListEntities) return false;
-    c->entities.scopes.push_back(s);
-    return true;
-}
-
-/// A gather's marker task: its gene's parameters, the gather's let values and the invocation's
-/// mark, then the gather (geometry/gather.hpp).
-[[gnu::noinline]] void runMarker(const Derivation& d, const DeriveScratch::Task& task, float* params, float* evalStack) {
-    const Rule& r = d.g.rules[d.c.rule(task.gene)];
-    const Collection& c = d.scratch.collections.pool[d.scratch.collections.open - 1];
-    DeriveScratch::Task loaded = task;
-    loaded.frame = c.frame;
-    loadParams(d, r, loaded, params);
-    runGather(d.g, r, task, params, evalStack, d.scratch);
 }
 
 /// The three expressions of a Scale / Size / Translate statement.
@@ -522,7 +478,7 @@ template <Focus F>
             writeScopeFrame(s, params);
             break;
         case StatementKind::Open:
-            openCollections(g, r, st, task, s, params, scratch);
+            openCollections(g, st, task, s, snapshot(r, scratch.frames, params), scratch);
             break;
         case StatementKind::Send:
             if (!sendScope(scratch.collections, st, s)) [[unlikely]]
@@ -577,7 +533,7 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
         // the root's: the whole model recurs only as a duplicate, which search methods never
         // score twice, and keeping it would copy every primitive of every model.)
         if (g.hasLists && task.end == DeriveScratch::kGatherMarker) [[unlikely]] {
-            runMarker(d, task, params, evalStack);
+            runGatherMarker(g, c, task, params, evalStack, scratch);
             continue;
         }
         if (memo && task.gene != 0 && startsSubtree(task))

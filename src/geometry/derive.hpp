@@ -1,6 +1,7 @@
 // derive: run the grammar's statements along a chromosome's derivation tree and collect the
 // primitives. Pure and deterministic: the same chromosome always gives the same geometry.
 #pragma once
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -24,6 +25,16 @@ struct PieceMark {
     std::uint32_t key = 0;
     std::uint32_t place = kNoPiecePlace;
 };
+
+/// `mark`'s piece key (its bits) and, with piece.index / piece.count, its place into the
+/// parameter block, where OpCode::Fresh and piece.index / piece.count read them.
+[[gnu::always_inline]] inline void loadPieceMark(const Grammar& g, const PieceMark& mark, float* params) {
+    std::memcpy(params + kPieceKeySlot, &mark.key, sizeof mark.key);
+    if (g.usesPiecePlaces) {
+        params[kPieceIndexSlot] = float(mark.place & 0xFFFFu);
+        params[kPieceCountSlot] = float(mark.place >> 16);
+    }
+}
 
 /// Where a gene's subtree starts being derived: its parent's scope, the look in force there, the
 /// piece key and place (what a SubtreeMemo::Start holds besides the content). What derive makes

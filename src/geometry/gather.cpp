@@ -139,4 +139,34 @@ void runGather(const Grammar& g, const Rule& r, const DeriveScratch::Task& marke
     pushRouted(g, marker, route.begin[0], route.end[0], 0, *list, cs.kept, frame, scratch);
 }
 
+void openCollections(const Grammar& g, const Statement& st, const DeriveScratch::Task& task, const Scope& s,
+                     std::uint32_t frame, DeriveScratch& scratch) {
+    scratch.scopes.push_back(s);
+    const auto at = std::uint32_t(scratch.scopes.size() - 1);
+    for (std::uint32_t k = st.end; k-- > 0;) {
+        const std::uint32_t gather = st.slot + k;
+        scratch.collections.push(g.gathers[gather].list, gather, frame);
+        scratch.stack.push_back({task.gene, gather, DeriveScratch::kGatherMarker, at, task.parent, frame, task.mark});
+    }
+}
+
+bool sendScope(Collections& collections, const Statement& st, const Scope& s) {
+    Collection* c = collections.innermost(st.slot);
+    if (c == nullptr || c->entities.size() >= kMaxListEntities) return false;
+    c->entities.scopes.push_back(s);
+    return true;
+}
+
+void runGatherMarker(const Grammar& g, const Chromosome& c, const DeriveScratch::Task& marker, float* params,
+                     float* evalStack, DeriveScratch& scratch) {
+    const Rule& r = g.rules[c.rule(marker.gene)];
+    const Collection& open = scratch.collections.pool[scratch.collections.open - 1];
+    if (r.paramFloats > 0)
+        std::memcpy(params, &c.words[Chromosome::paramWord(marker.gene, r)], r.paramFloats * sizeof(float));
+    if (open.frame != DeriveScratch::kNoFrame)
+        std::memcpy(params + kFrameBase, scratch.frames.data() + open.frame, r.frameFloats * sizeof(float));
+    loadPieceMark(g, marker.mark, params);
+    runGather(g, r, marker, params, evalStack, scratch);
+}
+
 }  // namespace shapevo

@@ -11,6 +11,22 @@
 
 namespace shapevo {
 
+/// An Open statement `st` of `task` on scope `s`: one collection per gather of the rule's body
+/// (their frame: `frame`, the task's let values now), and below everything the invocation will
+/// push, a marker task for each (the first gather's on top: it runs first, so its routes may
+/// send to the later ones).
+void openCollections(const Grammar& g, const Statement& st, const DeriveScratch::Task& task, const Scope& s,
+                     std::uint32_t frame, DeriveScratch& scratch);
+
+/// A Send statement: `s` into the innermost open collection of its list (the parser checked that
+/// one exists); false when that collection is full (kMaxListEntities).
+bool sendScope(Collections& collections, const Statement& st, const Scope& s);
+
+/// A marker task: its gene's parameters, the gather's let values and the invocation's mark into
+/// `params`, then runGather.
+void runGatherMarker(const Grammar& g, const Chromosome& c, const DeriveScratch::Task& marker, float* params,
+                     float* evalStack, DeriveScratch& scratch);
+
 /// The gather of marker task `marker` (end kGatherMarker, statement: the gather's index) on the
 /// innermost open collection, which it closes. `params` holds the gene's parameters, the gather's
 /// let values and the invocation's mark.

@@ -52,7 +52,7 @@ const std::vector<Malformed>& cases() {
         {"AttrWithReservedName", "attr scope = 1\nstart A\nrule A { }\n", "bad.grammar:1:6", "'scope' is a reserved name"},
         // --- statements ------------------------------------------------------------------
         {"UnknownStatement", body("  extrusion 2"), "bad.grammar:3:3", "unknown statement 'extrusion'"},
-        {"StatementIsANumber", body("  5"), "bad.grammar:3:3", "expected a statement (param, let, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, roof, paraboloid, color, material, texture, extrude, split, repeat, comp, lot, center, corners, edges, copy, if, case, terminal, child or the name of a rule to run inline), found number 5"},
+        {"StatementIsANumber", body("  5"), "bad.grammar:3:3", "expected a statement (param, let, scale, size, translate, rotate, mirror, box, cylinder, cone, sphere, mesh, roof, paraboloid, color, material, texture, extrude, split, repeat, comp, lot, center, corners, edges, copy, if, case, terminal, child, send, gather or the name of a rule to run inline), found number 5"},
         {"MeshWithoutFileName", body("  mesh leaf"), "bad.grammar:3:8", "expected a file name in quotes after 'mesh', found 'leaf'"},
         {"MeshFileMissing", body("  mesh \"no-such-leaf.obj\""), "bad.grammar:3:8", "mesh \"no-such-leaf.obj\": "},
         {"TextureFileMissing", body("  texture bricks \"no-such-bricks.png\" (1, 1)"), "bad.grammar:3:18",
