@@ -86,6 +86,10 @@ public:
     void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
     void parseCopy(Rule& rule, BodyScope& scope);
+    /// A `[ ]` around statements about to be compiled: its Pieces statement (returns its index);
+    /// closeCopy makes the statements compiled since its one piece.
+    std::size_t openCopy(Rule& rule, const SourceLocation& at);
+    void closeCopy(Rule& rule, std::size_t at);
     void storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces);
     /// `readsScope`: set when a piece's size reads scope.origin or scope.axis.
     void parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pieces, bool& readsScope);

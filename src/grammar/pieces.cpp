@@ -300,17 +300,26 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     storePieces(rule, readsScope ? at + 1 : at, list, pieces);
 }
 
-void Parser::parseCopy(Rule& rule, BodyScope& scope) {
-    const Token open = tokens_.take();  // [
-    if (g_.pieceLists.size() >= 65535) tokens_.fail(open.where, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
-    const std::size_t at = rule.statements.size();
+std::size_t Parser::openCopy(Rule& rule, const SourceLocation& at) {
+    if (g_.pieceLists.size() >= 65535) tokens_.fail(at, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
     Statement st{};
     st.kind = StatementKind::Pieces;
     rule.statements.push_back(st);
+    return rule.statements.size() - 1;
+}
+
+void Parser::closeCopy(Rule& rule, std::size_t at) {
     PieceList list;
     list.kind = PiecesKind::Copy;
     std::vector<Piece> pieces(1);
-    pieces[0].begin = std::uint32_t(rule.statements.size());
+    pieces[0].begin = std::uint32_t(at + 1);
+    pieces[0].end = std::uint32_t(rule.statements.size());
+    storePieces(rule, at, list, pieces);
+}
+
+void Parser::parseCopy(Rule& rule, BodyScope& scope) {
+    const Token open = tokens_.take();  // [
+    const std::size_t at = openCopy(rule, open.where);
     BodyScope inner = scope;
     while (!tokens_.peek().is(']')) {
         if (tokens_.peek().kind == TokenKind::End)
@@ -319,8 +328,7 @@ void Parser::parseCopy(Rule& rule, BodyScope& scope) {
         if (rule.statements.size() > kMaxStatements) tokens_.fail(open.where, "rule " + rule.name + " has more than 2^20 statements");
     }
     tokens_.take();
-    pieces[0].end = std::uint32_t(rule.statements.size());
-    storePieces(rule, at, list, pieces);
+    closeCopy(rule, at);
 }
 
 void Parser::storePieces(Rule& rule, std::size_t at, PieceList& list, std::vector<Piece>& pieces) {

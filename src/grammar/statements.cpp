@@ -266,18 +266,9 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
         // on a copy of the scope, as in `[ Rule ]`.
         if (!bodyGathers(headers_[std::size_t(headerIndex_.at(word.text))].body))
             return inlineCall(rule, scope, word, scope.form);
-        if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp, lot and [ ] statements (at most 65535)");
-        const std::size_t at = rule.statements.size();
-        Statement copy{};
-        copy.kind = StatementKind::Pieces;
-        rule.statements.push_back(copy);
-        PieceList list;
-        list.kind = PiecesKind::Copy;
-        std::vector<Piece> pieces(1);
-        pieces[0].begin = std::uint32_t(rule.statements.size());
+        const std::size_t at = openCopy(rule, word.where);
         inlineCall(rule, scope, word, scope.form);
-        pieces[0].end = std::uint32_t(rule.statements.size());
-        return storePieces(rule, at, list, pieces);
+        return closeCopy(rule, at);
     } else {
         tokens_.fail(word.where, "unknown statement '" + word.text + "': expected " + statementList());
     }

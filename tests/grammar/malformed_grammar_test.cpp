@@ -9,21 +9,13 @@
 #include "grammar/expression.hpp"
 #include "grammar/front_ends.hpp"
 #include "base/input_error.hpp"
+#include "malformed_grammar_cases.hpp"
 
 namespace shapevo {
 namespace {
 
-struct Malformed {
-    const char* name;      ///< test name suffix: what is wrong
-    std::string text;      ///< the grammar
-    std::string where;     ///< expected "bad.grammar:LINE:COL"
-    std::string fragment;  ///< a distinctive part of the expected message
-};
-
-std::ostream& operator<<(std::ostream& os, const Malformed& m) { return os << m.name; }
-
-// A one-rule grammar "start A / rule A {" whose body starts on line 3, column 3.
-std::string body(const std::string& lines) { return "start A\nrule A {\n" + lines + "\n}\n"; }
+using malformed_grammar::Malformed;
+using malformed_grammar::body;
 
 
 const std::vector<Malformed>& cases() {
@@ -244,7 +236,7 @@ const std::vector<Malformed>& cases() {
     return all;
 }
 
-class GrammarMalformed : public ::testing::TestWithParam<Malformed> {};
+using malformed_grammar::GrammarMalformed;
 
 TEST_P(GrammarMalformed, IsRejectedWithLocationAndMessage) {
     const Malformed& m = GetParam();
@@ -259,16 +251,9 @@ TEST_P(GrammarMalformed, IsRejectedWithLocationAndMessage) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(GrammarCases, GrammarMalformed, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Malformed>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(GrammarCases, GrammarMalformed, ::testing::ValuesIn(cases()), malformed_grammar::caseName);
 
-TEST(GrammarMalformedCases, AtLeastTwentyDistinctCases) {
-    EXPECT_GE(cases().size(), 20u);
-    std::vector<std::string> names;
-    for (const Malformed& m : cases()) names.push_back(m.name);
-    std::sort(names.begin(), names.end());
-    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "case names must be unique";
-}
+TEST(GrammarMalformedCases, AtLeastTwentyDistinctCases) { malformed_grammar::expectTwentyDistinctCases(cases()); }
 
 }  // namespace
 }  // namespace shapevo

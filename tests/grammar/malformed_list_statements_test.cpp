@@ -1,33 +1,25 @@
 // Every malformed send / gather statement (grammars/README.md "Lists") is rejected with an
 // InputError at file:line:column of the offending token, saying what is wrong: a send that no
 // gather of its gene takes, a gather out of place or without a route, unknown steps, routes and
-// aggregates written wrong.
+// aggregates written wrong. The test itself is GrammarMalformed's (malformed_grammar_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "base/input_error.hpp"
-#include "grammar/front_ends.hpp"
+#include "malformed_grammar_cases.hpp"
 
 namespace shapevo {
 namespace malformed_list_statements_test {
 
-struct MalformedList {
-    const char* name;      ///< test name suffix: what is wrong
-    std::string text;      ///< the grammar
-    std::string where;     ///< expected "bad.grammar:LINE:COL"
-    std::string fragment;  ///< a distinctive part of the expected message
-};
+using malformed_grammar::GrammarMalformed;
 
-std::ostream& operator<<(std::ostream& os, const MalformedList& m) { return os << m.name; }
+using malformed_grammar::body;
+using malformed_grammar::Malformed;
 
-// A one-rule grammar "start A / rule A {" whose body starts on line 3.
-std::string body(const std::string& lines) { return "start A\nrule A {\n" + lines + "\n}\n"; }
-
-const std::vector<MalformedList>& listCases() {
-    static const std::vector<MalformedList> all = {
+const std::vector<Malformed>& listCases() {
+    static const std::vector<Malformed> all = {
         {"SendWithoutGather", body("  send items"), "bad.grammar:3:8", "'send items' has no 'gather items' to go to"},
         {"SendToTheGatherOfAnotherGene", "start A\nrule A {\n  gather l {\n    each : { box }\n  }\n  child B\n}\nrule B {\n  send l\n}\n",
          "bad.grammar:9:8", "never to another gene"},
@@ -70,30 +62,9 @@ const std::vector<MalformedList>& listCases() {
     return all;
 }
 
-class ListStatementMalformed : public ::testing::TestWithParam<MalformedList> {};
+INSTANTIATE_TEST_SUITE_P(ListCases, GrammarMalformed, ::testing::ValuesIn(listCases()), malformed_grammar::caseName);
 
-TEST_P(ListStatementMalformed, IsRejectedWithLocationAndMessage) {
-    const MalformedList& m = GetParam();
-    try {
-        parseGrammar(m.text, "bad.grammar");
-        FAIL() << "expected InputError for:\n" << m.text;
-    } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(m.where + ": ", 0), 0u) << "expected location " << m.where << ", got: " << what;
-        EXPECT_NE(what.find(m.fragment), std::string::npos) << "expected message fragment \"" << m.fragment << "\", got: " << what;
-    }
-}
-
-INSTANTIATE_TEST_SUITE_P(ListCases, ListStatementMalformed, ::testing::ValuesIn(listCases()),
-                         [](const ::testing::TestParamInfo<MalformedList>& info) { return std::string(info.param.name); });
-
-TEST(ListStatementMalformedCases, AtLeastTwentyDistinctCases) {
-    EXPECT_GE(listCases().size(), 20u);
-    std::vector<std::string> names;
-    for (const MalformedList& m : listCases()) names.push_back(m.name);
-    std::sort(names.begin(), names.end());
-    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "case names must be unique";
-}
+TEST(ListStatementMalformedCases, AtLeastTwentyDistinctCases) { malformed_grammar::expectTwentyDistinctCases(listCases()); }
 
 }  // namespace malformed_list_statements_test
 }  // namespace shapevo
