@@ -5,7 +5,7 @@
 // (grammar/pcg/graph_order.hpp, nodes in file order) and every check made: unknown ops, ports and
 // arguments, duplicate ids, type mismatches (naming both ports), unconnected inputs, unreached
 // nodes, cycles with no conditional way out, missing and cyclic includes — each a located error;
-// and the collective nodes grouped into gathers, each in its execution scope (pcg_collective.hpp).
+// and the collective nodes grouped into gathers, each in its execution scope (pcg_collective.cpp).
 #pragma once
 #include <cstdint>
 #include <string>

@@ -3,7 +3,7 @@
 // (docs/pcg-format.md lists them). Most ports are single ports (one entity per round); the
 // collective nodes (order_by, reverse, shuffle, amount_filter, filter) have collective ports
 // (PCGR §3.2: the whole list at once): an edge into one is a `send`, a chain of them one
-// `gather` (pcg_collective.hpp) whose steps their writers write and whose routes the last one's.
+// `gather` (pcg_collective.cpp) whose steps their writers write and whose routes the last one's.
 #pragma once
 #include <functional>
 #include <span>
