@@ -1,6 +1,7 @@
 // libFuzzer target: arbitrary bytes -> parseGrammar as a procedural content graph (.pcg,
 // src/grammar/pcg/), read from this target's own scratch folder, where a few graph files exist
-// for includes to find (part.pcg, loop.pcg; the dictionary pcg.dict names them) and nothing else
+// for includes to find (part.pcg, loop.pcg, and sides.pcg whose collective nodes gather per
+// entity; the dictionary pcg.dict names them) and nothing else
 // resolves. A located InputError is the expected way to reject input: located inside the input,
 // or inside the other file it names (an included graph file); any other exception, a sanitizer
 // report, or a broken invariant of an accepted grammar (grammar_invariants.hpp, shared with
@@ -33,6 +34,9 @@ const std::string& folder() {
         const std::string d = fuzz::scratchFolder("fuzz_pcg_parser");
         put(d + "/part.pcg", "graph Part\nparam h = uniform(1, 2)\nin base : volume\nout top : volume\n"
                              "node s = size(1, h, 1)\nnode b = box()\nbase -> s\ns -> b\nb -> top\n");
+        put(d + "/sides.pcg", "graph Sides\nin lot : volume\nout rest : flat\nnode f = comp()\nnode o = order_by(scope.size.x desc)\n"
+                              "node a = amount_filter(count: 1)\nnode e = extrude(0.2)\nnode b = box()\nnode g = color(0.5, 0.5, 0.5)\n"
+                              "lot -> f\nf.side -> o\no -> a\na.first -> e\ne -> b\na.rest -> g\ng -> rest\n");
         put(d + "/loop.pcg", "graph Loop\nin base : volume\nnode l = include \"loop.pcg\"\nbase -> l\n");
         return d;
     }();

@@ -35,7 +35,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- nodes and their operations -------------------------------------------------
         {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
          "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\""},
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, amount_filter, filter or include \"FILE.pcg\""},
         {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
          "node id 'a' is used twice (first at line 3)"},
         {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
@@ -83,6 +83,57 @@ const std::vector<MalformedGraph>& graphCases() {
          "node 'b' is never reached: no path leads to it from an input gate"},
         {"CycleWithNoWayOut", graph("node a = translate(x: 1)\nnode b = box()\nstart -> a\na -> b\nb -> a\n"), "bad.pcg:7:1",
          "a cycle with no way out (through a, b): it would never end; put an `if` or a `chance` node on it"},
+        // --- collective nodes (square ports: send and gather) ------------------------------
+        {"CollectiveNodeFedByNothing", graph("node o = order_by(scope.size.y)\nnode b = box()\nstart -> b\n"), "bad.pcg:3:6",
+         "collective input 'in' of node 'o' (order_by) is not connected: it gathers what edges send to it, and none does"},
+        {"OrderByWithoutAKey", graph("node o = order_by()\nstart -> o\n"), "bad.pcg:3:10",
+         "order_by needs at least one key: order_by(scope.size.y, scope.origin.x desc)"},
+        {"OrderByKeyNamed", graph("node o = order_by(keys: scope.size.y)\nstart -> o\n"), "bad.pcg:3:19",
+         "order_by keys are positional: order_by(scope.size.y, scope.origin.x desc)"},
+        {"AmountFilterWithoutCount", graph("node f = amount_filter(from: 1)\nstart -> f\n"), "bad.pcg:3:10",
+         "amount_filter needs argument 'count'"},
+        {"ShuffleWithoutItsDraw", graph("node s = shuffle()\nstart -> s\n"), "bad.pcg:3:10", "shuffle needs argument 'u'"},
+        {"UnknownCollectivePort", graph("node f = amount_filter(count: 1)\nnode b = box()\nstart -> f\nf.second -> b\n"), "bad.pcg:6:1",
+         "node 'f' (amount_filter) has no output port 'second' (its outputs: first, rest)"},
+        {"TwoRoutesNamedAlone", graph("node f = filter(scope.size.y > 1)\nnode b = box()\nstart -> f\nf -> b\n"), "bad.pcg:6:1",
+         "node 'f' (filter) has 2 output ports (true, false): name one, f.PORT"},
+        {"CollectiveOutputTypeMismatch",
+         graph("node c = comp()\nnode o = order_by(scope.size.x)\nnode b = box()\nstart -> c\nc.side -> o\no -> b\n"), "bad.pcg:8:1",
+         "cannot connect o.out (flat) to b.in (volume): box takes a volume"},
+        {"ListOutOfAnIncludedGraphIntoACollectiveNode",
+         graph("node s = include \"sub.pcg\"\nnode r = reverse()\nnode b = box()\nstart -> s\ns -> r\nr -> b\n"), "sub.pcg:6:1",
+         "the list out of s/o.out would go through gate 's/list' into 'r' (reverse) of another execution scope: a list stays in "
+         "the graph that gathers it; let a node with single ports take its entities first",
+         {{"sub.pcg", "graph Sub\nin lot : volume\nout list : volume\nnode o = order_by(scope.size.y)\nlot -> o\no -> list\n"}}},
+        {"ListIntoAnIncludedGraphsCollectiveNode", graph("node o = order_by(scope.size.y)\nnode s = include \"sub.pcg\"\nstart -> o\no -> s\n"),
+         "bad.pcg:6:1",
+         "the list out of o.out would go through gate 's/items' into 's/r' (reverse) of another execution scope: a list stays in "
+         "the graph that gathers it; let a node with single ports take its entities first",
+         {{"sub.pcg", "graph Sub\nin items : volume\nnode r = reverse()\nnode b = box()\nitems -> r\nr -> b\n"}}},
+        {"SendFromAnotherGeneThroughACyclicEdge",
+         graph("node b = box()\nnode up = translate(y: 1)\nnode more = chance(0.5)\nnode o = order_by(scope.origin.y)\n"
+               "node s = sphere()\nstart -> b\nb -> up\nup -> more\nmore.yes -> b\nb -> o\no -> s\n"),
+         "bad.pcg:12:1",
+         "the edge from 'b' sends to 'o' (order_by) from another gene (after the cyclic edge more -> b), but 'o' (order_by) "
+         "gathers in graph G: a list never crosses a gene boundary; put the collective nodes in a graph included after it"},
+        {"SendFromAChanceNodesGene", graph("node c = chance(0.5)\nnode o = reverse()\nnode b = box()\nstart -> c\nc.yes -> o\no -> b\n"),
+         "bad.pcg:7:1",
+         "the edge from 'c' sends to 'o' (reverse) from another gene (after the chance node 'c'), but 'o' (reverse) gathers in "
+         "graph G: a list never crosses a gene boundary; put the collective nodes in a graph included after it"},
+        {"ARouteBackIntoItsOwnListRoundALoop",
+         graph("node o = order_by(scope.size.y)\nnode f = amount_filter(count: 1)\nnode b = box()\nnode small = if(scope.size.y > 1)\n"
+               "start -> o\no -> f\nf.first -> b\nf.rest -> small\nsmall.true -> o\n"),
+         "bad.pcg:11:1",
+         "the edge from 'small' sends to 'o' (order_by) from another gene (after the cyclic edge small -> o), but 'o' (order_by) "
+         "gathers in graph G: a list never crosses a gene boundary; put the collective nodes in a graph included after it"},
+        {"SendFromAChanceInsideAnIncludedGraph", graph("node s = include \"sub.pcg\"\nstart -> s\n"), "sub.pcg:7:1",
+         "the edge from 's/c' sends to 's/o' (reverse) from another gene (after the chance node 's/c'), but 's/o' (reverse) "
+         "gathers in each run of s (sub.pcg): a list never crosses a gene boundary; put the collective nodes in a graph included "
+         "after it",
+         {{"sub.pcg", "graph Sub\nin lot : volume\nnode c = chance(0.5)\nnode o = reverse()\nnode b = box()\nlot -> c\nc.yes -> o\no -> b\n"}}},
+        {"MisspeltSortDirection", graph("node o = order_by(scope.size.y dsc)\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:6",
+         "expected a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E)) or a route (each, keep first, "
+         "where) in 'gather pcg_l_o', found 'dsc' (in its translation to the shapevo language:     order by scope.size.y dsc)"},
         // --- declarations ---------------------------------------------------------------
         {"NoGraphName", "in start : volume\n", "bad.pcg:1:1", "no graph name: a .pcg file starts with `graph NAME`"},
         {"NoInputGate", "graph G\n", "bad.pcg:1:7",
@@ -106,7 +157,7 @@ const std::vector<MalformedGraph>& graphCases() {
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
         {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
          "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance or include \"FILE.pcg\"",
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, amount_filter, filter or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",

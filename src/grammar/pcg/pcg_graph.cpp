@@ -61,6 +61,7 @@ public:
         g_.nameAt = f.nameAt;
         std::error_code ec;
         stack_.push_back(fs::weakly_canonical(fs::path(path), ec).string());
+        g_.scopes.push_back({"", f.name, -1, {}});
         instance(f, "", {}, nullptr);
         const bool hasInput = std::any_of(g_.nodes.begin(), g_.nodes.end(), [](const FlatNode& n) { return n.mainInput; });
         if (!hasInput) failAt(f.nameAt, "graph " + f.name + " has no input gate: write `in NAME : volume` (it receives the start scope)");
@@ -93,6 +94,7 @@ private:
                                  p.where});
         }
         Locals local;
+        scope_ = std::uint32_t(g_.scopes.size() - 1);
         auto declare = [&](const std::string& id, const Location& where) {
             if (auto it = local.find(id); it != local.end())
                 failAt(where, "node id '" + id + "' is used twice (first at line " + std::to_string(it->second.where.line) + ")");
@@ -110,6 +112,7 @@ private:
             n.inputs.push_back({"in", *type, false, true});
             n.outputs.push_back({"out", *type, false, true});
             n.where = gate.where;
+            n.scope = scope_;
             LocalNode& l = local[gate.name];
             l.what = n.detail;
             l.node = addNode(std::move(n), gate.where);
@@ -161,13 +164,14 @@ private:
         n.ident = prefix + d.id;
         n.where = d.where;
         n.detail = d.op;
-        for (const PortSpec& p : op->inputs) n.inputs.push_back({p.name, p.type});
+        n.scope = scope_;
+        for (const PortSpec& p : op->inputs) n.inputs.push_back({p.name, p.type, false, false, p.collective});
         resolveArgs(d, *op, rename, n);
         const bool slices = !op->args.empty() && op->args.back().kind == ArgKind::Sizes;
         if (slices)
             for (std::size_t k = 0; k < n.sizes.size(); ++k) n.outputs.push_back({"slice" + std::to_string(k + 1), PortType::Same});
         else
-            for (const PortSpec& p : op->outputs) n.outputs.push_back({p.name, p.type});
+            for (const PortSpec& p : op->outputs) n.outputs.push_back({p.name, p.type, false, false, p.collective});
         if (!n.args.empty() && op->args.front().kind == ArgKind::Axis) n.detail += " " + n.args.front();
         return addNode(std::move(n), d.where);
     }
@@ -184,7 +188,7 @@ private:
                     failAt(a.where, std::string(op.name) + " takes " + std::to_string(op.args.size()) + " argument" +
                                         (op.args.size() == 1 ? "" : "s") + ", this node gives " + std::to_string(d.args.size()));
                 k = positional;
-                if (op.args[k].kind == ArgKind::Sizes) {
+                if (op.args[k].kind == ArgKind::Sizes || op.args[k].kind == ArgKind::Keys) {
                     n.sizes.push_back(expressionText(a.value, rename));
                     continue;
                 }
@@ -197,6 +201,8 @@ private:
                 if (k == op.args.size())
                     failAt(a.where, std::string(op.name) + " has no argument '" + a.name + "' (its arguments: " + joined(known) + ")");
                 if (op.args[k].kind == ArgKind::Sizes) failAt(a.where, "split sizes are positional: split(x, 1, ~2, 1)");
+                if (op.args[k].kind == ArgKind::Keys)
+                    failAt(a.where, "order_by keys are positional: order_by(scope.size.y, scope.origin.x desc)");
             }
             const ArgSpec& spec = op.args[k];
             if (values[k]) failAt(a.where, "argument '" + std::string(spec.name) + "' of " + op.name + " is given twice");
@@ -222,6 +228,12 @@ private:
             const ArgSpec& spec = op.args[k];
             if (spec.kind == ArgKind::Sizes) {
                 if (n.sizes.empty()) failAt(d.opAt, std::string(op.name) + " needs at least one size: split(x, 1, ~2, 1)");
+                n.args.emplace_back();
+                continue;
+            }
+            if (spec.kind == ArgKind::Keys) {
+                if (n.sizes.empty())
+                    failAt(d.opAt, std::string(op.name) + " needs at least one key: order_by(scope.size.y, scope.origin.x desc)");
                 n.args.emplace_back();
                 continue;
             }
@@ -261,7 +273,12 @@ private:
             bound[a.name] = expressionText(a.value, rename);
         }
         stack_.push_back(canonical);
+        const std::uint32_t outer = scope_;
+        std::string shown = prefix + d.id;
+        for (std::size_t k; (k = shown.find("__")) != std::string::npos;) shown.replace(k, 2, "/");
+        g_.scopes.push_back({prefix + d.id, shown + " (" + d.file + ")", std::int32_t(outer), {}});
         instance(sub, prefix + d.id + "__", bound, &l);
+        scope_ = outer;
         stack_.pop_back();
         for (auto& [name, node] : l.gateIn) g_.nodes[node].includeAt = d.where, g_.nodes[node].includeName = d.id;
     }
@@ -311,6 +328,7 @@ private:
     std::deque<PcgFile> files_;
     std::vector<std::string> stack_;  ///< canonical paths of the files being read, the main file first
     std::vector<bool> gateInput_;     ///< per node: an input gate
+    std::uint32_t scope_ = 0;         ///< the execution scope of the instance being read
 };
 
 }  // namespace graph_detail

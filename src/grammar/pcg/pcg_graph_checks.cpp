@@ -25,6 +25,9 @@ void checkInputsConnected(const FlatGraph& g) {
         const FlatNode& n = g.nodes[v];
         for (std::size_t k = 0; k < n.inputs.size(); ++k) {
             if (fed[v][k] || n.mainInput) continue;
+            if (n.op && n.inputs[k].collective)
+                failAt(n.where, "collective input '" + n.inputs[k].name + "' of node '" + n.name + "' (" + n.op->name +
+                                    ") is not connected: it gathers what edges send to it, and none does");
             if (n.op)
                 failAt(n.where, "input '" + n.inputs[k].name + "' of node '" + n.name + "' (" + n.op->name +
                                     ") is not connected: an edge must lead to it");
@@ -132,6 +135,7 @@ void checkPcgGraph(FlatGraph& g) {
     checkReached(g);
     resolveTypes(g, edges);
     checkWaysOut(g);
+    checkCollectiveNodes(g);
 }
 
 }  // namespace shapevo::pcg

@@ -102,12 +102,33 @@ void writeChance(NodeWriter& w) {
     if (w.flows(0)) w.line("child " + w.childRule(0) + " prob " + w.arg(0));
 }
 
+/// `order by K1, K2 desc, ...` (each key as written, its asc / desc included).
+void writeOrderBy(NodeWriter& w) {
+    std::string keys;
+    for (const std::string& k : w.sizes()) keys += (keys.empty() ? "" : ", ") + k;
+    w.line("order by " + keys);
+}
+void writeReverse(NodeWriter& w) { w.line("reverse"); }
+void writeShuffle(NodeWriter& w) { w.line("shuffle " + w.arg(0)); }
+/// `keep first N [from K] : A | rest : B`, A and B what follows outputs first and rest.
+void writeAmountFilter(NodeWriter& w) {
+    successor(w, 0, "keep first " + w.arg(0) + (w.arg(1).empty() ? "" : " from " + w.arg(1)) + " : ", "");
+    successor(w, 1, "| rest : ", "");
+}
+/// `where (C) : A | else : B`.
+void writeFilter(NodeWriter& w) {
+    successor(w, 0, "where (" + w.arg(0) + ") : ", "");
+    successor(w, 1, "| else : ", "");
+}
+
 const PortSpec kVolumeIn{"in", PortType::Volume};
 const PortSpec kFlatIn{"in", PortType::Flat};
 const PortSpec kAnyIn{"in", PortType::Entity};
 const PortSpec kVolumeOut{"out", PortType::Volume};
 const PortSpec kSameOut{"out", PortType::Same};
 const PortSpec kFlatOut{"out", PortType::Flat};
+const PortSpec kListIn{"in", PortType::Entity, true};
+const PortSpec kListOut{"out", PortType::Same, true};
 
 const std::vector<NodeOp>& table() {
     static const std::vector<NodeOp> ops = {
@@ -148,7 +169,18 @@ const std::vector<NodeOp>& table() {
         {"if", "route to true or false by a condition", {kAnyIn}, {{"true", PortType::Same}, {"false", PortType::Same}},
          {{"condition", ArgKind::Expr, nullptr}}, writeIf, true},
         {"chance", "go on with probability p (a constant), in a gene of its own", {kAnyIn}, {{"yes", PortType::Same}},
-         {{"p", ArgKind::Expr, nullptr}}, writeChance, true},
+         {{"p", ArgKind::Expr, nullptr}}, writeChance, true, Collect::None, true},
+        {"order_by", "sort the list by keys (EXPR or EXPR desc), stable", {kListIn}, {kListOut},
+         {{"keys", ArgKind::Keys, nullptr}}, writeOrderBy, false, Collect::Step},
+        {"reverse", "reverse the list", {kListIn}, {kListOut}, {}, writeReverse, false, Collect::Step},
+        {"shuffle", "a permutation of the list drawn from u (in [0, 1])", {kListIn}, {kListOut},
+         {{"u", ArgKind::Expr, nullptr}}, writeShuffle, false, Collect::Step},
+        {"amount_filter", "entities from .. from + count - 1 go to first, the others to rest", {kListIn},
+         {{"first", PortType::Same, true}, {"rest", PortType::Same, true}},
+         {{"count", ArgKind::Expr, nullptr}, {"from", ArgKind::Expr, ""}}, writeAmountFilter, false, Collect::Route},
+        {"filter", "entities for which the condition holds go to true, the others to false", {kListIn},
+         {{"true", PortType::Same, true}, {"false", PortType::Same, true}},
+         {{"condition", ArgKind::Expr, nullptr}}, writeFilter, false, Collect::Route},
     };
     return ops;
 }

@@ -1,8 +1,9 @@
 // The `.pcg` node table: one entry per node operation, with its input and output ports (typed
 // volume / flat / entity), its arguments and how it writes shapevo-language text
-// (grammars/pcg/README.md lists them). Every port is a single port today; PortSpec::collective
-// is where collective ports (PCGR §3.2, a list per round) slot in once the shapevo language can
-// send and gather.
+// (docs/pcg-format.md lists them). Most ports are single ports (one entity per round); the
+// collective nodes (order_by, reverse, shuffle, amount_filter, filter) have collective ports
+// (PCGR §3.2: the whole list at once): an edge into one is a `send`, a chain of them one
+// `gather` (pcg_collective.cpp) whose steps their writers write and whose routes the last one's.
 #pragma once
 #include <functional>
 #include <span>
@@ -22,7 +23,7 @@ const char* portTypeName(PortType t);
 struct PortSpec {
     const char* name;
     PortType type;
-    bool collective = false;  ///< not used yet: no collective ports before `send`/`gather`
+    bool collective = false;  ///< a list port: the whole list at once (drawn square)
 };
 
 enum class ArgKind {
@@ -30,6 +31,14 @@ enum class ArgKind {
     Axis,   ///< x, y or z
     Word,   ///< one of ArgSpec::words
     Sizes,  ///< the rest of the arguments: split sizes (EXPR, 'EXPR, ~EXPR), one output each
+    Keys,   ///< the rest of the arguments: sort keys (EXPR, EXPR desc), no outputs of their own
+};
+
+/// What a node does with lists: nothing (single ports), a step of a gather, or its route.
+enum class Collect {
+    None,   ///< single ports: each entity runs the node on its own
+    Step,   ///< a collective input and output `out`: a step (order by, reverse, shuffle)
+    Route,  ///< a collective input and routed outputs: the gather's last word (keep first, where)
 };
 
 struct ArgSpec {
@@ -45,7 +54,7 @@ public:
     virtual ~NodeWriter() = default;
     /// Argument `k` of the op's ArgSpec list as text ("" when optional and left out).
     virtual const std::string& arg(std::size_t k) const = 0;
-    /// Split sizes (ArgKind::Sizes), one per output.
+    /// Split sizes (ArgKind::Sizes), one per output; sort keys (ArgKind::Keys).
     virtual const std::vector<std::string>& sizes() const = 0;
     /// One line of shapevo text at the node's place.
     virtual void line(const std::string& text) = 0;
@@ -68,6 +77,8 @@ struct NodeOp {
     std::vector<ArgSpec> args;
     void (*write)(NodeWriter&);
     bool wayOut = false;              ///< may stop what passes (an `if`, a `chance`): a cycle through it may end
+    Collect collect = Collect::None;  ///< Step / Route: `write` writes the gather's step line / its route
+    bool newGene = false;             ///< what follows it runs in a gene of its own (a `chance`)
 };
 
 /// Every node operation, in the README's order.

@@ -14,7 +14,12 @@
 //    its own, expressed with probability p (the stochastic way out of a cycle, and what ends the
 //    genome: an `if` ends the geometry, but a recursion that only an `if` ends still has genes);
 //  - an unconnected output is a leaf: nothing follows (what the nodes on the way emitted stays);
-//    a blocked output is `nil` (or left out of a comp).
+//    a blocked output is `nil` (or left out of a comp);
+//  - an edge into a collective node (a chain's first) is `send pcg_l_ID`; each chain of collective
+//    nodes (pcg_collective.cpp) is a `gather pcg_l_ID { STEPS ROUTE }` at the end of its execution
+//    scope's rule: the graph's rule, or for an included graph with collective nodes a rule
+//    `pcg_s_GATE(values)` named as a statement where an entity reaches its input gate, so it runs
+//    to completion (its gathers included) once per entity. A chain ending in a step routes `each`.
 #include <algorithm>
 #include <deque>
 #include <filesystem>
@@ -56,12 +61,14 @@ public:
             flowOut(v, 0);
             if (gates.size() > 1) line("]", g_.nodes[v].where);
         }
+        writeGathers(0);
         line("}", g_.nameAt);
         while (!pending_.empty() || !geneQueue_.empty()) {
             if (!pending_.empty()) {
-                const auto [v, child] = pending_.front();
+                const auto [v, kind] = pending_.front();
                 pending_.pop_front();
-                writeRule(v, child);
+                if (kind == kScopeRule) writeScopeRule(v);
+                else writeRule(v, kind == kChildRule);
             } else {
                 const auto [v, port] = geneQueue_.front();
                 geneQueue_.pop_front();
@@ -128,7 +135,9 @@ private:
     void into(std::size_t i) {
         const FlatEdge& e = g_.edges[i];
         const FlatNode& n = g_.nodes[e.to];
-        if (e.cyclic) {
+        if (n.chain >= 0) {  // a collective input: the list's first node (the checks allow no other)
+            line("send " + g_.chains[std::size_t(n.chain)].list, e.where);
+        } else if (e.cyclic) {
             line("child pcg_c_" + n.ident + " optional", e.where);
             request(e.to, true);
         } else if (incoming_[e.to] > 1) {
@@ -142,6 +151,11 @@ private:
     void node(std::uint32_t v) {
         const FlatNode& n = g_.nodes[v];
         if (!n.op) {
+            if (!n.includeName.empty() && !g_.scopes[n.scope].chains.empty()) {
+                line("pcg_s_" + n.ident + valueList(), n.where);  // a run of the included graph, to completion
+                request(v, kScopeRule);
+                return;
+            }
             flowOut(v, 0);  // a gate passes its entity on
             return;
         }
@@ -149,11 +163,47 @@ private:
         n.op->write(w);
     }
 
-    void request(std::uint32_t v, bool child) {
-        const std::uint8_t bit = child ? 2 : 1;
-        if (requested_[v] & bit) return;
-        requested_[v] |= bit;
-        pending_.push_back({v, child});
+    static constexpr std::uint8_t kInlineRule = 1, kChildRule = 2, kScopeRule = 4;
+
+    void request(std::uint32_t v, bool child) { request(v, child ? kChildRule : kInlineRule); }
+    void request(std::uint32_t v, std::uint8_t kind) {
+        if (requested_[v] & kind) return;
+        requested_[v] |= kind;
+        pending_.push_back({v, kind});
+    }
+
+    /// The rule running an included graph's instance from its input gate `v`, its gathers last.
+    void writeScopeRule(std::uint32_t v) {
+        const FlatNode& n = g_.nodes[v];
+        cur_ = &buffers_.emplace_back();
+        line("rule pcg_s_" + n.ident + valueList() + " {", n.where);
+        flowOut(v, 0);
+        writeGathers(n.scope);
+        line("}", n.where);
+    }
+
+    /// Every gather of execution scope `scope`, in the order the checks chose.
+    void writeGathers(std::uint32_t scope) {
+        for (std::uint32_t c : g_.scopes[scope].chains) {
+            const ListChain& chain = g_.chains[c];
+            const FlatNode& first = g_.nodes[chain.nodes.front()];
+            line("gather " + chain.list + " {", first.where);
+            for (std::uint32_t v : chain.nodes) {
+                Writer w(*this, v);
+                g_.nodes[v].op->write(w);  // a step's line, or a route
+            }
+            const std::uint32_t last = chain.nodes.back();
+            if (g_.nodes[last].op->collect == Collect::Step) {
+                if (!flows(last, 0)) {
+                    line("each : nil", g_.nodes[last].where);
+                } else {
+                    line("each : {", g_.nodes[last].where);
+                    flowOut(last, 0);
+                    line("}", g_.nodes[last].where);
+                }
+            }
+            line("}", first.where);
+        }
     }
 
     /// A rule of its own gene running what follows output `port` of node `v` (a chance node's).
@@ -204,8 +254,8 @@ private:
 
     const FlatGraph& g_;
     std::vector<std::uint32_t> incoming_;
-    std::vector<std::uint8_t> requested_;  ///< per node: 1 its inline rule, 2 its child rule
-    std::deque<std::pair<std::uint32_t, bool>> pending_;
+    std::vector<std::uint8_t> requested_;  ///< per node: kInlineRule, kChildRule, kScopeRule bits
+    std::deque<std::pair<std::uint32_t, std::uint8_t>> pending_;  ///< a node and the rule kind to write for it
     std::set<std::pair<std::uint32_t, std::size_t>> geneRules_;
     std::deque<std::pair<std::uint32_t, std::size_t>> geneQueue_;
     std::deque<Lines> buffers_;
@@ -230,9 +280,10 @@ GraphDiagram pcgDiagram(const std::string& text, const std::string& path) {
         node.name = n.name;
         node.detail = n.detail;
         node.start = n.mainInput;
+        auto kind = [](const FlatPort& p) { return p.collective ? PortKind::Collective : PortKind::Single; };
         for (const FlatPort& p : n.inputs)
-            if (!n.mainInput) node.ports.push_back({p.name, true, PortKind::Single, false, p.gate});
-        for (const FlatPort& p : n.outputs) node.ports.push_back({p.name, false, PortKind::Single, p.blocked, p.gate});
+            if (!n.mainInput) node.ports.push_back({p.name, true, kind(p), false, p.gate});
+        for (const FlatPort& p : n.outputs) node.ports.push_back({p.name, false, kind(p), p.blocked, p.gate});
         d.nodes.push_back(std::move(node));
     }
     for (const FlatEdge& e : g.edges) {
