@@ -30,6 +30,7 @@ inline constexpr double kMaxIntBound = 16777216.0;  // 2^24
 inline constexpr int kMaxChildPositions = 64;
 inline constexpr int kMaxInlineDepth = 32;
 inline constexpr std::size_t kMaxStatements = 1u << 20;
+inline constexpr int kMaxStatementNesting = 256;
 
 std::string show(double v);
 int axisIndex(const std::string& s);
@@ -182,6 +183,7 @@ public:
     std::vector<int> inlineStack_;             ///< headers being compiled inline (cycle check)
     std::uint16_t currentRule_ = 0;            ///< the rule whose body is being compiled (Grammar::inlineCalls)
     std::optional<SourceLocation> terminalAt_;  ///< inside `terminal { }`: where it opened
+    int statementDepth_ = 0;                     ///< statements being compiled inside each other (parseStatement)
     int framedReads_ = 0;                        ///< exprs_.scopeFrameReads() at the last takeScopeFrameReads()
 };
 

@@ -178,6 +178,15 @@ struct PrimitiveArguments {
 };
 
 void Parser::parseStatement(Rule& rule, BodyScope& scope) {
+    // Blocks, `[ ]`, successors and inline calls nest statements in statements: a limit keeps
+    // the parser's recursion off the end of the stack (a located error instead of a crash).
+    struct Nesting {
+        int& depth;
+        ~Nesting() { --depth; }
+    } nesting{++statementDepth_};
+    if (statementDepth_ > kMaxStatementNesting)
+        tokens_.fail(tokens_.peek().where, "statements are nested more than " + std::to_string(kMaxStatementNesting) +
+                                               " deep (blocks, [ ], successors and inline calls together)");
     if (tokens_.peek().is('[')) return parseCopy(rule, scope);
     if (tokens_.peek().isWord("gather")) return parseGather(rule, scope);
     const Token word = tokens_.take();

@@ -21,6 +21,13 @@ using malformed_grammar::body;
 const std::vector<Malformed>& cases() {
     static const std::vector<Malformed> all = {
         // --- lexical ---------------------------------------------------------------------
+        {"StatementsNestedTooDeep", body("  " + std::string(300, '[') + " box " + std::string(300, ']')), "bad.grammar:3:259",
+         "statements are nested more than 256 deep"},
+        {"IfBlocksNestedTooDeep", [] {
+             std::string s = "  ";
+             for (int k = 0; k < 300; ++k) s += "if (1) { ";
+             return body(s + "box" + std::string(300, '}'));
+         }(), "bad.grammar:3:2307", "statements are nested more than 256 deep"},
         {"UnexpectedCharacter", "start A\nrule A { box @ }\n", "bad.grammar:2:14", "unexpected character '@'"},
         {"UnexpectedControlByte", "start A\nrule A {\x01}\n", "bad.grammar:2:9", "unexpected character 'byte 1'"},
         {"UnclosedString", body("  child \"oops"), "bad.grammar:3:9", "string is not closed before the end of the line"},
