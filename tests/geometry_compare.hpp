@@ -1,5 +1,6 @@
 // identical(a, b): two derived geometries hold the same primitives and looks bit for bit (for the
-// derive tests: a memo, a scratch reused or a second derivation must change nothing).
+// derive tests: a memo, a scratch reused or a second derivation must change nothing); and
+// deriveComplete(g, c), a whole derivation that must be Complete.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -11,6 +12,14 @@ namespace shapevo::test {
 
 /// Bit-identical primitives and looks, field by field (the struct has padding bytes; the kind's
 /// parameter block is compared as bytes).
+/// `c` derived whole with a fresh scratch; the derivation must be Complete.
+inline Geometry deriveComplete(const Grammar& g, const Chromosome& c) {
+    Geometry geo;
+    DeriveScratch scratch;
+    EXPECT_EQ(derive(g, c, geo, scratch), DeriveStatus::Complete);
+    return geo;
+}
+
 inline ::testing::AssertionResult identical(const Geometry& a, const Geometry& b) {
     if (a.primitives.size() != b.primitives.size())
         return ::testing::AssertionFailure() << a.primitives.size() << " primitives against " << b.primitives.size();

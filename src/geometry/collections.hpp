@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/lists/entity_list.hpp"
+#include "geometry/lists/grouping.hpp"
 #include "geometry/lists/list_workspace.hpp"
 #include "geometry/lists/ordering.hpp"
 
@@ -49,14 +50,21 @@ struct Collections {
         return nullptr;
     }
 
-    // Work space of the gathers' steps.
+    // Work space of the gathers' steps (geometry/gather.cpp).
     lists::EntityList spare;
     lists::ListWorkspace workspace;
+    lists::Grouping grouping;
     std::vector<double> keys;
     std::vector<lists::SortDirection> directions;
-    std::vector<std::uint32_t> order, kept, rest;
+    std::vector<std::uint32_t> order, part, kept, rest;
+    std::vector<std::uint32_t> starts;                 ///< the list's groups: group k is [starts[k], starts[k + 1])
+    std::vector<std::uint32_t> keptStarts, restStarts;  ///< a route's kept / rest positions, per group
+    std::vector<std::uint32_t> frameOf, spareFrameOf;   ///< per entity, its let values in `localFrames`
+    std::vector<float> localFrames;                     ///< let values, Rule::frameFloats per frame
+    std::vector<std::uint32_t> storedFrame;             ///< per local frame, where the route stored it (DeriveScratch::frames)
     std::vector<double> values;
-    std::vector<glm::dvec3> points;
+    std::vector<glm::dvec3> points, centroids;
+    std::vector<std::uint32_t> clusterOf;
 };
 
 }  // namespace shapevo

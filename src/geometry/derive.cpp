@@ -277,32 +277,15 @@ struct Derivation {
 /// piece's continuation) and its piece mark.
 [[gnu::always_inline]] inline void loadParams(const Derivation& d, const Rule& r, const DeriveScratch::Task& task,
                                               float* params) {
-    if (r.paramFloats > 0)
-        std::memcpy(params, &d.c.words[Chromosome::paramWord(task.gene, r)], r.paramFloats * sizeof(float));
-    if (task.frame != DeriveScratch::kNoFrame) [[unlikely]]
-        std::memcpy(params + kFrameBase, d.scratch.frames.data() + task.frame, r.frameFloats * sizeof(float));
+    loadGeneAndFrame(r, d.c, task.gene, d.scratch.frames, task.frame, params);
     if (d.g.marksPieces) [[unlikely]]
         loadPieceMark(d.g, task.mark, params);
 }
 
-/// A ScopeFrame statement: the scope's world origin and axes into the parameter block, where
-/// scope.origin and scope.axis read them.
-[[gnu::noinline]] void writeScopeFrame(const Scope& s, float* params) {
-    std::memcpy(params + kScopeOriginSlot, &s.origin[0], 3 * sizeof(float));
-    std::memcpy(params + kScopeAxisSlot, &s.axes[0][0], 9 * sizeof(float));  // column a: axis a
-}
-
-/// Append the `count` let values of `params` to `frames`; returns where they start. Out of line:
-/// only rules with lets get here, and the insert inlined would crowd the loop's own inlining.
-[[gnu::noinline]] std::uint32_t storeFrame(std::vector<float>& frames, const float* params, std::uint32_t count) {
-    const auto at = std::uint32_t(frames.size());
-    frames.insert(frames.end(), params + kFrameBase, params + kFrameBase + count);
-    return at;
-}
 /// The let values a task has now, for tasks it pushes that go on in this gene.
 [[gnu::always_inline]] inline std::uint32_t snapshot(const Rule& r, std::vector<float>& frames, const float* params) {
     if (r.frameFloats == 0) return DeriveScratch::kNoFrame;
-    return storeFrame(frames, params, r.frameFloats);
+    return storeFrame(frames, params + kFrameBase, r.frameFloats);
 }
 
 /// The three expressions of a Scale / Size / Translate statement.

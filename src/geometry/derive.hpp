@@ -36,6 +36,31 @@ struct PieceMark {
     }
 }
 
+/// The gene's stored parameters (`gene`: its word in `c`, of rule `r`) and, unless `frame` is
+/// kNoFrame (UINT32_MAX), the let values stored at `frames[frame]` into the parameter block.
+[[gnu::always_inline]] inline void loadGeneAndFrame(const Rule& r, const Chromosome& c, std::uint32_t gene,
+                                                    const std::vector<float>& frames, std::uint32_t frame, float* params) {
+    if (r.paramFloats > 0)
+        std::memcpy(params, &c.words[Chromosome::paramWord(gene, r)], r.paramFloats * sizeof(float));
+    if (frame != UINT32_MAX) [[unlikely]]
+        std::memcpy(params + kFrameBase, frames.data() + frame, r.frameFloats * sizeof(float));
+}
+
+/// A scope's world origin and axes into the parameter block, where scope.origin and scope.axis
+/// read them. Out of line: only grammars that read them get here.
+[[gnu::noinline]] inline void writeScopeFrame(const Scope& s, float* params) {
+    std::memcpy(params + kScopeOriginSlot, &s.origin[0], 3 * sizeof(float));
+    std::memcpy(params + kScopeAxisSlot, &s.axes[0][0], 9 * sizeof(float));  // column a: axis a
+}
+
+/// Appends `count` let values to `frames`; returns where they start. Out of line: only rules
+/// with lets get here, and the insert inlined would crowd derive's loop.
+[[gnu::noinline]] inline std::uint32_t storeFrame(std::vector<float>& frames, const float* values, std::uint32_t count) {
+    const auto at = std::uint32_t(frames.size());
+    frames.insert(frames.end(), values, values + count);
+    return at;
+}
+
 /// Where a gene's subtree starts being derived: its parent's scope, the look in force there, the
 /// piece key and place (what a SubtreeMemo::Start holds besides the content). What derive makes
 /// of the subtree depends on nothing else (subtree_memo.hpp).

@@ -3,9 +3,12 @@
 // successor on that entity's scope. Internal to derive (geometry/derive.cpp).
 //
 // Promises: deterministic (the list operations of geometry/lists/ are; values are evaluated per
-// entity in list order); an entity routed to successor s is the k-th of n entities routed there,
-// and its task reads piece.index k and piece.count n and, for `per piece` parameters, the piece
-// key of the k-th piece of kind s below the invocation's; the first routed entity runs first.
+// entity in list order); groups (group by, cluster, unify) are runs of the list, each entity
+// with its own copy of the let values (its group's); an entity routed to successor s (0 or 1)
+// of gather i is the k-th of the n entities of its group routed there, and its task reads
+// piece.index k and piece.count n and, for `per piece` parameters, the piece key of the j-th
+// piece of kind 2i + s below the invocation's (j: its place among all routed there); the first
+// routed entity runs first. Nothing allocates once the work space (Collections) has grown.
 #pragma once
 #include "geometry/derive.hpp"
 

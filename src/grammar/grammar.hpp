@@ -166,20 +166,38 @@ enum class ListOpKind : std::uint8_t {
     Reverse,    ///< reverse
     Shuffle,    ///< shuffle U: a permutation drawn from expr[0] (a value in [0, 1]) and the invocation's piece key
     Aggregate,  ///< let NAME = min|max|avg|sum(E): detail = AggregateKind, dims 1 or 3, into frame floats [slot, slot + dims)
+    GroupBy,    ///< group by E, ...: expr[0] per entity; `keys` GroupBy ops in a row form one grouping
+    Cluster,    ///< cluster K by E: expr[0] K, expr[1..1 + dims) the point per entity (dims 1 or 3)
+    Unify,      ///< unify [within T]: expr[0] the tolerance
+    Merge,      ///< merge: each group (or the whole list) becomes one entity
+    Ungroup,    ///< ungroup
     KeepFirst,  ///< route: keep first N [from K] : A | rest : B (expr[0] N, expr[1] K)
     Each,       ///< route: each : A
     Where,      ///< route: where (E) : A | else : B (expr[0] per entity)
 };
-enum class AggregateKind : std::uint8_t { Min, Max, Avg, Sum };
+enum class AggregateKind : std::uint8_t { Min, Max, Avg, Sum, GroupIndex };  ///< GroupIndex: `let NAME = group.index`
 struct ListOp {
     ListOpKind kind = ListOpKind::Reverse;
     std::uint8_t detail = 0;     ///< OrderBy: 1 descending; Aggregate: AggregateKind
-    std::uint8_t dims = 1;       ///< Aggregate: floats of its value
-    std::uint8_t keys = 1;       ///< OrderBy (the first of a sort): how many OrderBy ops make its keys
+    std::uint8_t dims = 1;       ///< Aggregate: floats of its value; Cluster: of its point
+    std::uint8_t keys = 1;       ///< OrderBy, GroupBy (the first of a run): how many such ops make its keys
     std::uint16_t slot = 0;      ///< Aggregate: its frame index
-    ExprRef expr[3];
+    ExprRef expr[4];
     std::uint32_t begin[2] = {}, end[2] = {};  ///< routes: successor 0 (first / each / where) and 1 (rest / else)
 };
+/// How many of a ListOp's expressions it uses: expr[0, listOpExpressions(op)).
+inline int listOpExpressions(const ListOp& op) {
+    switch (op.kind) {
+    case ListOpKind::Aggregate: return op.detail == std::uint8_t(AggregateKind::GroupIndex) ? 0 : op.dims;
+    case ListOpKind::Cluster: return 1 + op.dims;
+    case ListOpKind::KeepFirst: return 2;
+    case ListOpKind::Reverse:
+    case ListOpKind::Each:
+    case ListOpKind::Merge:
+    case ListOpKind::Ungroup: return 0;
+    default: return 1;
+    }
+}
 /// A gather block: the list it gathers and its steps Grammar::listOps [firstOp, firstOp + ops)
 /// (the last one a route).
 struct Gather {
@@ -189,6 +207,8 @@ struct Gather {
 };
 /// Most entities one collection holds: beyond it the derivation stops as Truncated.
 inline constexpr std::uint32_t kMaxListEntities = 65535;
+/// Most assignment rounds of `cluster` (k-means) before it stops where it is.
+inline constexpr std::uint32_t kMaxClusterRounds = 100;
 
 /// Parameter-block index where a rule's frame values (`let`, inline calls' arguments) start: they
 /// follow the (at most 256) stored parameter floats in derive's work space, never in genes.

@@ -11,8 +11,10 @@
 namespace shapevo::grammar_detail {
 
 namespace {
-constexpr const char* kStepWords = "a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E)) or a "
-                                   "route (each, keep first, where)";
+constexpr const char* kStepWords = "a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E), group by, "
+                                   "cluster, unify, merge, ungroup) or a route (each, keep first, where)";
+/// `unify` without `within`: edges closer than this (world units) touch.
+constexpr float kDefaultUnifyTolerance = 0.001f;
 /// Where a gather's rule body ends: true at its top-level `}` (or the end of the file).
 bool endsBody(const Token& t, int depth) { return t.kind == TokenKind::End || (depth == 0 && (t.is('}') || t.is(']'))); }
 }  // namespace
@@ -148,8 +150,42 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
             g_.listOps[first].keys = std::uint8_t(g_.listOps.size() - first);
             continue;
         }
+        if (step.isWord("group")) {
+            if (!tokens_.peek().isWord("by")) tokens_.expected("'by' after 'group' (group by E, ...)");
+            tokens_.take();
+            const std::size_t first = g_.listOps.size();
+            do {
+                if (g_.listOps.size() > first) tokens_.take();  // ,
+                if (g_.listOps.size() - first >= 255) tokens_.fail(step.where, "'group by' takes at most 255 keys");
+                ListOp key;
+                key.kind = ListOpKind::GroupBy;
+                compileScalar(inner, key.expr[0]);
+                g_.listOps.push_back(key);
+            } while (tokens_.peek().is(','));
+            g_.listOps[first].keys = std::uint8_t(g_.listOps.size() - first);
+            continue;
+        }
         if (step.isWord("reverse")) {
             op.kind = ListOpKind::Reverse;
+        } else if (step.isWord("cluster")) {
+            op.kind = ListOpKind::Cluster;
+            compileScalar(inner, op.expr[0]);
+            if (!tokens_.peek().isWord("by")) tokens_.expected("'by' after 'cluster K' (cluster K by POINT, e.g. scope.origin)");
+            tokens_.take();
+            compileVector(inner, op.expr + 1);
+            op.dims = std::uint8_t(exprs_.lastDims());
+        } else if (step.isWord("unify")) {
+            op.kind = ListOpKind::Unify;
+            if (tokens_.peek().isWord("within")) {
+                tokens_.take();
+                compileScalar(inner, op.expr[0]);
+            } else {
+                op.expr[0] = constantExpression(kDefaultUnifyTolerance);
+            }
+        } else if (step.isWord("merge")) {
+            op.kind = ListOpKind::Merge;
+        } else if (step.isWord("ungroup")) {
+            op.kind = ListOpKind::Ungroup;
         } else if (step.isWord("shuffle")) {
             op.kind = ListOpKind::Shuffle;
             compileScalar(inner, op.expr[0]);
@@ -162,13 +198,23 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
             const char* kinds[] = {"min", "max", "avg", "sum"};
             int k = 0;
             while (k < 4 && !kind.isWord(kinds[k])) ++k;
-            if (k == 4) tokens_.fail(kind.where, "expected an aggregate min, max, avg or sum after 'let " + let + " =' in a gather, found " + kind.describe());
-            tokens_.expect('(', "after '" + kind.text + "' (an aggregate of one expression per entity)");
             op.kind = ListOpKind::Aggregate;
-            op.detail = std::uint8_t(k);
-            compileVector(inner, op.expr);
-            op.dims = std::uint8_t(exprs_.lastDims());
-            tokens_.expect(')', "to close '" + kind.text + "('");
+            if (kind.isWord("group")) {  // let NAME = group.index
+                tokens_.expect('.', "after 'group' (let " + let + " = group.index: the number of the entity's group)");
+                if (!tokens_.peek().isWord("index")) tokens_.expected("'index' after 'group.'");
+                tokens_.take();
+                op.detail = std::uint8_t(AggregateKind::GroupIndex);
+                op.dims = 1;
+            } else {
+                if (k == 4)
+                    tokens_.fail(kind.where, "expected an aggregate min, max, avg or sum, or group.index, after 'let " + let +
+                                                 " =' in a gather, found " + kind.describe());
+                tokens_.expect('(', "after '" + kind.text + "' (an aggregate of one expression per entity)");
+                op.detail = std::uint8_t(k);
+                compileVector(inner, op.expr);
+                op.dims = std::uint8_t(exprs_.lastDims());
+                tokens_.expect(')', "to close '" + kind.text + "('");
+            }
             op.slot = allocateFrame(rule, op.dims, nameAt);
             Binding b;
             b.name = let;
@@ -216,12 +262,7 @@ void Parser::parseRoute(Rule& rule, BodyScope& scope, const Token& word, ListOp&
         op.kind = ListOpKind::Where;
         second = "else";
         tokens_.expect('(', "after 'where' (the condition goes in parentheses)");
-        const SourceLocation at = tokens_.peek().where;
-        ExprRef e[3];
-        const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
-        exprs_.compile(ctx, 3, g_.code, e, g_.maxStack);
-        if (exprs_.lastDims() != 1) tokens_.fail(at, "a condition must be a scalar, but this expression is a 3-vector");
-        op.expr[0] = e[0];
+        compileCondition(scope, op.expr[0]);
         tokens_.expect(')', "to close the condition");
     }
     takeScopeFrameReads();

@@ -143,6 +143,8 @@ public:
     ExprRef constantExpression(float v);
     void compileScalar(const BodyScope& scope, ExprRef& out);
     void compileVector(const BodyScope& scope, ExprRef out[3]);
+    /// A scalar expression that decides (if, where): a 3-vector is a located error.
+    void compileCondition(const BodyScope& scope, ExprRef& out);
     std::uint16_t allocateFrame(Rule& rule, int floats, const SourceLocation& at);
     /// A frame value `name` of `dims` floats computed by expr[0..dims) at this point of the rule
     /// (a Let statement appended to it): `let`, an inline call's run-time argument, the draw of a

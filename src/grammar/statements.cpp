@@ -45,6 +45,17 @@ void Parser::compileScalar(const BodyScope& scope, ExprRef& out) {
     out = e[0];
 }
 
+void Parser::compileCondition(const BodyScope& scope, ExprRef& out) {
+    const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
+    ExprRef e[3];
+    const SourceLocation at = tokens_.peek().where;
+    exprs_.compile(ctx, 3, g_.code, e, g_.maxStack);
+    if (exprs_.lastDims() != 1)
+        tokens_.fail(at, "a condition must be a scalar (a comparison such as scope.size.x > scope.size.z), "
+                         "but this expression is a 3-vector");
+    out = e[0];
+}
+
 void Parser::compileVector(const BodyScope& scope, ExprRef out[3]) {
     const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
     exprs_.compile(ctx, 3, g_.code, out, g_.maxStack);
@@ -293,14 +304,7 @@ void Parser::parseIf(Rule& rule, BodyScope& scope, const char* keyword) {
         tokens_.expect('(', std::string("after '") + keyword + "' (the condition goes in parentheses)");
         Statement cond{};
         cond.kind = StatementKind::If;
-        const ExpressionContext ctx{&scope.params, scope.attrs, &scope.bindings, true, nullptr};
-        ExprRef e[3];
-        const SourceLocation condAt = tokens_.peek().where;
-        exprs_.compile(ctx, 3, g_.code, e, g_.maxStack);
-        if (exprs_.lastDims() != 1)
-            tokens_.fail(condAt, "a condition must be a scalar (a comparison such as scope.size.x > scope.size.z), "
-                                 "but this expression is a 3-vector");
-        cond.expr[0] = e[0];
+        compileCondition(scope, cond.expr[0]);
         tokens_.expect(')', "to close the condition");
         tokens_.expect('{', std::string("to open the block of '") + keyword + "'");
         frameScopeIfRead(rule);

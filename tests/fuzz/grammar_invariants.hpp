@@ -161,12 +161,11 @@ inline void checkAccepted(const Grammar& g) {
                     const ListOp& op = g.listOps[gather.firstOp + k];
                     const bool route = op.kind == ListOpKind::KeepFirst || op.kind == ListOpKind::Each || op.kind == ListOpKind::Where;
                     FUZZ_CHECK(route == (k + 1 == gather.ops));
-                    const int exprs = op.kind == ListOpKind::Aggregate ? op.dims : op.kind == ListOpKind::KeepFirst ? 2
-                                      : op.kind == ListOpKind::Reverse || op.kind == ListOpKind::Each ? 0 : 1;
-                    for (int e = 0; e < exprs; ++e) checkExpression(op.expr[e]);
-                    if (op.kind == ListOpKind::OrderBy) FUZZ_CHECK(op.keys >= 1);
+                    for (int e = 0; e < listOpExpressions(op); ++e) checkExpression(op.expr[e]);
+                    if (op.kind == ListOpKind::OrderBy || op.kind == ListOpKind::GroupBy) FUZZ_CHECK(op.keys >= 1);
+                    if (op.kind == ListOpKind::Cluster) FUZZ_CHECK(op.dims == 1 || op.dims == 3);
                     if (op.kind == ListOpKind::Aggregate)
-                        FUZZ_CHECK((op.dims == 1 || op.dims == 3) && op.detail < 4 && op.slot >= kFrameBase &&
+                        FUZZ_CHECK((op.dims == 1 || op.dims == 3) && op.detail <= std::uint8_t(AggregateKind::GroupIndex) && op.slot >= kFrameBase &&
                                    op.slot + op.dims <= kFrameBase + rule.frameFloats);
                     if (route)
                         for (int r = 0; r < 2; ++r) FUZZ_CHECK(op.begin[r] > index && op.begin[r] <= op.end[r] && op.end[r] <= st.end);

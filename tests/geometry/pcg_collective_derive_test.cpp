@@ -23,12 +23,7 @@ namespace pcg_collective_derive_test_helpers {
 
 using test::sourcePath;
 
-Geometry deriveWith(const Grammar& g, const Chromosome& c) {
-    Geometry geo;
-    DeriveScratch scratch;
-    EXPECT_EQ(derive(g, c, geo, scratch), DeriveStatus::Complete);
-    return geo;
-}
+using test::deriveComplete;
 
 /// door.pcg's colour: every door slab.
 std::vector<Primitive> doors(const Geometry& geo) {
@@ -115,7 +110,7 @@ TEST(PcgCollective, TheFig9StreetGraphDerivesBitIdenticallyToTheHandWrittenStree
         Chromosome c;
         Rng rng(seed);
         ASSERT_TRUE(growUncontrolled(graph, c, rng, 100));
-        const Geometry a = deriveWith(graph, c), b = deriveWith(hand, c);
+        const Geometry a = deriveComplete(graph, c), b = deriveComplete(hand, c);
         EXPECT_EQ(doors(a).size(), 4u) << "seed " << seed;
         EXPECT_TRUE(test::identical(a, b)) << "seed " << seed;
     }
@@ -129,7 +124,7 @@ TEST(PcgCollective, CollectiveNodesInTheHouseGraphGiveOneDoorPerHouseAndInTheStr
         Chromosome c;
         Rng rng(seed);
         ASSERT_TRUE(growUncontrolled(perHouse, c, rng, 100));
-        const std::vector<Primitive> each = doors(deriveWith(perHouse, c)), one = doors(deriveWith(inStreet, c));
+        const std::vector<Primitive> each = doors(deriveComplete(perHouse, c)), one = doors(deriveComplete(inStreet, c));
         std::set<int> lots;
         for (const Primitive& d : each) lots.insert(lotOf(d.centre.x));
         EXPECT_EQ(lots.size(), 4u) << "one door on each house, seed " << seed;
@@ -169,7 +164,7 @@ TEST(PcgCollective, EveryCollectiveNodeAChainAndARouteIntoAnotherListDeriveTheir
         Chromosome c;
         Rng rng(seed);
         ASSERT_TRUE(growUncontrolled(graph, c, rng, 10));
-        const Geometry a = deriveWith(graph, c), b = deriveWith(hand, c);
+        const Geometry a = deriveComplete(graph, c), b = deriveComplete(hand, c);
         EXPECT_TRUE(test::identical(a, b)) << "seed " << seed;
         std::size_t red = 0, spheres = 0, cones = 0;
         for (std::size_t i = 0; i < a.primitives.size(); ++i) {
@@ -197,7 +192,7 @@ TEST(PcgCollective, AChanceBeforeAnIncludedGraphWithCollectiveNodesRunsItsGather
         Chromosome c;
         Rng rng(seed);
         ASSERT_TRUE(growUncontrolled(g, c, rng, 10));
-        const std::size_t boxes = deriveWith(g, c).primitives.size();
+        const std::size_t boxes = deriveComplete(g, c).primitives.size();
         EXPECT_TRUE(boxes == 0 || boxes == 3) << seed;
         withRow += boxes == 3;
     }

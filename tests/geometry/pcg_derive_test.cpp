@@ -24,12 +24,7 @@ namespace pcg_derive_test_helpers {
 
 using test::sourcePath;
 
-Geometry deriveWith(const Grammar& g, const Chromosome& c) {
-    Geometry geo;
-    DeriveScratch scratch;
-    EXPECT_EQ(derive(g, c, geo, scratch), DeriveStatus::Complete);
-    return geo;
-}
+using test::deriveComplete;
 
 std::size_t countKind(const Geometry& geo, PrimitiveKind kind) {
     std::size_t n = 0;
@@ -49,7 +44,7 @@ TEST(PcgDerive, TheWindowGraphDerivesBitIdenticallyToTheHandWrittenWindow) {
         Chromosome c;
         Rng rng(seed);
         ASSERT_TRUE(growUncontrolled(graph, c, rng, 100));
-        const Geometry a = deriveWith(graph, c), b = deriveWith(hand, c);
+        const Geometry a = deriveComplete(graph, c), b = deriveComplete(hand, c);
         EXPECT_EQ(a.primitives.size(), 6u);  // four frame bars, the pane, the sill
         EXPECT_TRUE(test::identical(a, b)) << "seed " << seed;
     }
@@ -70,7 +65,7 @@ TEST(PcgDerive, TheCyclicTreeGraphTurnsItsCyclicEdgeIntoAChildSlotAndRecurses) {
         Rng rng(seed);
         const SampleOutcome o = sampleDerivation(g, c, rng, 1, 2000, 50);
         ASSERT_TRUE(o.found) << "seed " << seed;
-        const Geometry geo = deriveWith(g, c);
+        const Geometry geo = deriveComplete(g, c);
         deepest = std::max(deepest, countKind(geo, PrimitiveKind::Cone));
         for (const Primitive& prim : geo.primitives)  // an orange: a sphere of 0.25 (leaves are spheres too)
             oranges += prim.kind == PrimitiveKind::Sphere && std::abs(prim.half.x - 0.125f) < 1e-6f;
@@ -94,7 +89,7 @@ TEST(PcgDerive, AnIncludedGraphIsBoundByItsNodeArgumentsAndListedAsAnInclude) {
     Chromosome c;
     Rng rng(7);
     ASSERT_TRUE(growUncontrolled(g, c, rng, 10));
-    const Geometry geo = deriveWith(g, c);
+    const Geometry geo = deriveComplete(g, c);
     ASSERT_EQ(countKind(geo, PrimitiveKind::Box), 2u);
     EXPECT_EQ(countKind(geo, PrimitiveKind::Sphere), 1u);  // only p's top gate is connected
     std::size_t bound = 0, drawn = 0;

@@ -202,7 +202,7 @@ private:
                     failAt(a.where, std::string(op.name) + " has no argument '" + a.name + "' (its arguments: " + joined(known) + ")");
                 if (op.args[k].kind == ArgKind::Sizes) failAt(a.where, "split sizes are positional: split(x, 1, ~2, 1)");
                 if (op.args[k].kind == ArgKind::Keys)
-                    failAt(a.where, "order_by keys are positional: order_by(scope.size.y, scope.origin.x desc)");
+                    failAt(a.where, std::string(op.name) + " keys are positional: " + op.name + "(scope.size.y, scope.origin.x)");
             }
             const ArgSpec& spec = op.args[k];
             if (values[k]) failAt(a.where, "argument '" + std::string(spec.name) + "' of " + op.name + " is given twice");
@@ -233,7 +233,7 @@ private:
             }
             if (spec.kind == ArgKind::Keys) {
                 if (n.sizes.empty())
-                    failAt(d.opAt, std::string(op.name) + " needs at least one key: order_by(scope.size.y, scope.origin.x desc)");
+                    failAt(d.opAt, std::string(op.name) + " needs at least one key: " + op.name + "(scope.size.y, scope.origin.x)");
                 n.args.emplace_back();
                 continue;
             }

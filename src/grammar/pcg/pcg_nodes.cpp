@@ -108,6 +108,20 @@ void writeOrderBy(NodeWriter& w) {
     for (const std::string& k : w.sizes()) keys += (keys.empty() ? "" : ", ") + k;
     w.line("order by " + keys);
 }
+/// `group by K1, K2, ...`.
+void writeGroupBy(NodeWriter& w) {
+    std::string keys;
+    for (const std::string& k : w.sizes()) keys += (keys.empty() ? "" : ", ") + k;
+    w.line("group by " + keys);
+}
+void writeCluster(NodeWriter& w) { w.line("cluster " + w.arg(0) + " by " + w.arg(1)); }
+void writeUnify(NodeWriter& w) { w.line(w.arg(0).empty() ? "unify" : "unify within " + w.arg(0)); }
+void writeMerge(NodeWriter& w) { w.line("merge"); }
+void writeUngroup(NodeWriter& w) { w.line("ungroup"); }
+/// `let NAME = KIND(VALUE)`, or `let NAME = group.index`.
+void writeAggregate(NodeWriter& w) {
+    w.line("let " + w.arg(0) + " = " + (w.arg(1) == "group_index" ? "group.index" : w.arg(1) + "(" + w.arg(2) + ")"));
+}
 void writeReverse(NodeWriter& w) { w.line("reverse"); }
 void writeShuffle(NodeWriter& w) { w.line("shuffle " + w.arg(0)); }
 /// `keep first N [from K] : A | rest : B`, A and B what follows outputs first and rest.
@@ -173,6 +187,19 @@ const std::vector<NodeOp>& table() {
         {"order_by", "sort the list by keys (EXPR or EXPR desc), stable", {kListIn}, {kListOut},
          {{"keys", ArgKind::Keys, nullptr}}, writeOrderBy, false, Collect::Step},
         {"reverse", "reverse the list", {kListIn}, {kListOut}, {}, writeReverse, false, Collect::Step},
+        {"group_by", "group the list by keys (EXPR, ...): later steps work within each group", {kListIn}, {kListOut},
+         {{"keys", ArgKind::Keys, nullptr}}, writeGroupBy, false, Collect::Step},
+        {"cluster", "k groups by k-means on a point (by: EXPR, e.g. scope.origin)", {kListIn}, {kListOut},
+         {{"k", ArgKind::Expr, nullptr}, {"by", ArgKind::Expr, nullptr}}, writeCluster, false, Collect::Step},
+        {"unify", "group flat scopes joined by shared edges (within: the tolerance)", {kListIn}, {kListOut},
+         {{"within", ArgKind::Expr, ""}}, writeUnify, false, Collect::Step},
+        {"merge", "each group (or the list) becomes one entity, its bounding box", {kListIn}, {kListOut}, {}, writeMerge, false,
+         Collect::Step},
+        {"ungroup", "one group again", {kListIn}, {kListOut}, {}, writeUngroup, false, Collect::Step},
+        {"aggregate", "name = kind(value) over the list (or each group): min, max, avg, sum, or group_index", {kListIn},
+         {kListOut},
+         {{"name", ArgKind::Expr, nullptr}, {"kind", ArgKind::Word, nullptr, "min max avg sum group_index"}, {"value", ArgKind::Expr, "0"}},
+         writeAggregate, false, Collect::Step},
         {"shuffle", "a permutation of the list drawn from u (in [0, 1])", {kListIn}, {kListOut},
          {{"u", ArgKind::Expr, nullptr}}, writeShuffle, false, Collect::Step},
         {"amount_filter", "entities from .. from + count - 1 go to first, the others to rest", {kListIn},
