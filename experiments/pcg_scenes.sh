@@ -4,11 +4,13 @@
 # tree as a .pcg graph (configs/pcg-tree-volume.toml) against grammars/tree.grammar
 # (configs/tree-volume.toml) toward the papers' tree volume. The budget is a number of
 # generations (the same evaluations for both trees, whatever else loads the machine); the two
-# trees run alternately, seed by seed. Prints one markdown row per scene: mean voxel IoU,
-# min-max, mean evaluations, mean seconds.
-#   experiments/pcg_scenes.sh [SEEDS=5] [TREE_GENERATIONS=1000] [STAIR_GENERATIONS=1500] [BUILD=build]
+# trees run alternately, seed by seed; and Fig. 7's zoned city (configs/city-zones-volume.toml)
+# toward its reachable volume. Prints one markdown row per scene: mean voxel IoU, min-max, mean
+# evaluations, mean seconds.
+#   [SCENES="..."] experiments/pcg_scenes.sh [SEEDS=5] [TREE_GENERATIONS=1000] [STAIR_GENERATIONS=1500] [BUILD=build] [CITY_GENERATIONS=400]
+# SCENES (configs' names, space-separated) runs only those.
 set -eu
-seeds=${1:-5}; tree_generations=${2:-1000}; stair_generations=${3:-1500}; build=${4:-build}
+seeds=${1:-5}; tree_generations=${2:-1000}; stair_generations=${3:-1500}; build=${4:-build}; city_generations=${5:-400}
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -20,14 +22,20 @@ run() {  # run CONFIG SEED GENERATIONS FOLDER
         { status=$?; echo "pcg_scenes.sh: $1, seed $2 failed (exit $status)" >&2; exit 1; }
     awk -v a="$(date +%s.%N)" -v b="$start" 'BEGIN { print a - b }' > "$4/seconds"
 }
+scenes=${SCENES:-pcg-stairway-volume tree-volume pcg-tree-volume city-zones-volume}
 for s in $(seq 1 "$seeds"); do
-    run pcg-stairway-volume "$s" "$stair_generations" "$out/pcg-stairway-volume-$s"
-    run tree-volume "$s" "$tree_generations" "$out/tree-volume-$s"
-    run pcg-tree-volume "$s" "$tree_generations" "$out/pcg-tree-volume-$s"
+    for scene in $scenes; do
+        case $scene in
+        pcg-stairway-volume) generations=$stair_generations ;;
+        city-zones-volume) generations=$city_generations ;;
+        *) generations=$tree_generations ;;
+        esac
+        run "$scene" "$s" "$generations" "$out/$scene-$s"
+    done
 done
 echo "| scene | grammar | mean voxel IoU | min–max | mean evaluations | mean seconds |"
 echo "| --- | --- | ---: | ---: | ---: | ---: |"
-for scene in pcg-stairway-volume tree-volume pcg-tree-volume; do
+for scene in $scenes; do
     grammar=$(sed -n 's|^file = "\.\./\(.*\)".*|\1|p' "configs/$scene.toml" | head -1)
     for s in $(seq 1 "$seeds"); do
         f=$out/$scene-$s/summary.json

@@ -4,7 +4,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${1:-build/shapevo}
-rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb targets/houses-reachable.vdb \
+rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb targets/houses-reachable.vdb targets/city-zones-reachable.vdb \
       targets/spaceship-paper.vdb targets/tree-volume.vdb targets/tree-avoid.vdb targets/castle.vdb
 
 # A reachable target: one fixed derivation of the spaceship grammar (14 genes), kept as source
@@ -27,6 +27,11 @@ rm -f targets/spaceship-reachable.vdb targets/pcg-stairway-reachable.vdb targets
 # grammars/houses.grammar (4 genes, 103 primitives), kept as source data with its chromosome, drawn by
 #   shapevo sample grammars/houses.grammar --seed 3 --genome targets/houses-reachable.genome -o targets/houses-reachable.obj
 "$BIN" target targets/houses-reachable.obj --voxel-size 0.5 -o targets/houses-reachable.vdb
+
+# A reachable target for PCGR's Fig. 7 zoned city (configs/city-zones-volume.toml): one derivation
+# of grammars/city-zones.grammar (1 gene, 1,024 blocks), kept as source data with its chromosome, drawn by
+#   shapevo sample grammars/city-zones.grammar --seed 3 --genome targets/city-zones-reachable.genome -o targets/city-zones-reachable.obj
+"$BIN" target targets/city-zones-reachable.obj --voxel-size 1 -o targets/city-zones-reachable.vdb
 
 # The papers' spaceship target mesh (crest01/ShapeGenetics, MIT licence: targets/shapegenetics/LICENSE).
 "$BIN" target targets/shapegenetics/spaceship_target.obj --voxel-size 0.1 -o targets/spaceship-paper.vdb

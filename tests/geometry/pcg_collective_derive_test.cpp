@@ -98,6 +98,70 @@ rule Lists {
 }
 )";
 
+// The grouping nodes: group_by with two aggregates (a count and the group's number) and an
+// amount filter per group; cluster then merge; unify then ungroup.
+constexpr const char* kGroupingNodes = R"(graph Groups
+param k = int(1, 4)
+in start : volume
+node row   = size(12, 1, 2)
+node cut   = repeat(x, count: 6)
+node grow  = size(y: 1 + piece.index - 2 * floor(piece.index / 2))
+node same  = group_by(scope.size.y)
+node count = aggregate(name: n, kind: sum, value: 1)
+node num   = aggregate(name: gi, kind: group_index)
+node two   = amount_filter(count: 2)
+node mark  = color(gi, n / 10, 0)
+node brick = box()
+node near  = cluster(k: k, by: scope.origin)
+node whole = merge()
+node slab  = box()
+node flat  = unify(within: 0.01)
+node again = ungroup()
+node cube  = box()
+start      -> row
+row        -> cut
+cut.piece  -> grow
+grow       -> same, near, flat
+same       -> count
+count      -> num
+num        -> two
+two.first  -> mark
+mark       -> brick
+near       -> whole
+whole      -> slab
+flat       -> again
+again      -> cube
+)";
+
+constexpr const char* kGroupingNodesByHand = R"(start Groups
+rule Groups {
+  param k = int(1, 4)
+  size (12, 1, 2)
+  repeat x count 6 {
+    size (scope.size.x, 1 + piece.index - 2 * floor(piece.index / 2), scope.size.z)
+    [ send same ]
+    [ send near ]
+    [ send flat ]
+  }
+  gather same {
+    group by scope.size.y
+    let n = sum(1)
+    let gi = group.index
+    keep first 2 : { color (gi, n / 10, 0) box } | rest : nil
+  }
+  gather near {
+    cluster k by scope.origin
+    merge
+    each : { box }
+  }
+  gather flat {
+    unify within 0.01
+    ungroup
+    each : { box }
+  }
+}
+)";
+
 }  // namespace pcg_collective_derive_test_helpers
 
 using namespace pcg_collective_derive_test_helpers;
@@ -178,6 +242,32 @@ TEST(PcgCollective, EveryCollectiveNodeAChainAndARouteIntoAnotherListDeriveTheir
         EXPECT_EQ(a.primitives.size(), 12u) << "six red or routed, six grey";
     }
     EXPECT_GT(redHeights.size(), 2u) << "the shuffle draws different boxes for different genomes";
+}
+
+TEST(PcgCollective, TheGroupingNodesDeriveTheirHandWrittenGathers) {
+    test::TempDir dir;
+    test::writeFile(dir.file("groups.pcg"), kGroupingNodes);
+    test::writeFile(dir.file("groups.grammar"), kGroupingNodesByHand);
+    const Grammar graph = loadGrammar(dir.file("groups.pcg"));
+    const Grammar hand = loadGrammar(dir.file("groups.grammar"));
+    ASSERT_EQ(graph.rules[graph.start].geneWords(), hand.rules[hand.start].geneWords());
+    std::set<std::size_t> merged;
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+        Chromosome c;
+        Rng rng(seed);
+        ASSERT_TRUE(growUncontrolled(graph, c, rng, 10));
+        const Geometry a = deriveComplete(graph, c), b = deriveComplete(hand, c);
+        EXPECT_TRUE(test::identical(a, b)) << "seed " << seed;
+        std::size_t marked = 0;
+        for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+            if (a.appearance[i].color[1] != 0.3f) continue;  // n / 10: three boxes in each group
+            EXPECT_EQ(a.appearance[i].color[0], float(marked / 2)) << "group.index, seed " << seed;
+            ++marked;
+        }
+        EXPECT_EQ(marked, 4u) << "two of each group of three, seed " << seed;
+        merged.insert(a.primitives.size() - 4 - 6);  // one box per cluster
+    }
+    EXPECT_GT(merged.size(), 1u) << "k is evolved";
 }
 
 TEST(PcgCollective, AChanceBeforeAnIncludedGraphWithCollectiveNodesRunsItsGatherInTheNewGene) {

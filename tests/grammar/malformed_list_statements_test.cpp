@@ -1,7 +1,7 @@
 // Every malformed send / gather statement (grammars/README.md "Lists") is rejected with an
 // InputError at file:line:column of the offending token, saying what is wrong: a send that no
-// gather of its gene takes, a gather out of place or without a route, unknown steps, routes and
-// aggregates written wrong. The test itself is GrammarMalformed's (malformed_grammar_test.cpp).
+// gather of its gene takes, a gather out of place or without a route, unknown steps, routes,
+// grouping steps and aggregates written wrong. The test itself is GrammarMalformed's (malformed_grammar_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,6 +57,14 @@ const std::vector<Malformed>& listCases() {
          "'pi' is a reserved name"},
         {"AggregateWithoutParentheses", body("  gather l {\n    let m = sum scope.size.x\n    each : nil\n  }"),
          "bad.grammar:4:17", "expected '(' after 'sum'"},
+        {"GroupWithoutBy", body("  gather l {\n    group scope.size.x\n    each : nil\n  }"), "bad.grammar:4:11",
+         "expected 'by' after 'group'"},
+        {"ClusterWithoutBy", body("  gather l {\n    cluster 3 scope.origin\n    each : nil\n  }"), "bad.grammar:4:15",
+         "expected 'by' after 'cluster K'"},
+        {"GroupSomethingOtherThanIndex", body("  gather l {\n    let g = group.count\n    each : nil\n  }"), "bad.grammar:4:19",
+         "expected 'index' after 'group.'"},
+        {"GroupIndexWithoutDot", body("  gather l {\n    let g = group index\n    each : nil\n  }"), "bad.grammar:4:19",
+         "expected '.' after 'group'"},
         {"RouteToAnUndefinedRule", body("  gather l {\n    each : Nope\n  }"), "bad.grammar:4:12", "rule 'Nope' is not defined"},
     };
     return all;

@@ -35,7 +35,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- nodes and their operations -------------------------------------------------
         {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
          "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, amount_filter, filter or include \"FILE.pcg\""},
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\""},
         {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
          "node id 'a' is used twice (first at line 3)"},
         {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
@@ -131,9 +131,15 @@ const std::vector<MalformedGraph>& graphCases() {
          "gathers in each run of s (sub.pcg): a list never crosses a gene boundary; put the collective nodes in a graph included "
          "after it",
          {{"sub.pcg", "graph Sub\nin lot : volume\nnode c = chance(0.5)\nnode o = reverse()\nnode b = box()\nlot -> c\nc.yes -> o\no -> b\n"}}},
+        {"ClusterWithoutK", graph("node o = cluster(by: scope.origin)\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:10",
+         "cluster needs argument 'k'"},
+        {"UnknownAggregateKind", graph("node o = aggregate(name: m, kind: mean, value: 1)\nnode b = box()\nstart -> o\no -> b\n"),
+         "bad.pcg:3:35", "argument 'kind' of aggregate is one of min, max, avg, sum, group_index, not 'mean'"},
+        {"GroupByWithoutKey", graph("node o = group_by()\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:10",
+         "group_by needs at least one key: group_by(scope.size.y, scope.origin.x)"},
         {"MisspeltSortDirection", graph("node o = order_by(scope.size.y dsc)\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:6",
-         "expected a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E)) or a route (each, keep first, "
-         "where) in 'gather pcg_l_o', found 'dsc' (in its translation to the shapevo language:     order by scope.size.y dsc)"},
+         "expected a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E), group by, cluster, unify, merge, "
+         "ungroup) or a route (each, keep first, where) in 'gather pcg_l_o', found 'dsc' (in its translation to the shapevo language:     order by scope.size.y dsc)"},
         // --- declarations ---------------------------------------------------------------
         {"NoGraphName", "in start : volume\n", "bad.pcg:1:1", "no graph name: a .pcg file starts with `graph NAME`"},
         {"NoInputGate", "graph G\n", "bad.pcg:1:7",
@@ -157,7 +163,7 @@ const std::vector<MalformedGraph>& graphCases() {
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
         {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
          "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, amount_filter, filter or include \"FILE.pcg\"",
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",
