@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "geometry/lists/entity_list.hpp"
+#include "geometry/lists/facing.hpp"
 #include "geometry/lists/grouping.hpp"
 #include "geometry/lists/list_workspace.hpp"
 #include "geometry/lists/ordering.hpp"
+#include "geometry/lists/ray_cast.hpp"
 
 namespace shapevo {
 
@@ -65,6 +67,10 @@ struct Collections {
     std::vector<double> values;
     std::vector<glm::dvec3> points, centroids;
     std::vector<std::uint32_t> clusterOf;
+    lists::BoxTree tree;
+    std::vector<lists::RayHit> hits;
+    std::vector<lists::StreetSegment> streets;
+    std::vector<std::uint8_t> flags;
 };
 
 }  // namespace shapevo

@@ -8,6 +8,8 @@
 
 #include "geometry/lists/aggregate.hpp"
 #include "geometry/lists/amount.hpp"
+#include "geometry/lists/facing.hpp"
+#include "geometry/lists/ray_cast.hpp"
 #include "geometry/lists/adjacency.hpp"
 #include "geometry/lists/kmeans.hpp"
 #include "geometry/lists/merge.hpp"
@@ -61,6 +63,14 @@ private:
         writeScopeFrame(s, params_);
         return evaluate(g_, e, params_, &s.size.x, &parentSize_.x, evalStack_);
     }
+    /// A new local frame holding a copy of frame `from`'s let values.
+    std::uint32_t copyFrame(std::uint32_t from) {
+        const auto frame = std::uint32_t(cs_.localFrames.size() / frameFloats_);
+        cs_.localFrames.resize(cs_.localFrames.size() + frameFloats_);
+        std::copy_n(cs_.localFrames.begin() + std::ptrdiff_t(std::size_t(from) * frameFloats_), frameFloats_,
+                    cs_.localFrames.end() - std::ptrdiff_t(frameFloats_));
+        return frame;
+    }
     /// E on entity i, with its let values.
     float entityValue(const ExprRef& e, std::uint32_t i) {
         load(cs_.frameOf[i]);
@@ -88,6 +98,8 @@ private:
     /// The list regrouped as cs_.grouping says: each group contiguous, with its own frame.
     void applyGrouping();
     void merge();
+    /// raycast / facing: one value per entity, each entity its own copy of the let values.
+    void look(const ListOp& op);
     void pushRouted(const ListOp& op, int successor, const std::vector<std::uint32_t>& positions,
                     const std::vector<std::uint32_t>& starts);
 
@@ -161,11 +173,7 @@ void GatherRun::applyGrouping() {
     cs_.starts.assign(grouping.starts.begin(), grouping.starts.end());
     if (frameFloats_ == 0) return;
     for (std::uint32_t k = 0; k < groups(); ++k) {  // each group its own copy of its first entity's let values
-        const auto frame = std::uint32_t(cs_.localFrames.size() / frameFloats_);
-        const std::size_t from = std::size_t(cs_.frameOf[cs_.starts[k]]) * frameFloats_;
-        cs_.localFrames.resize(cs_.localFrames.size() + frameFloats_);
-        std::copy_n(cs_.localFrames.begin() + std::ptrdiff_t(from), frameFloats_,
-                    cs_.localFrames.end() - std::ptrdiff_t(frameFloats_));
+        const std::uint32_t frame = copyFrame(cs_.frameOf[cs_.starts[k]]);
         for (std::uint32_t e = cs_.starts[k]; e < cs_.starts[k + 1]; ++e) cs_.frameOf[e] = frame;
     }
 }
@@ -182,6 +190,34 @@ void GatherRun::merge() {
     std::swap(list_, spare_);
     std::swap(cs_.frameOf, cs_.spareFrameOf);
     cs_.starts.assign({0, list_->size()});
+}
+
+void GatherRun::look(const ListOp& op) {
+    const std::uint32_t n = list_->size();
+    std::span<const Scope> targets = list_->scopes;
+    if (op.other != kOwnList) targets = cs_.ofGather(op.other)->entities.scopes;  // a later gather's: open, complete
+    cs_.values.clear();
+    if (op.kind == ListOpKind::RayCast) {
+        cs_.hits.resize(n);
+        const lists::RayAxis along{std::uint8_t(op.detail & 3), (op.detail & 4) != 0};
+        lists::rayCast(list_->scopes, along, targets, cs_.tree, cs_.hits);
+        for (const lists::RayHit& h : cs_.hits) cs_.values.push_back(h.hit ? h.distance : -1.0);
+    } else {
+        lists::FacingOptions options;
+        const float degrees = groupValue(op.expr[0], 0);
+        options.toleranceDegrees = degrees > 0.0f ? std::min(degrees, 89.9f) : 0.0;
+        options.unoccluded = op.detail == 1;
+        cs_.streets.clear();
+        for (const Scope& s : targets) cs_.streets.push_back(lists::streetOfScope(s));
+        cs_.flags.resize(n);
+        lists::facing(list_->scopes, cs_.streets, options, cs_.tree, cs_.flags);
+        for (std::uint8_t f : cs_.flags) cs_.values.push_back(f);
+    }
+    for (std::uint32_t e = 0; e < n; ++e) {  // each entity its own frame, its own value
+        cs_.frameOf[e] = copyFrame(cs_.frameOf[e]);
+        cs_.localFrames[std::size_t(cs_.frameOf[e]) * frameFloats_ + (op.slot - kFrameBase)] = float(cs_.values[e]);
+    }
+    loaded_ = kNone;
 }
 
 void GatherRun::step(const ListOp* ops, std::uint32_t& i) {
@@ -245,6 +281,10 @@ void GatherRun::step(const ListOp* ops, std::uint32_t& i) {
         break;
     case ListOpKind::Ungroup:
         cs_.starts.assign({0, n});
+        break;
+    case ListOpKind::RayCast:
+    case ListOpKind::Facing:
+        look(op);
         break;
     case ListOpKind::KeepFirst:
     case ListOpKind::Each:

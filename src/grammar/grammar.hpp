@@ -171,6 +171,8 @@ enum class ListOpKind : std::uint8_t {
     Unify,      ///< unify [within T]: expr[0] the tolerance
     Merge,      ///< merge: each group (or the whole list) becomes one entity
     Ungroup,    ///< ungroup
+    RayCast,    ///< let NAME = raycast(±AXIS, LIST): per entity; detail = axis (0-2) + 4 if negative; `other` the target list
+    Facing,     ///< let NAME = facing(LIST, DEGREES [, unoccluded]): per entity 1 or 0; expr[0] degrees; detail 1 = unoccluded
     KeepFirst,  ///< route: keep first N [from K] : A | rest : B (expr[0] N, expr[1] K)
     Each,       ///< route: each : A
     Where,      ///< route: where (E) : A | else : B (expr[0] per entity)
@@ -181,7 +183,8 @@ struct ListOp {
     std::uint8_t detail = 0;     ///< OrderBy: 1 descending; Aggregate: AggregateKind
     std::uint8_t dims = 1;       ///< Aggregate: floats of its value; Cluster: of its point
     std::uint8_t keys = 1;       ///< OrderBy, GroupBy (the first of a run): how many such ops make its keys
-    std::uint16_t slot = 0;      ///< Aggregate: its frame index
+    std::uint16_t slot = 0;      ///< Aggregate, RayCast, Facing: its frame index
+    std::uint32_t other = 0;     ///< RayCast, Facing: the gather whose list is the target (kOwnList: this gather's own)
     ExprRef expr[4];
     std::uint32_t begin[2] = {}, end[2] = {};  ///< routes: successor 0 (first / each / where) and 1 (rest / else)
 };
@@ -191,7 +194,9 @@ inline int listOpExpressions(const ListOp& op) {
     case ListOpKind::Aggregate: return op.detail == std::uint8_t(AggregateKind::GroupIndex) ? 0 : op.dims;
     case ListOpKind::Cluster: return 1 + op.dims;
     case ListOpKind::KeepFirst: return 2;
+    case ListOpKind::Facing: return 1;
     case ListOpKind::Reverse:
+    case ListOpKind::RayCast:
     case ListOpKind::Each:
     case ListOpKind::Merge:
     case ListOpKind::Ungroup: return 0;
@@ -207,6 +212,8 @@ struct Gather {
 };
 /// Most entities one collection holds: beyond it the derivation stops as Truncated.
 inline constexpr std::uint32_t kMaxListEntities = 65535;
+/// ListOp::other of a ray cast or facing step that looks at its own gather's list.
+inline constexpr std::uint32_t kOwnList = UINT32_MAX;
 /// Most assignment rounds of `cluster` (k-means) before it stops where it is.
 inline constexpr std::uint32_t kMaxClusterRounds = 100;
 

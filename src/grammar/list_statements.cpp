@@ -199,7 +199,9 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
             int k = 0;
             while (k < 4 && !kind.isWord(kinds[k])) ++k;
             op.kind = ListOpKind::Aggregate;
-            if (kind.isWord("group")) {  // let NAME = group.index
+            if (kind.isWord("raycast") || kind.isWord("facing")) {
+                parseLookStep(inner, kind, index, op);
+            } else if (kind.isWord("group")) {  // let NAME = group.index
                 tokens_.expect('.', "after 'group' (let " + let + " = group.index: the number of the entity's group)");
                 if (!tokens_.peek().isWord("index")) tokens_.expected("'index' after 'group.'");
                 tokens_.take();
@@ -207,8 +209,8 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
                 op.dims = 1;
             } else {
                 if (k == 4)
-                    tokens_.fail(kind.where, "expected an aggregate min, max, avg or sum, or group.index, after 'let " + let +
-                                                 " =' in a gather, found " + kind.describe());
+                    tokens_.fail(kind.where, "expected an aggregate min, max, avg or sum, or group.index, raycast(...) or facing(...), after 'let " +
+                                                 let + " =' in a gather, found " + kind.describe());
                 tokens_.expect('(', "after '" + kind.text + "' (an aggregate of one expression per entity)");
                 op.detail = std::uint8_t(k);
                 compileVector(inner, op.expr);
@@ -240,6 +242,45 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
     g_.gathers[index].ops = std::uint32_t(g_.listOps.size() - g_.gathers[index].firstOp);
     takeScopeFrameReads();  // the gather's expressions are evaluated per entity, with its frame written
     rule.statements[at].end = std::uint32_t(rule.statements.size());
+}
+
+void Parser::parseLookStep(const BodyScope& scope, const Token& kind, std::uint32_t gather, ListOp& op) {
+    const bool ray = kind.isWord("raycast");
+    tokens_.expect('(', ray ? "after 'raycast' (raycast(+z, LIST))" : "after 'facing' (facing(LIST, DEGREES))");
+    if (ray) {
+        op.kind = ListOpKind::RayCast;
+        bool negative = false;
+        if (tokens_.peek().is('+') || tokens_.peek().is('-')) negative = tokens_.take().is('-');
+        const Token axis = tokens_.take();
+        const int a = axis.isWord("x") ? 0 : axis.isWord("y") ? 1 : axis.isWord("z") ? 2 : -1;
+        if (a < 0) tokens_.fail(axis.where, "expected an axis of the entity's scope (x, y or z, with + or -) in 'raycast(', found " + axis.describe());
+        op.detail = std::uint8_t(a + (negative ? 4 : 0));
+        tokens_.expect(',', "after raycast's axis (raycast(+z, LIST))");
+    } else {
+        op.kind = ListOpKind::Facing;
+    }
+    // the list looked at: this gather's own, or one a later gather of the same body gathers
+    const SourceLocation at = tokens_.peek().where;
+    const std::string name = tokens_.expectIdentifier(std::string("a list name in '") + kind.text + "('");
+    const GatheringBody& body = bodies_.back();
+    op.other = g_.listNames[g_.gathers[gather].list] == name ? kOwnList : UINT32_MAX - 1;
+    for (std::size_t k = body.next + 1; k < body.tokens.size() && op.other == UINT32_MAX - 1; ++k)
+        if (g_.listNames[g_.gathers[body.first + k].list] == name) op.other = body.first + std::uint32_t(k);
+    if (op.other == UINT32_MAX - 1)
+        tokens_.fail(at, "'" + kind.text + "(" + name + ", ...)' looks at list " + name + ", which no gather of this rule after this "
+                         "one gathers: it may look at its own list or at a later gather's (whose entities are all there by now)");
+    if (!ray) {
+        tokens_.expect(',', "after facing's list (facing(LIST, DEGREES))");
+        compileScalar(scope, op.expr[0]);
+        if (tokens_.peek().is(',')) {
+            tokens_.take();
+            if (!tokens_.peek().isWord("unoccluded")) tokens_.expected("'unoccluded' after facing's angle");
+            tokens_.take();
+            op.detail = 1;
+        }
+    }
+    tokens_.expect(')', std::string("to close '") + kind.text + "('");
+    op.dims = 1;
 }
 
 void Parser::parseRoute(Rule& rule, BodyScope& scope, const Token& word, ListOp& op) {

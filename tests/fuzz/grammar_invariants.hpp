@@ -164,6 +164,9 @@ inline void checkAccepted(const Grammar& g) {
                     for (int e = 0; e < listOpExpressions(op); ++e) checkExpression(op.expr[e]);
                     if (op.kind == ListOpKind::OrderBy || op.kind == ListOpKind::GroupBy) FUZZ_CHECK(op.keys >= 1);
                     if (op.kind == ListOpKind::Cluster) FUZZ_CHECK(op.dims == 1 || op.dims == 3);
+                    if (op.kind == ListOpKind::RayCast || op.kind == ListOpKind::Facing)
+                        FUZZ_CHECK(op.slot >= kFrameBase && op.slot + 1 <= kFrameBase + rule.frameFloats &&
+                                   (op.other == kOwnList || op.other < g.gathers.size()));
                     if (op.kind == ListOpKind::Aggregate)
                         FUZZ_CHECK((op.dims == 1 || op.dims == 3) && op.detail <= std::uint8_t(AggregateKind::GroupIndex) && op.slot >= kFrameBase &&
                                    op.slot + op.dims <= kFrameBase + rule.frameFloats);

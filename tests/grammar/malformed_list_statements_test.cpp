@@ -65,6 +65,12 @@ const std::vector<Malformed>& listCases() {
          "expected 'index' after 'group.'"},
         {"GroupIndexWithoutDot", body("  gather l {\n    let g = group index\n    each : nil\n  }"), "bad.grammar:4:19",
          "expected '.' after 'group'"},
+        {"RaycastAlongNoAxis", body("  gather l {\n    let d = raycast(+w, l)\n    each : nil\n  }"), "bad.grammar:4:22",
+         "expected an axis of the entity's scope (x, y or z, with + or -)"},
+        {"RaycastAtAnEarlierList", body("  gather a {\n    each : nil\n  }\n  gather l {\n    let d = raycast(+x, a)\n    each : nil\n  }"),
+         "bad.grammar:7:25", "looks at list a, which no gather of this rule after this one gathers"},
+        {"FacingWithAnUnknownOption", body("  gather l {\n    let f = facing(l, 30, hidden)\n    each : nil\n  }"), "bad.grammar:4:27",
+         "expected 'unoccluded' after facing's angle"},
         {"RouteToAnUndefinedRule", body("  gather l {\n    each : Nope\n  }"), "bad.grammar:4:12", "rule 'Nope' is not defined"},
     };
     return all;
