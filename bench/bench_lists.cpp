@@ -1,6 +1,8 @@
 // bench_lists: the PCGR list operations of geometry/lists on lists of about 1,000 entities: order
 // by (2 keys), shuffle, aggregate, group by, k-means (K = 6), merge, unify (facade tiles), ray cast
-// 1,000 x 1,000 (the box tree against testing every box), facing (with and without occlusion).
+// 1,000 x 1,000 (the box tree against testing every box), facing (with and without occlusion);
+// and PCGR's Fig. 7 zoned city derived whole (grammars/city-zones.grammar: 1,024 blocks, two
+// gathers with aggregates, a shuffle, k-means and orders by distance).
 // Every benchmark reports min and max over repetitions beside the mean and median. The command and
 // today's figures: docs/list-operations.md (experiments/list_operations_bench.py runs it).
 //
@@ -24,6 +26,9 @@
 #include "geometry/lists/ray_cast.hpp"
 
 #include "bench_main.hpp"
+#include "genome/sample.hpp"
+#include "grammar/front_ends.hpp"
+#include "run_derive.hpp"
 
 namespace {
 
@@ -189,6 +194,15 @@ void BM_Facing(benchmark::State& state) {
 double minimum(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 double maximum(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
+/// Fig. 7's city, one genome (growUncontrolled from seed 3).
+void BM_DeriveZonedCity(benchmark::State& state) {
+    static const Grammar g = loadGrammar(SHAPEVO_SOURCE_DIR "/grammars/city-zones.grammar");
+    Chromosome c;
+    Rng rng(3);
+    growUncontrolled(g, c, rng, 10);
+    bench::runDerive(state, g, c);
+}
+
 #define LIST_BENCHMARK(fn) BENCHMARK(fn)->Unit(benchmark::kMicrosecond)->ComputeStatistics("min", minimum)->ComputeStatistics("max", maximum)
 
 LIST_BENCHMARK(BM_OrderBy2Keys);
@@ -201,6 +215,7 @@ LIST_BENCHMARK(BM_Unify);
 LIST_BENCHMARK(BM_RayCastTree);
 LIST_BENCHMARK(BM_RayCastEveryBox);
 LIST_BENCHMARK(BM_Facing)->Arg(0)->Arg(1);
+LIST_BENCHMARK(BM_DeriveZonedCity);
 
 }  // namespace
 

@@ -7,10 +7,10 @@
 # trees run alternately, seed by seed; and Fig. 7's zoned city (configs/city-zones-volume.toml)
 # toward its reachable volume. Prints one markdown row per scene: mean voxel IoU, min-max, mean
 # evaluations, mean seconds.
-#   [SCENES="..."] experiments/pcg_scenes.sh [SEEDS=5] [TREE_GENERATIONS=1000] [STAIR_GENERATIONS=1500] [BUILD=build] [CITY_GENERATIONS=400]
+#   [SCENES="..."] experiments/pcg_scenes.sh [SEEDS=5] [TREE_GENERATIONS=1000] [STAIR_GENERATIONS=1500] [BUILD=build] [CITY_GENERATIONS=1000]
 # SCENES (configs' names, space-separated) runs only those.
 set -eu
-seeds=${1:-5}; tree_generations=${2:-1000}; stair_generations=${3:-1500}; build=${4:-build}; city_generations=${5:-400}
+seeds=${1:-5}; tree_generations=${2:-1000}; stair_generations=${3:-1500}; build=${4:-build}; city_generations=${5:-1000}
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
