@@ -1,10 +1,12 @@
 // identical(a, b): two derived geometries hold the same primitives and looks bit for bit (for the
 // derive tests: a memo, a scratch reused or a second derivation must change nothing); and
-// deriveComplete(g, c), a whole derivation that must be Complete.
+// deriveComplete(g, c), a whole derivation that must be Complete; startParam(g, c, name), a
+// parameter of the start gene by name.
 #pragma once
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "geometry/derive.hpp"
 
@@ -12,6 +14,15 @@ namespace shapevo::test {
 
 /// Bit-identical primitives and looks, field by field (the struct has padding bytes; the kind's
 /// parameter block is compared as bytes).
+/// The value of the start gene's parameter `name` in `c` (a test failure and 0 if there is none).
+inline float startParam(const Grammar& g, const Chromosome& c, const std::string& name) {
+    const Rule& r = g.rules[g.start];
+    for (const Param& p : r.params)
+        if (p.name == name) return c.param(0, r, p.first);
+    ADD_FAILURE() << "no param " << name;
+    return 0.0f;
+}
+
 /// `c` derived whole with a fresh scratch; the derivation must be Complete.
 inline Geometry deriveComplete(const Grammar& g, const Chromosome& c) {
     Geometry geo;

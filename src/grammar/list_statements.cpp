@@ -134,35 +134,8 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
         if (routed) tokens_.expected("'}' to close 'gather " + name + "': its route is its last step");
         const Token step = tokens_.take();
         ListOp op;
-        if (step.isWord("order")) {
-            if (!tokens_.peek().isWord("by")) tokens_.expected("'by' after 'order'");
-            tokens_.take();
-            const std::size_t first = g_.listOps.size();
-            do {
-                if (g_.listOps.size() > first) tokens_.take();  // ,
-                if (g_.listOps.size() - first >= 255) tokens_.fail(step.where, "'order by' takes at most 255 keys");
-                ListOp key;
-                key.kind = ListOpKind::OrderBy;
-                compileScalar(inner, key.expr[0]);
-                if (tokens_.peek().isWord("asc") || tokens_.peek().isWord("desc")) key.detail = tokens_.take().text == "desc";
-                g_.listOps.push_back(key);
-            } while (tokens_.peek().is(','));
-            g_.listOps[first].keys = std::uint8_t(g_.listOps.size() - first);
-            continue;
-        }
-        if (step.isWord("group")) {
-            if (!tokens_.peek().isWord("by")) tokens_.expected("'by' after 'group' (group by E, ...)");
-            tokens_.take();
-            const std::size_t first = g_.listOps.size();
-            do {
-                if (g_.listOps.size() > first) tokens_.take();  // ,
-                if (g_.listOps.size() - first >= 255) tokens_.fail(step.where, "'group by' takes at most 255 keys");
-                ListOp key;
-                key.kind = ListOpKind::GroupBy;
-                compileScalar(inner, key.expr[0]);
-                g_.listOps.push_back(key);
-            } while (tokens_.peek().is(','));
-            g_.listOps[first].keys = std::uint8_t(g_.listOps.size() - first);
+        if (step.isWord("order") || step.isWord("group")) {
+            parseKeys(inner, step, step.isWord("order") ? ListOpKind::OrderBy : ListOpKind::GroupBy);
             continue;
         }
         if (step.isWord("reverse")) {
@@ -242,6 +215,23 @@ void Parser::parseGather(Rule& rule, BodyScope& scope) {
     g_.gathers[index].ops = std::uint32_t(g_.listOps.size() - g_.gathers[index].firstOp);
     takeScopeFrameReads();  // the gather's expressions are evaluated per entity, with its frame written
     rule.statements[at].end = std::uint32_t(rule.statements.size());
+}
+
+void Parser::parseKeys(const BodyScope& scope, const Token& word, ListOpKind kind) {
+    const bool order = kind == ListOpKind::OrderBy;
+    if (!tokens_.peek().isWord("by")) tokens_.expected(order ? "'by' after 'order'" : "'by' after 'group' (group by E, ...)");
+    tokens_.take();
+    const std::size_t first = g_.listOps.size();
+    do {
+        if (g_.listOps.size() > first) tokens_.take();  // ,
+        if (g_.listOps.size() - first >= 255) tokens_.fail(word.where, "'" + word.text + " by' takes at most 255 keys");
+        ListOp key;
+        key.kind = kind;
+        compileScalar(scope, key.expr[0]);
+        if (order && (tokens_.peek().isWord("asc") || tokens_.peek().isWord("desc"))) key.detail = tokens_.take().text == "desc";
+        g_.listOps.push_back(key);
+    } while (tokens_.peek().is(','));
+    g_.listOps[first].keys = std::uint8_t(g_.listOps.size() - first);
 }
 
 void Parser::parseLookStep(const BodyScope& scope, const Token& kind, std::uint32_t gather, ListOp& op) {

@@ -116,6 +116,8 @@ public:
     void parseGather(Rule& rule, BodyScope& scope);
     /// The route that ends a gather block (after its word); successors into `op`.
     void parseRoute(Rule& rule, BodyScope& scope, const Token& word, ListOp& op);
+    /// `order by E [asc|desc], ...` or `group by E, ...` (after the word): one ListOp per key.
+    void parseKeys(const BodyScope& scope, const Token& word, ListOpKind kind);
     /// `raycast(±AXIS, LIST)` or `facing(LIST, DEGREES [, unoccluded])` after `let NAME =` in gather `gather`.
     void parseLookStep(const BodyScope& scope, const Token& kind, std::uint32_t gather, ListOp& op);
     std::uint16_t listName(const std::string& name, const SourceLocation& at);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../geometry_compare.hpp"
 #include "../test_support.hpp"
 #include "base/random.hpp"
 #include "genome/sample.hpp"
@@ -28,17 +29,10 @@ struct StairParams {
     float steps = 0, flights = 0, rise = 0, turn = 0, radius = 0, depth = 0;
 };
 
-float paramNamed(const Grammar& g, const Chromosome& c, const std::string& name) {
-    const Rule& r = g.rules[g.start];
-    for (const Param& p : r.params)
-        if (p.name == name) return c.param(0, r, p.first);
-    ADD_FAILURE() << "no param " << name;
-    return 0.0f;
-}
 
 StairParams paramsOf(const Grammar& g, const Chromosome& c) {
-    return {paramNamed(g, c, "steps"),  paramNamed(g, c, "flights"), paramNamed(g, c, "rise"),
-            paramNamed(g, c, "turn"),   paramNamed(g, c, "radius"),  paramNamed(g, c, "depth")};
+    return {test::startParam(g, c, "steps"),  test::startParam(g, c, "flights"), test::startParam(g, c, "rise"),
+            test::startParam(g, c, "turn"),   test::startParam(g, c, "radius"),  test::startParam(g, c, "depth")};
 }
 
 /// Degrees from `from` to `to` about +y, in (-180, 180].
