@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
                          ::testing::Values("grammars/spaceship.grammar", "grammars/coral.grammar", "grammars/tree.grammar",
                                            "grammars/city.grammar", "grammars/city-filling.grammar",
                                            "grammars/castle.grammar", "grammars/building.grammar", "grammars/houses.grammar",
-                                           "grammars/city-zones.grammar"));
+                                           "grammars/city-zones.grammar", "grammars/street-numbers.grammar"));
 
 INSTANTIATE_TEST_SUITE_P(ShippedGraphFiles, OperatorProperties, ::testing::ValuesIn(shippedGraphFiles()), pathTestName);
 
