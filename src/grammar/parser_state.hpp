@@ -86,6 +86,13 @@ public:
     void parseStatement(Rule& rule, BodyScope& scope);
     void parseIf(Rule& rule, BodyScope& scope, const char* keyword);
     void parsePieces(Rule& rule, BodyScope& scope, const Token& word);
+    /// `(E1, ..., En)` into list.arg[first, first + n) (lot, center, corners, edges).
+    void parseNumberTuple(const BodyScope& scope, PieceList& list, int first, int n, const std::string& what, bool& readsScope);
+    /// `comp { FACE: SUCCESSOR | ... }` after the word: one piece per face (`side`: the four sides not named).
+    void parseCompFaces(Rule& rule, BodyScope& scope, const Token& word, std::vector<Piece>& pieces);
+    /// `lot rect|circle (...)`, `center (...)`, `corners (...) [on (...)] [inside]`, `edges (...) (...)` after the word.
+    void parseLotPieces(Rule& rule, BodyScope& scope, const Token& word, PieceList& list, std::vector<Piece>& pieces,
+                        bool& readsScope);
     void parseCopy(Rule& rule, BodyScope& scope);
     /// A `[ ]` around statements about to be compiled: its Pieces statement (returns its index);
     /// closeCopy makes the statements compiled since its one piece.

@@ -145,6 +145,114 @@ void Parser::parseSplitList(Rule& rule, BodyScope& scope, std::vector<Piece>& pi
     }
 }
 
+void Parser::parseNumberTuple(const BodyScope& scope, PieceList& list, int first, int n, const std::string& what,
+                              bool& readsScope) {
+    tokens_.expect('(', "to open " + what);
+    for (int k = 0; k < n; ++k) {
+        if (k > 0) {
+            if (tokens_.peek().is(')'))
+                tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives " + std::to_string(k));
+            tokens_.expect(',', "between the numbers of " + what);
+        }
+        compileScalar(scope, list.arg[first + k]);
+        readsScope = takeScopeFrameReads() || readsScope;
+    }
+    if (!tokens_.peek().is(')'))
+        tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives more");
+    tokens_.take();
+}
+
+void Parser::parseCompFaces(Rule& rule, BodyScope& scope, const Token& word, std::vector<Piece>& pieces) {
+    if (scope.form == ScopeForm::Flat)
+        tokens_.fail(word.where, "'comp' takes a volume apart into its faces, but this scope is flat (a lot or a "
+                                 "face): extrude it first");
+    tokens_.expect('{', "after 'comp' (comp { FACE: SUCCESSOR | ... })");
+    CompiledSuccessors compiled;
+    bool named[kFaces] = {};
+    std::optional<Piece> side;
+    while (true) {
+        const SourceLocation fa = tokens_.peek().where;
+        const std::string face = tokens_.expectIdentifier("a face name (top, bottom, front, back, left, right or side)");
+        int f = -1;
+        for (int k = 0; k < kFaces; ++k)
+            if (face == kFaceNames[k]) f = k;
+        if (f < 0 && face != "side")
+            tokens_.fail(fa, "unknown face '" + face + "': expected top, bottom, front, back, left, right or side");
+        if ((f >= 0 && named[f]) || (face == "side" && side))
+            tokens_.fail(fa, "face '" + face + "' is given twice in this comp");
+        tokens_.expect(':', "after the face name (FACE: SUCCESSOR)");
+        Piece p;
+        parseSuccessor(rule, scope, p, ScopeForm::Flat, &compiled);
+        if (f >= 0) {
+            named[f] = true;
+            p.face = std::uint8_t(f);
+            pieces.push_back(p);
+        } else {
+            side = p;
+        }
+        if (tokens_.peek().is('|')) {
+            tokens_.take();
+            continue;
+        }
+        tokens_.expect('}', "to close the comp (or '|' before the next face)");
+        break;
+    }
+    if (side) {
+        for (FaceName f : {FaceName::Front, FaceName::Right, FaceName::Back, FaceName::Left}) {
+            if (named[int(f)]) continue;
+            Piece p = *side;
+            p.face = std::uint8_t(f);
+            pieces.push_back(p);
+        }
+    }
+}
+
+void Parser::parseLotPieces(Rule& rule, BodyScope& scope, const Token& word, PieceList& list, std::vector<Piece>& pieces,
+                            bool& readsScope) {
+    const std::string& w = word.text;
+    if (w != "lot" && scope.form == ScopeForm::Volume)
+        tokens_.fail(word.where, "'" + w + "' needs a flat scope (a lot or a face); this scope is a "
+                                 "volume (extruded above): take a face with comp first");
+    if (w == "lot") {
+        const SourceLocation ka = tokens_.peek().where;
+        const std::string kind = tokens_.expectIdentifier("'rect' or 'circle' after 'lot'");
+        if (kind == "rect") {
+            list.kind = PiecesKind::LotRect;
+            parseNumberTuple(scope, list, 0, 4, "lot rect (x1, y1, x2, y2)", readsScope);
+        } else if (kind == "circle") {
+            list.kind = PiecesKind::LotCircle;
+            parseNumberTuple(scope, list, 0, 3, "lot circle (cx, cy, r)", readsScope);
+        } else {
+            tokens_.fail(ka, "unknown lot '" + kind + "': expected rect (x1, y1, x2, y2) or circle (cx, cy, r)");
+        }
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+        if (pieces.size() > 1) tokens_.fail(ka, "a lot has one successor");
+    } else if (w == "center") {
+        list.kind = PiecesKind::Center;
+        parseNumberTuple(scope, list, 0, 2, "center (width, depth)", readsScope);
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    } else if (w == "corners") {
+        list.kind = PiecesKind::Corners;
+        parseNumberTuple(scope, list, 0, 2, "corners (rx, ry)", readsScope);
+        if (tokens_.peek().isWord("on")) {
+            tokens_.take();
+            parseNumberTuple(scope, list, 2, 4, "corners ... on (c1, c2, c3, c4)", readsScope);
+        } else {
+            for (int k = 2; k < 6; ++k) list.arg[k] = constantExpression(1.0f);
+        }
+        if (tokens_.peek().isWord("inside")) {
+            tokens_.take();
+            list.floating = true;  // the lots lie inside, one corner on the parent's
+        }
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    } else {  // edges
+        list.kind = PiecesKind::Edges;
+        parseNumberTuple(scope, list, 0, 2, "edges (rx, ry)", readsScope);
+        parseNumberTuple(scope, list, 2, 4, "edges ... (n1, n2, n3, n4)", readsScope);
+        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+    }
+}
+
 void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     PieceList list;
     std::vector<Piece> pieces;
@@ -153,40 +261,23 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
     Statement st{};
     st.kind = StatementKind::Pieces;
     rule.statements.push_back(st);
-    auto tuple = [&](int first, int n, const std::string& what) {
-        tokens_.expect('(', "to open " + what);
-        for (int k = 0; k < n; ++k) {
-            if (k > 0) {
-                if (tokens_.peek().is(')'))
-                    tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives " + std::to_string(k));
-                tokens_.expect(',', "between the numbers of " + what);
-            }
-            compileScalar(scope, list.arg[first + k]);
-            readsScope = takeScopeFrameReads() || readsScope;
-        }
-        if (!tokens_.peek().is(')'))
-            tokens_.fail(tokens_.peek().where, what + " has " + std::to_string(n) + " numbers, this gives more");
-        tokens_.take();
-    };
-    auto needFlat = [&](const char* what) {
-        if (scope.form == ScopeForm::Volume)
-            tokens_.fail(word.where, std::string("'") + what + "' needs a flat scope (a lot or a face); this scope is a "
-                                     "volume (extruded above): take a face with comp first");
-    };
-    auto axis = [&]() {
-        const SourceLocation a = tokens_.peek().where;
-        const std::string name = tokens_.expectIdentifier("an axis x, y or z after '" + word.text + "'");
-        if (axisIndex(name) < 0) tokens_.fail(a, "expected an axis x, y or z after '" + word.text + "', found '" + name + "'");
-        return std::uint8_t(axisIndex(name));
-    };
     const std::string& w = word.text;
+    if (w == "split" || w == "repeat") {
+        const SourceLocation a = tokens_.peek().where;
+        const std::string name = tokens_.expectIdentifier("an axis x, y or z after '" + w + "'");
+        if (axisIndex(name) < 0) tokens_.fail(a, "expected an axis x, y or z after '" + w + "', found '" + name + "'");
+        list.axis = std::uint8_t(axisIndex(name));
+    }
     if (w == "split") {
         list.kind = PiecesKind::Split;
-        list.axis = axis();
         parseSplitList(rule, scope, pieces, readsScope);
-    } else if (w == "repeat") {
-        list.axis = axis();
-        if (tokens_.peek().isWord("count")) {
+    } else if (w == "repeat" || w == "copy") {
+        if (w == "copy") {
+            list.kind = PiecesKind::CopyCount;
+            if (tokens_.peek().kind == TokenKind::Identifier && headerIndex_.count(tokens_.peek().text) &&
+                !tokens_.peekSecond().is('('))
+                tokens_.expected("the number of copies before the successor (copy N SUCCESSOR)");
+        } else if (tokens_.peek().isWord("count")) {
             tokens_.take();
             list.kind = PiecesKind::RepeatCount;
         } else {
@@ -199,100 +290,11 @@ void Parser::parsePieces(Rule& rule, BodyScope& scope, const Token& word) {
         compileScalar(scope, list.arg[0]);
         readsScope = takeScopeFrameReads();
         parseSuccessorList(rule, scope, pieces, scope.form);
-    } else if (w == "copy") {
-        list.kind = PiecesKind::CopyCount;
-        if (tokens_.peek().kind == TokenKind::Identifier && headerIndex_.count(tokens_.peek().text) &&
-            !tokens_.peekSecond().is('('))
-            tokens_.expected("the number of copies before the successor (copy N SUCCESSOR)");
-        compileScalar(scope, list.arg[0]);
-        readsScope = takeScopeFrameReads();
-        parseSuccessorList(rule, scope, pieces, scope.form);
     } else if (w == "comp") {
-        if (scope.form == ScopeForm::Flat)
-            tokens_.fail(word.where, "'comp' takes a volume apart into its faces, but this scope is flat (a lot or a "
-                                     "face): extrude it first");
         list.kind = PiecesKind::Comp;
-        tokens_.expect('{', "after 'comp' (comp { FACE: SUCCESSOR | ... })");
-        CompiledSuccessors compiled;
-        bool named[kFaces] = {};
-        std::optional<Piece> side;
-        SourceLocation sideAt{};
-        while (true) {
-            const SourceLocation fa = tokens_.peek().where;
-            const std::string face = tokens_.expectIdentifier("a face name (top, bottom, front, back, left, right or side)");
-            int f = -1;
-            for (int k = 0; k < kFaces; ++k)
-                if (face == kFaceNames[k]) f = k;
-            if (f < 0 && face != "side")
-                tokens_.fail(fa, "unknown face '" + face + "': expected top, bottom, front, back, left, right or side");
-            if ((f >= 0 && named[f]) || (face == "side" && side))
-                tokens_.fail(fa, "face '" + face + "' is given twice in this comp");
-            tokens_.expect(':', "after the face name (FACE: SUCCESSOR)");
-            Piece p;
-            parseSuccessor(rule, scope, p, ScopeForm::Flat, &compiled);
-            if (f >= 0) {
-                named[f] = true;
-                p.face = std::uint8_t(f);
-                pieces.push_back(p);
-            } else {
-                side = p;
-                sideAt = fa;
-            }
-            if (tokens_.peek().is('|')) {
-                tokens_.take();
-                continue;
-            }
-            tokens_.expect('}', "to close the comp (or '|' before the next face)");
-            break;
-        }
-        if (side) {
-            for (FaceName f : {FaceName::Front, FaceName::Right, FaceName::Back, FaceName::Left}) {
-                if (named[int(f)]) continue;
-                Piece p = *side;
-                p.face = std::uint8_t(f);
-                pieces.push_back(p);
-            }
-        }
-    } else if (w == "lot") {
-        const SourceLocation ka = tokens_.peek().where;
-        const std::string kind = tokens_.expectIdentifier("'rect' or 'circle' after 'lot'");
-        if (kind == "rect") {
-            list.kind = PiecesKind::LotRect;
-            tuple(0, 4, "lot rect (x1, y1, x2, y2)");
-        } else if (kind == "circle") {
-            list.kind = PiecesKind::LotCircle;
-            tuple(0, 3, "lot circle (cx, cy, r)");
-        } else {
-            tokens_.fail(ka, "unknown lot '" + kind + "': expected rect (x1, y1, x2, y2) or circle (cx, cy, r)");
-        }
-        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
-        if (pieces.size() > 1) tokens_.fail(ka, "a lot has one successor");
-    } else if (w == "center") {
-        needFlat("center");
-        list.kind = PiecesKind::Center;
-        tuple(0, 2, "center (width, depth)");
-        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
-    } else if (w == "corners") {
-        needFlat("corners");
-        list.kind = PiecesKind::Corners;
-        tuple(0, 2, "corners (rx, ry)");
-        if (tokens_.peek().isWord("on")) {
-            tokens_.take();
-            tuple(2, 4, "corners ... on (c1, c2, c3, c4)");
-        } else {
-            for (int k = 2; k < 6; ++k) list.arg[k] = constantExpression(1.0f);
-        }
-        if (tokens_.peek().isWord("inside")) {
-            tokens_.take();
-            list.floating = true;  // the lots lie inside, one corner on the parent's
-        }
-        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
-    } else {  // edges
-        needFlat("edges");
-        list.kind = PiecesKind::Edges;
-        tuple(0, 2, "edges (rx, ry)");
-        tuple(2, 4, "edges ... (n1, n2, n3, n4)");
-        parseSuccessorList(rule, scope, pieces, ScopeForm::Flat);
+        parseCompFaces(rule, scope, word, pieces);
+    } else {
+        parseLotPieces(rule, scope, word, list, pieces, readsScope);
     }
     if (pieces.empty()) tokens_.fail(word.where, "'" + w + "' needs at least one piece");
     if (g_.pieceLists.size() >= 65535) tokens_.fail(word.where, "too many split, repeat, comp and lot statements (at most 65535)");

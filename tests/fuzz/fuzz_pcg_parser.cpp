@@ -7,47 +7,27 @@
 // report, or a broken invariant of an accepted grammar (grammar_invariants.hpp, shared with
 // fuzz_grammar_parser) is a crash.
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "grammar_invariants.hpp"
-#include "scratch_folder.hpp"
+#include "grammar_file_target.hpp"
 
 namespace {
 
 using namespace shapevo;
 
-void put(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) {
-        std::perror(path.c_str());
-        std::abort();
-    }
-}
-
 /// The scratch folder with its files, made once.
 const std::string& folder() {
     static const std::string dir = [] {
         const std::string d = fuzz::scratchFolder("fuzz_pcg_parser");
-        put(d + "/part.pcg", "graph Part\nparam h = uniform(1, 2)\nin base : volume\nout top : volume\n"
-                             "node s = size(1, h, 1)\nnode b = box()\nbase -> s\ns -> b\nb -> top\n");
-        put(d + "/sides.pcg", "graph Sides\nin lot : volume\nout rest : flat\nnode f = comp()\nnode o = order_by(scope.size.x desc)\n"
-                              "node a = amount_filter(count: 1)\nnode e = extrude(0.2)\nnode b = box()\nnode g = color(0.5, 0.5, 0.5)\n"
-                              "lot -> f\nf.side -> o\no -> a\na.first -> e\ne -> b\na.rest -> g\ng -> rest\n");
-        put(d + "/loop.pcg", "graph Loop\nin base : volume\nnode l = include \"loop.pcg\"\nbase -> l\n");
+        fuzz::putFile(d + "/part.pcg", "graph Part\nparam h = uniform(1, 2)\nin base : volume\nout top : volume\n"
+                                       "node s = size(1, h, 1)\nnode b = box()\nbase -> s\ns -> b\nb -> top\n");
+        fuzz::putFile(d + "/sides.pcg", "graph Sides\nin lot : volume\nout rest : flat\nnode f = comp()\nnode o = order_by(scope.size.x desc)\n"
+                                        "node a = amount_filter(count: 1)\nnode e = extrude(0.2)\nnode b = box()\nnode g = color(0.5, 0.5, 0.5)\n"
+                                        "lot -> f\nf.side -> o\no -> a\na.first -> e\ne -> b\na.rest -> g\ng -> rest\n");
+        fuzz::putFile(d + "/loop.pcg", "graph Loop\nin base : volume\nnode l = include \"loop.pcg\"\nbase -> l\n");
         return d;
     }();
     return dir;
-}
-
-std::string textOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 }  // namespace
@@ -55,18 +35,6 @@ std::string textOf(const std::string& path) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     const std::string path = folder() + "/fuzz.pcg";
-    try {
-        const Grammar g = parseGrammar(text, path);
-        fuzz::checkAccepted(g);
-        FUZZ_CHECK(g.source == text);
-    } catch (const InputError& e) {
-        if (e.file() == path) {
-            fuzz::checkLocated(e, text, path);
-        } else {  // another file's place: it must be a file that was read
-            std::error_code ec;
-            FUZZ_CHECK(!e.file().empty() && std::filesystem::is_regular_file(e.file(), ec));
-            fuzz::checkLocated(e, textOf(e.file()), e.file());
-        }
-    }
+    fuzz::checkGrammarFile(text, path);
     return 0;
 }

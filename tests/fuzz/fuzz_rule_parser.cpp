@@ -6,45 +6,25 @@
 // (an included rule file); any other exception, a sanitizer report, or a broken invariant of an
 // accepted grammar (grammar_invariants.hpp, shared with fuzz_grammar_parser) is a crash.
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "grammar_invariants.hpp"
-#include "scratch_folder.hpp"
+#include "grammar_file_target.hpp"
 
 namespace {
 
 using namespace shapevo;
 
-void put(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) {
-        std::perror(path.c_str());
-        std::abort();
-    }
-}
-
 /// The scratch folder with its files, made once.
 const std::string& folder() {
     static const std::string dir = [] {
         const std::string d = fuzz::scratchFolder("fuzz_rule_parser");
-        put(d + "/part.rule", "attr w = 2;\nP = rect(0, 0, 1, 2);\nP -> extrude(w) {Q};\nQ -> insert_volume(1, 1, 1, 0, 0, 1);\n");
-        put(d + "/loop.rule", "include \"loop.rule\";\nP = rect(0, 0, 1, 1);\n");
-        put(d + "/window.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");  // closed
-        put(d + "/stone.png", "not really a png");
+        fuzz::putFile(d + "/part.rule", "attr w = 2;\nP = rect(0, 0, 1, 2);\nP -> extrude(w) {Q};\nQ -> insert_volume(1, 1, 1, 0, 0, 1);\n");
+        fuzz::putFile(d + "/loop.rule", "include \"loop.rule\";\nP = rect(0, 0, 1, 1);\n");
+        fuzz::putFile(d + "/window.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");  // closed
+        fuzz::putFile(d + "/stone.png", "not really a png");
         return d;
     }();
     return dir;
-}
-
-std::string textOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 }  // namespace
@@ -52,18 +32,6 @@ std::string textOf(const std::string& path) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     const std::string path = folder() + "/fuzz.rule";
-    try {
-        const Grammar g = parseGrammar(text, path);
-        fuzz::checkAccepted(g);
-        FUZZ_CHECK(g.source == text);
-    } catch (const InputError& e) {
-        if (e.file() == path) {
-            fuzz::checkLocated(e, text, path);
-        } else {  // another file's place: it must be a file that was read
-            std::error_code ec;
-            FUZZ_CHECK(!e.file().empty() && std::filesystem::is_regular_file(e.file(), ec));
-            fuzz::checkLocated(e, textOf(e.file()), e.file());
-        }
-    }
+    fuzz::checkGrammarFile(text, path);
     return 0;
 }
