@@ -1,4 +1,4 @@
-// grammarDiagram (grammar_diagram.hpp): a Grammar's rules and slots as a GraphDiagram.
+// grammarDiagram (grammar_diagram.hpp): a Grammar's rules, slots and gathers as a GraphDiagram.
 #include "grammar/grammar_diagram.hpp"
 
 #include <filesystem>
@@ -33,6 +33,64 @@ std::string slotLabel(const Slot& slot, std::size_t k, std::size_t alternative) 
                  " (weight " + formatDouble(slot.weights[alternative] / total) + ")";
     }
     return label;
+}
+
+/// A gather's steps in words: "order by, keep first".
+std::string gatherSteps(const Grammar& g, const Gather& gather) {
+    std::string steps;
+    for (std::uint32_t k = 0; k < gather.ops; ++k) {
+        const ListOp& op = g.listOps[gather.firstOp + k];
+        if ((op.kind == ListOpKind::OrderBy || op.kind == ListOpKind::GroupBy) && k > 0 &&
+            g.listOps[gather.firstOp + k - 1].kind == op.kind)
+            continue;  // a further key of the same sort or grouping
+        const char* name = "";
+        switch (op.kind) {
+        case ListOpKind::OrderBy: name = "order by"; break;
+        case ListOpKind::Reverse: name = "reverse"; break;
+        case ListOpKind::Shuffle: name = "shuffle"; break;
+        case ListOpKind::Aggregate: name = "let"; break;
+        case ListOpKind::GroupBy: name = "group by"; break;
+        case ListOpKind::Cluster: name = "cluster"; break;
+        case ListOpKind::Unify: name = "unify"; break;
+        case ListOpKind::Merge: name = "merge"; break;
+        case ListOpKind::Ungroup: name = "ungroup"; break;
+        case ListOpKind::RayCast: name = "raycast"; break;
+        case ListOpKind::Facing: name = "facing"; break;
+        case ListOpKind::KeepFirst: name = "keep first"; break;
+        case ListOpKind::Each: name = "each"; break;
+        case ListOpKind::Where: name = "where"; break;
+        }
+        steps += (steps.empty() ? "" : ", ") + std::string(name);
+    }
+    return steps;
+}
+
+/// One node per gather (a collective input, square), an edge from the rule that gathers and one
+/// from every rule that sends to its list (list order: gathers in file order).
+void addGathers(const Grammar& g, pcg::GraphDiagram& d) {
+    std::vector<std::uint32_t> gatherNode(g.gathers.size());
+    for (std::size_t id = 0; id < g.rules.size(); ++id)
+        for (const Statement& st : g.rules[id].statements)
+            if (st.kind == StatementKind::Gather) {
+                const Gather& gather = g.gathers[st.slot];
+                pcg::DiagramNode node;
+                node.name = "gather " + g.listNames[gather.list];
+                node.detail = gatherSteps(g, gather);
+                node.ports.push_back({"list", true, pcg::PortKind::Collective});
+                gatherNode[st.slot] = std::uint32_t(d.nodes.size());
+                d.nodes.push_back(std::move(node));
+                d.edges.push_back({std::uint32_t(id), gatherNode[st.slot], -1, -1, "at the end of each run", pcg::EdgeKind::Inline});
+            }
+    for (std::size_t id = 0; id < g.rules.size(); ++id) {
+        std::vector<bool> sent(g.listNames.size(), false);
+        for (const Statement& st : g.rules[id].statements)
+            if (st.kind == StatementKind::Send && !sent[st.slot]) {
+                sent[st.slot] = true;
+                for (std::size_t k = 0; k < g.gathers.size(); ++k)
+                    if (g.gathers[k].list == st.slot)
+                        d.edges.push_back({std::uint32_t(id), gatherNode[k], -1, 0, "send " + g.listNames[st.slot], pcg::EdgeKind::Inline});
+            }
+    }
 }
 
 }  // namespace
@@ -73,6 +131,7 @@ pcg::GraphDiagram grammarDiagram(const Grammar& g) {
         for (const InlineCall* c : callsOf[id])
             d.edges.push_back({std::uint32_t(id), byName.at(c->callee), -1, 0, "inline", pcg::EdgeKind::Inline});
     }
+    if (g.hasLists) addGathers(g, d);
     pcg::numberDiagram(d);
     return d;
 }

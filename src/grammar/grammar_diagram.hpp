@@ -9,6 +9,10 @@
 //   probability, sibling positions, `optional` and alternative weight where they are not 1;
 // - one Inline edge per (rule, inline callee) pair (Grammar::inlineCalls), from the rule itself
 //   to the callee's "in", labelled "inline";
+// - after those, one node per gather ("gather LIST", its steps as its second line) with one
+//   collective input port "list", an Inline edge from the rule that gathers to the node itself
+//   ("at the end of each run"), and from every rule that sends to LIST one Inline edge into the
+//   port ("send LIST");
 // - cyclic edges, topological numbers and loop nodes from numberDiagram() (PCGR §3.4 / §3.5).
 #pragma once
 #include "grammar/grammar.hpp"

@@ -1,6 +1,6 @@
 // The generator graph of a Grammar as a diagram (grammar/grammar_diagram.hpp): one node per rule
 // (and per rule called only inline), one Child edge per slot alternative and one Inline edge per
-// inline callee; cyclic edges, topological numbers and loop nodes as PCGR §3.4 / §3.5 give them,
+// inline callee, one collective node per gather fed by its rule and its senders; cyclic edges, topological numbers and loop nodes as PCGR §3.4 / §3.5 give them,
 // for a hand-made grammar and for the shipped tree (whose Branch instances call each other).
 #include <gtest/gtest.h>
 
@@ -91,6 +91,30 @@ TEST(GrammarDiagram, TheShippedTreesBranchInstancesAreLoopNodes) {
         EXPECT_EQ(d.nodes[v].order, v);
         EXPECT_EQ(d.nodes[v].loop, v > 0) << d.nodes[v].name;
     }
+}
+
+TEST(GrammarDiagram, EachGatherIsACollectiveNodeThatItsRuleAndItsSendersFeed) {
+    const pcg::GraphDiagram d = grammarDiagram(loadGrammar(test::sourcePath("grammars/houses.grammar")));
+    std::size_t gathers = 0;
+    for (std::uint32_t v = 0; v < d.nodes.size(); ++v) {
+        const pcg::DiagramNode& n = d.nodes[v];
+        if (n.name != "gather facades") continue;
+        ++gathers;
+        ASSERT_EQ(n.ports.size(), 1u);
+        EXPECT_EQ(n.ports[0].kind, pcg::PortKind::Collective);
+        EXPECT_EQ(n.detail, "order by, keep first");
+        std::size_t sends = 0, owner = 0;
+        for (const pcg::DiagramEdge& e : d.edges) {
+            if (e.to != v) continue;
+            sends += e.label == "send facades" && e.toPort == 0;
+            owner += e.label == "at the end of each run" && d.nodes[e.from].name == "House";
+        }
+        EXPECT_EQ(sends, 1u) << "House sends its sides";
+        EXPECT_EQ(owner, 1u) << "House gathers them";
+    }
+    EXPECT_EQ(gathers, 1u);
+    const pcg::GraphDiagram plain = grammarDiagram(loadGrammar(test::sourcePath("grammars/tree.grammar")));
+    for (const pcg::DiagramNode& n : plain.nodes) EXPECT_EQ(n.name.rfind("gather ", 0), std::string::npos);
 }
 
 TEST(GrammarDiagram, AFileIsDrawnByItsFrontEndAndAnUnknownExtensionIsRefused) {
