@@ -96,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
                          ::testing::Values("grammars/spaceship.grammar", "grammars/coral.grammar", "grammars/tree.grammar",
                                            "grammars/city.grammar", "grammars/city-filling.grammar",
                                            "grammars/castle.grammar", "grammars/building.grammar", "grammars/houses.grammar",
-                                           "grammars/city-zones.grammar", "grammars/street-numbers.grammar"));
+                                           "grammars/city-zones.grammar", "grammars/street-numbers.grammar",
+                                           "grammars/street-view.grammar"));
 
 INSTANTIATE_TEST_SUITE_P(ShippedGraphFiles, OperatorProperties, ::testing::ValuesIn(shippedGraphFiles()), pathTestName);
 
