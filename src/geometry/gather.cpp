@@ -6,13 +6,13 @@
 #include <cstring>
 #include <utility>
 
+#include "geometry/lists/adjacency.hpp"
 #include "geometry/lists/aggregate.hpp"
 #include "geometry/lists/amount.hpp"
 #include "geometry/lists/facing.hpp"
-#include "geometry/lists/ray_cast.hpp"
-#include "geometry/lists/adjacency.hpp"
 #include "geometry/lists/kmeans.hpp"
 #include "geometry/lists/merge.hpp"
+#include "geometry/lists/ray_cast.hpp"
 #include "grammar/expression.hpp"
 
 namespace shapevo {
