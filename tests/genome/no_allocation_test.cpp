@@ -11,6 +11,7 @@
 #include "../score/silhouette_test_util.hpp"
 #include "../test_support.hpp"
 #include "genome/operators.hpp"
+#include "genome/sample.hpp"
 #include "graph/derive.hpp"
 #include "graph/drawing_raster.hpp"
 #include "graph/read_graph_grammar.hpp"
@@ -165,6 +166,29 @@ TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
         EXPECT_EQ(gAllocations.load() - before, 0) << name;
         EXPECT_GT(sink, 0u);
         EXPECT_EQ(out.appearance.size(), out.primitives.size()) << name;
+    }
+}
+
+TEST(NoAllocation, DerivingGrammarsWithListsAllocatesNothingOnceWarm) {
+    // sends, gathers and their steps (orders, aggregates, groups, k-means, merge, ray casts,
+    // facing) reuse the collections' work space
+    for (const char* name : {"houses", "city-zones", "street-view", "street-numbers"}) {
+        const Grammar g = loadGrammar(test::sourcePath(std::string("grammars/") + name + ".grammar"));
+        std::vector<Chromosome> pop(8);
+        for (std::size_t k = 0; k < pop.size(); ++k) {
+            Rng rng{41 + k};
+            ASSERT_TRUE(growUncontrolled(g, pop[k], rng, 40)) << name;
+        }
+        Geometry out;
+        DeriveScratch scratch;
+        std::size_t sink = 0;
+        for (int warm = 0; warm < 2; ++warm)
+            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+        const long before = gAllocations.load();
+        for (int r = 0; r < 5; ++r)
+            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+        EXPECT_EQ(gAllocations.load() - before, 0) << name;
+        EXPECT_GT(sink, 0u);
     }
 }
 
