@@ -22,7 +22,8 @@ struct Collection {
     std::uint16_t list = 0;       ///< Grammar::listNames
     std::uint32_t gather = 0;     ///< Grammar::gathers
     std::uint32_t frame = UINT32_MAX;  ///< its rule's let values when the gather statement was reached (DeriveScratch::frames)
-    lists::EntityList entities;   ///< in the order they were sent (the derivation's order)
+    lists::EntityList entities;   ///< in the order they were sent (the derivation's order); with carried
+                                  ///< attributes, attribute 0 is each one's carried block (DeriveScratch::carried)
 };
 
 struct Collections {
@@ -30,13 +31,14 @@ struct Collections {
     std::size_t open = 0;
 
     void clear() { open = 0; }
-    Collection& push(std::uint16_t list, std::uint32_t gather, std::uint32_t frame) {
+    /// Opens a collection whose entities carry `width` attribute values (1: their carried block).
+    Collection& push(std::uint16_t list, std::uint32_t gather, std::uint32_t frame, std::uint32_t width) {
         if (open == pool.size()) pool.emplace_back();
         Collection& c = pool[open++];
         c.list = list;
         c.gather = gather;
         c.frame = frame;
-        c.entities.clear(0);
+        c.entities.clear(width);
         return c;
     }
     /// The innermost open collection of `list` (nullptr: none).

@@ -174,7 +174,8 @@ namespace {
     const Scope& s = scratch.scopes[task.scope];
     const SubtreeMemo::Start start(memo.contentOf(task.gene), g.usesPieceKeys ? task.mark.key : 0,
                                    g.usesPiecePlaces ? &task.mark.place : nullptr,
-                                   g.hasAppearance ? &scratch.looks[s.look] : nullptr, s);
+                                   g.hasAppearance ? &scratch.looks[s.look] : nullptr, s,
+                                   scratch.carried.data() + task.mark.carried, std::uint32_t(g.carriedNames.size()));
     SubtreeMemo::Found found;
     const std::size_t first = out.primitives.size();
     if (memo.find(start, found) && first + found.count <= maxPrimitives &&
@@ -200,7 +201,8 @@ namespace {
 namespace {
 /// Derive's state before its first task: `out` cleared, one task for `gene` on `start` (its
 /// scope and look), the stacks empty below it.
-void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_t gene, const SubtreeStart& start) {
+void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_t gene, const SubtreeStart& start,
+           const float* carried) {
     out.clear();
     scratch.reused.clear();
     scratch.open.clear();
@@ -211,6 +213,7 @@ void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_
     scratch.scopes.clear();
     scratch.frames.clear();
     scratch.collections.clear();
+    scratch.carried.assign(carried, carried + g.carriedNames.size());
     Scope s = start.scope;
     if (g.hasAppearance) {
         scratch.looks.clear();
@@ -221,7 +224,7 @@ void begin(const Grammar& g, Geometry& out, DeriveScratch& scratch, std::uint32_
     if (scratch.scopes.capacity() < scratch.stack.capacity()) scratch.scopes.reserve(scratch.stack.capacity());
     scratch.params.resize(kParamBlockFloats);
     scratch.scopes.push_back(s);
-    scratch.stack.push_back({gene, 0, UINT32_MAX, 0, 0, DeriveScratch::kNoFrame, {start.key, start.place}});
+    scratch.stack.push_back({gene, 0, UINT32_MAX, 0, 0, DeriveScratch::kNoFrame, {start.key, start.place, 0}});
 }
 
 /// Whether `task` is the first task of its gene's subtree, on its parent's scope (what the memo
@@ -280,6 +283,8 @@ struct Derivation {
     loadGeneAndFrame(r, d.c, task.gene, d.scratch.frames, task.frame, params);
     if (d.g.marksPieces) [[unlikely]]
         loadPieceMark(d.g, task.mark, params);
+    if (!d.g.carriedNames.empty()) [[unlikely]]
+        loadCarried(d.g, d.scratch.carried, task.mark.carried, params);
 }
 
 /// The let values a task has now, for tasks it pushes that go on in this gene.
@@ -305,6 +310,23 @@ template <class Eval>
     // the parent scope stays where it is: at or below task.scope
     const std::uint32_t frame = snapshot(r, d.scratch.frames, params);
     d.scratch.stack.push_back({task.gene, i + 1, task.end, std::uint32_t(scopes.size() - 1), task.parent, frame, task.mark});
+}
+
+/// A Set statement at statement `i`: a new block of carried values (the task's, with attribute
+/// `st.slot` = `value`), and the rest of the task as a task of its own that carries it, on `s`
+/// with the let values it has now (it runs next, before anything the task pushed).
+[[gnu::noinline]] void setCarried(const Derivation& d, const Rule& r, const Statement& st, const DeriveScratch::Task& task,
+                                  std::uint32_t i, const Scope& s, const float* params, float value) {
+    std::vector<float>& carried = d.scratch.carried;
+    const std::size_t n = d.g.carriedNames.size(), at = carried.size();
+    carried.resize(at + n);
+    std::copy_n(carried.begin() + task.mark.carried, n, carried.begin() + std::ptrdiff_t(at));
+    carried[at + st.slot] = value;
+    PieceMark mark = task.mark;
+    mark.carried = std::uint32_t(at);
+    d.scratch.scopes.push_back(s);
+    const std::uint32_t frame = snapshot(r, d.scratch.frames, params);
+    d.scratch.stack.push_back({task.gene, i + 1, task.end, std::uint32_t(d.scratch.scopes.size() - 1), task.parent, frame, mark});
 }
 
 /// What a primitive kind's emit reads (K::emit, setParams): its expressions and its slot.
@@ -464,13 +486,16 @@ template <Focus F>
             openCollections(g, st, task, s, snapshot(r, scratch.frames, params), scratch);
             break;
         case StatementKind::Send:
-            if (!sendScope(scratch.collections, st, s)) [[unlikely]]
+            if (!sendScope(scratch.collections, st, s, task.mark.carried)) [[unlikely]]
                 return DeriveStatus::Truncated;
             break;
         case StatementKind::Gather:
             if (Collection* open = scratch.collections.ofGather(st.slot)) open->frame = snapshot(r, scratch.frames, params);
             i = st.end - 1;
             break;
+        case StatementKind::Set:
+            setCarried(d, r, st, task, i, s, params, eval(st.expr[0]));
+            return DeriveStatus::Complete;  // the rest of the task goes on in the task setCarried pushed
         case StatementKind::Pieces:
             pushPieces(g, st, task.gene, s, params, parentSize, evalStack, snapshot(r, scratch.frames, params),
                        task.mark, scratch);
@@ -508,6 +533,7 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
             if (task.gene == focus && startsSubtree(task)) {
                 const Scope& s = scopes[task.scope];
                 starts->push_back({s, g.hasAppearance ? scratch.looks[s.look] : Appearance{}, task.mark.key, task.mark.place});
+                std::copy_n(scratch.carried.begin() + task.mark.carried, g.carriedNames.size(), starts->back().carried);
                 continue;
             }
             if (!onPath(d, task.gene)) continue;
@@ -529,7 +555,7 @@ DeriveStatus run(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScr
 }  // namespace
 
 DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
-    begin(g, out, scratch, 0, SubtreeStart{});
+    begin(g, out, scratch, 0, SubtreeStart{}, g.carriedDefaults.data());
     if (c.empty()) {
         scratch.tasks = 0;
         return DeriveStatus::Complete;
@@ -541,7 +567,7 @@ DeriveStatus derive(const Grammar& g, const Chromosome& c, Geometry& out, Derive
 
 DeriveStatus deriveSubtree(const Grammar& g, const Chromosome& c, std::uint32_t gene, const SubtreeStart& start,
                            Geometry& out, DeriveScratch& scratch, std::size_t maxPrimitives) {
-    begin(g, out, scratch, gene, start);
+    begin(g, out, scratch, gene, start, start.carried);
     return run<Focus::None>(g, c, out, scratch, maxPrimitives, nullptr, 0, {}, nullptr);
 }
 
@@ -555,7 +581,7 @@ DeriveStatus findSubtreeStarts(const Grammar& g, const Chromosome& c, std::uint3
         path.push_back(at);
     }
     Geometry& none = scratch.pathGeometry;
-    begin(g, none, scratch, 0, SubtreeStart{});
+    begin(g, none, scratch, 0, SubtreeStart{}, g.carriedDefaults.data());
     return run<Focus::Path>(g, c, none, scratch, maxPrimitives, nullptr, gene, path, &starts);
 }
 

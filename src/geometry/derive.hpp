@@ -24,6 +24,7 @@ inline constexpr std::uint32_t kNoPiecePlace = piecePlace(0, 1);
 struct PieceMark {
     std::uint32_t key = 0;
     std::uint32_t place = kNoPiecePlace;
+    std::uint32_t carried = 0;  ///< its carried attributes' values: DeriveScratch::carried[carried, + count)
 };
 
 /// `mark`'s piece key (its bits) and, with piece.index / piece.count, its place into the
@@ -34,6 +35,13 @@ struct PieceMark {
         params[kPieceIndexSlot] = float(mark.place & 0xFFFFu);
         params[kPieceCountSlot] = float(mark.place >> 16);
     }
+}
+
+/// The carried attribute values at `block` of `carried` into the parameter block, where the
+/// attributes' names read them (only grammars that declare some).
+[[gnu::always_inline]] inline void loadCarried(const Grammar& g, const std::vector<float>& carried, std::uint32_t block,
+                                               float* params) {
+    std::memcpy(params + kCarriedSlot, carried.data() + block, g.carriedNames.size() * sizeof(float));
 }
 
 /// The gene's stored parameters (`gene`: its word in `c`, of rule `r`) and, unless `frame` is
@@ -69,6 +77,7 @@ struct SubtreeStart {
     Appearance look;
     std::uint32_t key = 0;
     std::uint32_t place = kNoPiecePlace;  ///< piecePlace(piece.index, piece.count)
+    float carried[kMaxCarried] = {};      ///< the carried attributes' values (Grammar::carriedNames)
 };
 
 /// Reusable work space for derive (no allocation once warm).
@@ -94,6 +103,9 @@ struct DeriveScratch {
     /// Let values of tasks that continue a gene (mirrors, pieces), appended and never popped
     /// during one derivation (only rules with lets or inline arguments write any).
     std::vector<float> frames;
+    /// Carried attribute values, one block of Grammar::carriedNames.size() per value set, appended
+    /// by `set` and never popped during one derivation (only grammars that declare some).
+    std::vector<float> carried;
     std::vector<PieceScope> pieces;    ///< work space of split / comp / lot statements
     std::vector<std::uint32_t> repetitions;  ///< per kind of piece of a list: how many came before (`per piece`)
     std::vector<PieceMark> pieceMarks;       ///< the marks of the pieces being pushed (Grammar::marksPieces)

@@ -71,14 +71,23 @@ private:
                     cs_.localFrames.end() - std::ptrdiff_t(frameFloats_));
         return frame;
     }
-    /// E on entity i, with its let values.
+    /// The carried values of block `block` into params_ (grammars that declare some).
+    void loadCarriedBlock(std::uint32_t block) {
+        if (block == loadedCarried_) return;
+        loadCarried(g_, scratch_.carried, block, params_);
+        loadedCarried_ = block;
+    }
+    /// E on entity i, with its let values and carried values.
     float entityValue(const ExprRef& e, std::uint32_t i) {
         load(cs_.frameOf[i]);
+        if (list_->width > 0) loadCarriedBlock(std::uint32_t(list_->values[i]));
         return evaluateOn(e, list_->scopes[i]);
     }
-    /// E on the invocation's scope, with group k's let values (N, K, U, T).
+    /// E on the invocation's scope, with group k's let values (N, K, U, T) and the invocation's
+    /// carried values.
     float groupValue(const ExprRef& e, std::uint32_t k) {
         load(groupFrame(k));
+        if (list_->width > 0) loadCarriedBlock(marker_.mark.carried);
         return evaluateOn(e, invocation_);
     }
     /// The list (and each entity's frame) in the order cs_.order.
@@ -115,6 +124,7 @@ private:
     lists::EntityList* list_;
     lists::EntityList* spare_;
     std::uint32_t loaded_ = kNone;  ///< the local frame params_ holds
+    std::uint32_t loadedCarried_ = kNone;  ///< the carried block params_ holds
 };
 
 void GatherRun::orderBy(const ListOp* ops) {
@@ -343,6 +353,7 @@ void GatherRun::pushRouted(const ListOp& op, int successor, const std::vector<st
         PieceMark mark = marker_.mark;
         if (g_.usesPieceKeys) mark.key = pieceKey(marker_.mark.key, 2 * marker_.statement + std::uint32_t(successor), k);
         if (g_.usesPiecePlaces) mark.place = piecePlace(k - starts[group - 1], starts[group] - starts[group - 1]);
+        if (list_->width > 0) mark.carried = std::uint32_t(list_->values[e]);
         std::uint32_t frame = DeriveScratch::kNoFrame;
         if (frameFloats_ > 0) {
             std::uint32_t& stored = cs_.storedFrame[cs_.frameOf[e]];
@@ -372,15 +383,16 @@ void openCollections(const Grammar& g, const Statement& st, const DeriveScratch:
     const auto at = std::uint32_t(scratch.scopes.size() - 1);
     for (std::uint32_t k = st.end; k-- > 0;) {
         const std::uint32_t gather = st.slot + k;
-        scratch.collections.push(g.gathers[gather].list, gather, frame);
+        scratch.collections.push(g.gathers[gather].list, gather, frame, g.carries() ? 1 : 0);
         scratch.stack.push_back({task.gene, gather, DeriveScratch::kGatherMarker, at, task.parent, frame, task.mark});
     }
 }
 
-bool sendScope(Collections& collections, const Statement& st, const Scope& s) {
+bool sendScope(Collections& collections, const Statement& st, const Scope& s, std::uint32_t carried) {
     Collection* c = collections.innermost(st.slot);
     if (c == nullptr || c->entities.size() >= kMaxListEntities) return false;
     c->entities.scopes.push_back(s);
+    if (c->entities.width > 0) c->entities.values.push_back(double(carried));  // attribute 0: its carried block
     return true;
 }
 
@@ -390,6 +402,7 @@ void runGatherMarker(const Grammar& g, const Chromosome& c, const DeriveScratch:
     const Collection& open = scratch.collections.pool[scratch.collections.open - 1];
     loadGeneAndFrame(r, c, marker.gene, scratch.frames, open.frame, params);
     loadPieceMark(g, marker.mark, params);
+    if (g.carries()) loadCarried(g, scratch.carried, marker.mark.carried, params);
     runGather(g, r, marker, params, evalStack, scratch);
 }
 

@@ -7,8 +7,8 @@
 // with its own copy of the let values (its group's); an entity routed to successor s (0 or 1)
 // of gather i is the k-th of the n entities of its group routed there, and its task reads
 // piece.index k and piece.count n and, for `per piece` parameters, the piece key of the j-th
-// piece of kind 2i + s below the invocation's (j: its place among all routed there); the first
-// routed entity runs first. Nothing allocates once the work space (Collections) has grown.
+// piece of kind 2i + s below the invocation's (j: its place among all routed there), and the
+// carried attribute values the entity had when it was sent; the first routed entity runs first. Nothing allocates once the work space (Collections) has grown.
 #pragma once
 #include "geometry/derive.hpp"
 
@@ -22,8 +22,9 @@ void openCollections(const Grammar& g, const Statement& st, const DeriveScratch:
                      std::uint32_t frame, DeriveScratch& scratch);
 
 /// A Send statement: `s` into the innermost open collection of its list (the parser checked that
-/// one exists); false when that collection is full (kMaxListEntities).
-bool sendScope(Collections& collections, const Statement& st, const Scope& s);
+/// one exists), with `carried` (its carried values' block, DeriveScratch::carried) when the
+/// grammar declares carried attributes; false when that collection is full (kMaxListEntities).
+bool sendScope(Collections& collections, const Statement& st, const Scope& s, std::uint32_t carried);
 
 /// A marker task: its gene's parameters, the gather's let values and the invocation's mark into
 /// `params`, then runGather.

@@ -16,7 +16,7 @@ static_assert(std::is_trivially_copyable_v<Primitive> && std::is_trivially_copya
 }  // namespace
 
 SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const std::uint32_t* place, const Appearance* look,
-                          const Scope& s) {
+                          const Scope& s, const float* carried, std::uint32_t carriedCount) {
     words[0] = std::uint32_t(content);
     words[1] = std::uint32_t(content >> 32);
     words[2] = key;
@@ -31,7 +31,9 @@ SubtreeMemo::Start::Start(std::uint64_t content, std::uint32_t key, const std::u
     std::memcpy(&words[n], &s.origin[0], 12);
     std::memcpy(&words[n + 3], &s.axes[0][0], 36);
     std::memcpy(&words[n + 12], &s.size[0], 12);
-    count = n + 15;
+    n += 15;
+    if (carriedCount > 0) std::memcpy(&words[n], carried, carriedCount * sizeof(float));
+    count = n + carriedCount;
     hash = quickHash(words, count);
 }
 

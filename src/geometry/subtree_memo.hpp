@@ -43,13 +43,15 @@ public:
     /// Where a subtree starts: its content's number, its piece key, its piece place (grammars
     /// reading piece.index / piece.count), look (with colours) and scope, as words.
     struct Start {
-        static constexpr std::size_t kMaxWords = 3 + 1 + 5 + 15;
+        static constexpr std::size_t kMaxWords = 3 + 1 + 5 + 15 + kMaxCarried;
         std::uint32_t words[kMaxWords];
         std::uint32_t count = 0;
         std::uint64_t hash = 0;
         /// `place` is null for grammars that read no piece.index or piece.count, `look` for
-        /// grammars without colours or materials (so every start of one grammar has as many words).
-        Start(std::uint64_t content, std::uint32_t key, const std::uint32_t* place, const Appearance* look, const Scope& s);
+        /// grammars without colours or materials, and `carriedCount` 0 for grammars without
+        /// carried attributes (so every start of one grammar has as many words).
+        Start(std::uint64_t content, std::uint32_t key, const std::uint32_t* place, const Appearance* look, const Scope& s,
+              const float* carried = nullptr, std::uint32_t carriedCount = 0);
     };
     /// A stored subtree's output, valid until the next store().
     struct Found {

@@ -323,9 +323,17 @@ int ExpressionCompiler::parseIdentifier(const Token& t) {
         return add(n);
     }
     if (t.text == "piece" && tokens_.peek().is('.')) return parsePieceField(t);
+    for (std::size_t k = 0; carried_ && k < carried_->size(); ++k)
+        if ((*carried_)[k] == t.text) {
+            if (!ctx_->allowScope) failConstantPlace(t.where, "carried attribute '" + t.text + "'");
+            Node n{Node::ParamRef};
+            n.first = kCarriedSlot + int(k);
+            n.where = t.where;
+            return add(n);
+        }
     tokens_.fail(t.where, "unknown name '" + t.text +
                               "': expected a parameter declared above in this rule, an argument of the rule, "
-                              "a let value, an attr, scope.size, scope.origin, scope.axis.x (.y, .z), "
+                              "a let value, an attr, a carried attribute, scope.size, scope.origin, scope.axis.x (.y, .z), "
                               "parent.size, piece.index, piece.count, pi, or a function "
                               "(min max abs sin cos sqrt floor atan2 length dot distance)");
 }

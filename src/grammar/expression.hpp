@@ -59,8 +59,11 @@ public:
     int scopeFrameReads() const { return scopeFrameReads_; }
     /// How many times the expressions compiled so far read piece.index or piece.count.
     int piecePlaceReads() const { return piecePlaceReads_; }
+    /// The grammar's carried attributes (read by name, after parameters, arguments, lets and attrs).
+    void setCarried(const std::vector<std::string>* names) { carried_ = names; }
 
 private:
+    const std::vector<std::string>* carried_ = nullptr;
     struct Node {
         enum Kind { Number, ParamRef, ScopeSize, ParentSize, Vector, Negate, Binary, Call, Swizzle, Not } kind;
         explicit Node(Kind k) : kind(k) {}

@@ -98,6 +98,7 @@ enum class StatementKind : std::uint8_t {
              // collection each, gathered once everything this invocation started is done
     Send,    // a copy of the current scope goes into the innermost open collection of list `slot` (Grammar::listNames)
     Gather,  // gather Grammar::gathers[slot] { ... }: the place its frame is taken; its routes' bodies follow; `end` is after them
+    Set,     // set NAME = expr[0]: carried attribute `slot` (Grammar::carriedNames) of the current shape and all it derives
 };
 struct Statement {
     StatementKind kind;
@@ -232,7 +233,12 @@ inline constexpr std::uint16_t kPieceCountSlot = kPieceKeySlot + 2;
 inline constexpr std::uint16_t kScopeOriginSlot = kPieceKeySlot + 3;
 inline constexpr std::uint16_t kScopeAxisSlot = kScopeOriginSlot + 3;  ///< axis a at kScopeAxisSlot + 3 * a
 /// Floats of derive's parameter block: the last slot above, plus one.
-inline constexpr std::size_t kParamBlockFloats = std::size_t(kScopeAxisSlot) + 9;
+/// Most carried attributes a grammar declares (`carry NAME = VALUE`).
+inline constexpr std::size_t kMaxCarried = 8;
+/// Parameter-block index of the running task's carried attribute values (derive writes them only
+/// when the grammar declares some).
+inline constexpr std::uint16_t kCarriedSlot = kScopeAxisSlot + 9;
+inline constexpr std::size_t kParamBlockFloats = std::size_t(kCarriedSlot) + kMaxCarried;
 
 struct Rule {
     std::string name;
@@ -279,6 +285,11 @@ struct Grammar {
     std::vector<Gather> gathers;          ///< every gather block (Open and Gather statements index it)
     std::vector<ListOp> listOps;
     bool hasLists = false;                ///< a gather exists (derive checks its markers)
+    /// Carried attributes (`carry NAME = VALUE`): every shape carries one value of each, which its
+    /// descendants inherit and `set` changes; expressions read it by name.
+    std::vector<std::string> carriedNames;
+    std::vector<float> carriedDefaults;   ///< the value a derivation's first shape carries
+    bool carries() const { return !carriedNames.empty(); }
     int maxStack = 0;        ///< deepest expression evaluation stack
     /// Largest number of genes a freshly grown gene of each rule brings with it (mandatory children).
     std::vector<std::uint32_t> mandatoryGenes;

@@ -55,6 +55,8 @@ Grammar Parser::run() {
             const SourceLocation at = tokens_.peek().where;
             const std::string name = tokens_.expectIdentifier("an attribute name after 'attr'");
             if (attrs_.count(name)) tokens_.fail(at, "attr '" + name + "' is defined twice");
+            for (const std::string& c : g_.carriedNames)
+                if (c == name) tokens_.fail(at, "'" + name + "' is already a carried attribute");
             if (isReservedName(name))
                 tokens_.fail(at, "'" + name + "' is a reserved name (scope, parent, pi and the functions) and cannot name an attr");
             tokens_.expect('=', "after the attribute name");
@@ -62,6 +64,22 @@ Grammar Parser::run() {
             parseConstantValue(v, "the value of attr " + name, nullptr, false);
             const auto o = overrides_.find(name);
             attrs_[name] = o != overrides_.end() ? o->second : v[0];
+        } else if (t.isWord("carry")) {
+            tokens_.take();
+            const SourceLocation at = tokens_.peek().where;
+            const std::string name = tokens_.expectIdentifier("the name of a carried attribute after 'carry'");
+            if (isReservedName(name))
+                tokens_.fail(at, "'" + name + "' is a reserved name (scope, parent, pi and the functions) and cannot name a carried attribute");
+            if (attrs_.count(name)) tokens_.fail(at, "'" + name + "' is already an attr");
+            for (const std::string& c : g_.carriedNames)
+                if (c == name) tokens_.fail(at, "carried attribute '" + name + "' is declared twice");
+            if (g_.carriedNames.size() >= kMaxCarried)
+                tokens_.fail(at, "too many carried attributes (at most " + std::to_string(kMaxCarried) + ")");
+            tokens_.expect('=', "after 'carry " + name + "' (its default value)");
+            double v[3];
+            parseConstantValue(v, "the default of carried attribute " + name, nullptr, false);
+            g_.carriedNames.push_back(name);
+            g_.carriedDefaults.push_back(float(v[0]));
         } else if (t.isWord("rule")) {
             tokens_.take();
             RuleHeader h;
@@ -108,7 +126,7 @@ Grammar Parser::run() {
             headerIndex_.emplace(h.name, int(headers_.size()));
             headers_.push_back(std::move(h));
         } else {
-            tokens_.expected("'start', 'attr' or 'rule' at the top level");
+            tokens_.expected("'start', 'attr', 'carry' or 'rule' at the top level");
         }
     }
     const SourceLocation endAt = tokens_.peek().where;
@@ -118,6 +136,7 @@ Grammar Parser::run() {
             throw InputError(g_.path, "", "grammar.attr." + name + " is set, but the grammar defines no attr '" + name + "'");
     }
     g_.attrs = attrs_;
+    exprs_.setCarried(&g_.carriedNames);
     // Pass 2: bodies, plain rules in file order, then instances in order of first use.
     for (std::size_t h = 0; h < headers_.size(); ++h) {
         if (headers_[h].plainId < 0) continue;

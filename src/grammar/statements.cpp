@@ -16,7 +16,7 @@ namespace shapevo::grammar_detail {
 namespace {
 /// The words that begin a statement other than a primitive or an inline call, in the order the
 /// error messages list them: these, then the kinds' keywords, then the second list.
-constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "scale", "size", "translate", "rotate", "mirror"};
+constexpr std::string_view kWordsBeforeKinds[] = {"param", "let", "set", "scale", "size", "translate", "rotate", "mirror"};
 constexpr std::string_view kWordsAfterKinds[] = {"color", "material", "texture", "extrude", "split", "repeat", "comp", "lot",
                                                  "center", "corners", "edges", "copy", "if", "case", "terminal", "child",
                                                  "send", "gather"};
@@ -210,8 +210,8 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
         compileVector(scope, s.expr);
         if (s.kind != StatementKind::Translate) scope.form = ScopeForm::Unknown;
     } else if (word.text == "rotate" || word.text == "mirror") {
-        if (terminalAt_ && word.text == "mirror")
-            tokens_.fail(word.where, "'mirror' cannot be used inside 'terminal { }' (opened at line " +
+        if (terminalAt_ && (word.text == "mirror" || word.text == "set"))
+            tokens_.fail(word.where, "'" + word.text + "' cannot be used inside 'terminal { }' (opened at line " +
                                          std::to_string(terminalAt_->line) + ")");
         const SourceLocation at = tokens_.peek().where;
         const std::string axis = tokens_.expectIdentifier("an axis x, y or z after '" + word.text + "'");
@@ -244,6 +244,21 @@ void Parser::parseStatement(Rule& rule, BodyScope& scope) {
         // visible below (a later let of the same name hides it)
         scope.bindings.push_back(letValue(rule, name, exprs_.lastDims(), e, at));
         return;
+    } else if (word.text == "set") {
+        if (terminalAt_)
+            tokens_.fail(word.where, "'set' cannot be used inside 'terminal { }' (opened at line " +
+                                         std::to_string(terminalAt_->line) + ")");
+        const SourceLocation at = tokens_.peek().where;
+        const std::string name = tokens_.expectIdentifier("the name of a carried attribute after 'set'");
+        std::size_t k = 0;
+        while (k < g_.carriedNames.size() && g_.carriedNames[k] != name) ++k;
+        if (k == g_.carriedNames.size())
+            tokens_.fail(at, "'" + name + "' is not a carried attribute: declare it at the top level first (carry " + name +
+                                 " = VALUE)");
+        tokens_.expect('=', "after 'set " + name + "'");
+        s.kind = StatementKind::Set;
+        s.slot = std::uint16_t(k);
+        compileScalar(scope, s.expr[0]);
     } else if (word.text == "extrude") {
         if (scope.form == ScopeForm::Volume)
             tokens_.fail(word.where, "'extrude' needs a flat scope (a lot, a face from comp, a split of one); "

@@ -116,7 +116,7 @@ inline void checkAccepted(const Grammar& g) {
             const Statement& st = rule.statements[index];
             int n = 0;
             switch (st.kind) {
-            case StatementKind::Rotate: case StatementKind::If: case StatementKind::Extrude: n = 1; break;
+            case StatementKind::Rotate: case StatementKind::If: case StatementKind::Extrude: case StatementKind::Set: n = 1; break;
             case StatementKind::Primitive:  // a kind's arguments (cone top, roof top (x, z)): those it set
                 for (const ExprRef& e : st.expr)
                     if (e.end > e.begin) checkExpression(e);
@@ -127,6 +127,7 @@ inline void checkAccepted(const Grammar& g) {
             default: break;
             }
             if (st.kind == StatementKind::Child) FUZZ_CHECK(st.slot < rule.slots.size());
+            if (st.kind == StatementKind::Set) FUZZ_CHECK(st.slot < g.carriedNames.size());
             if (st.kind == StatementKind::Primitive && st.primitive == PrimitiveKind::Mesh) FUZZ_CHECK(st.slot < g.meshes.size());
             if (st.kind == StatementKind::TerminalBegin) FUZZ_CHECK(st.end < count && rule.statements[st.end].kind == StatementKind::TerminalEnd);
             if (st.kind == StatementKind::Rotate || st.kind == StatementKind::Mirror) FUZZ_CHECK(st.axis < 3);

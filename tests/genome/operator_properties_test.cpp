@@ -97,7 +97,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedGrammars, OperatorProperties,
                                            "grammars/city.grammar", "grammars/city-filling.grammar",
                                            "grammars/castle.grammar", "grammars/building.grammar", "grammars/houses.grammar",
                                            "grammars/city-zones.grammar", "grammars/street-numbers.grammar",
-                                           "grammars/street-view.grammar"));
+                                           "grammars/street-view.grammar", "grammars/carried-tree.grammar"));
 
 INSTANTIATE_TEST_SUITE_P(ShippedGraphFiles, OperatorProperties, ::testing::ValuesIn(shippedGraphFiles()), pathTestName);
 

@@ -60,7 +60,7 @@ const std::vector<MalformedGraph>& graphCases() {
          "repeat takes either count: N or size: SIZE (S, ~S or 'S), not both or neither"},
         {"ExpressionErrorAtItsNodeLine", graph("node a = translate(x: nosuch)\nstart -> a\n"), "bad.pcg:3:6",
          "unknown name 'nosuch': expected a parameter declared above in this rule, an argument of the rule, a let value, an attr, "
-         "scope.size, scope.origin, scope.axis.x (.y, .z), parent.size, piece.index, piece.count, pi, or a function (min max abs "
+         "a carried attribute, scope.size, scope.origin, scope.axis.x (.y, .z), parent.size, piece.index, piece.count, pi, or a function (min max abs "
          "sin cos sqrt floor atan2 length dot distance) (in its translation to the shapevo language:   "
          "translate (nosuch, 0, 0))"},
         // --- ports and edges ------------------------------------------------------------
