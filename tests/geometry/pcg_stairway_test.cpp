@@ -117,3 +117,30 @@ TEST(PcgStairway, ACopyNodeWithCountZeroMakesNothing) {
 }
 
 }  // namespace shapevo
+
+namespace shapevo {
+
+TEST(PcgStairway, TheAttributeMappedStairwayDerivesTheSameStairway) {
+    // stairway-mapped.pcg maps both indices to carried attributes and turns each tread once by its
+    // place k; stairway.pcg turns it twice: the same boxes up to float rounding, tread for tread
+    const Grammar spent = loadGrammar(test::sourcePath("grammars/pcg/stairway.pcg"));
+    const Grammar mapped = loadGrammar(test::sourcePath("grammars/pcg/stairway-mapped.pcg"));
+    ASSERT_EQ(spent.rules[spent.start].geneWords(), mapped.rules[mapped.start].geneWords());
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+        Chromosome c;
+        Rng rng{seed};
+        ASSERT_TRUE(growUncontrolled(spent, c, rng, 10));
+        const Geometry a = test::deriveComplete(spent, c), b = test::deriveComplete(mapped, c);
+        ASSERT_EQ(a.primitives.size(), b.primitives.size()) << "seed " << seed;
+        for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_NEAR(a.primitives[i].centre[k], b.primitives[i].centre[k], 1e-4f) << "seed " << seed << " primitive " << i;
+                EXPECT_NEAR(a.primitives[i].half[k], b.primitives[i].half[k], 1e-5f) << "seed " << seed << " primitive " << i;
+                for (int j = 0; j < 3; ++j)
+                    EXPECT_NEAR(a.primitives[i].axes[k][j], b.primitives[i].axes[k][j], 1e-5f) << "seed " << seed;
+            }
+        }
+    }
+}
+
+}  // namespace shapevo

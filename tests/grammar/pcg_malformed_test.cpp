@@ -35,7 +35,7 @@ const std::vector<MalformedGraph>& graphCases() {
         // --- nodes and their operations -------------------------------------------------
         {"UnknownNodeOperation", graph("node a = boxx()\nstart -> a\n"), "bad.pcg:3:10",
          "unknown node operation 'boxx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\""},
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, set, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\""},
         {"DuplicateNodeId", graph("node a = box()\nnode a = sphere()\nstart -> a\n"), "bad.pcg:4:6",
          "node id 'a' is used twice (first at line 3)"},
         {"NodeIdSameAsAGate", graph("node start = box()\n"), "bad.pcg:3:6", "node id 'start' is used twice (first at line 2)"},
@@ -76,7 +76,7 @@ const std::vector<MalformedGraph>& graphCases() {
         {"EdgeFromAnOutputGate", graph("out done : volume\nnode a = box()\nstart -> a\ndone -> a\n"), "bad.pcg:6:1",
          "'done' is an output gate: edges end there (... -> done)"},
         {"MissingArrow", graph("node a = box()\nstart a\n"), "bad.pcg:4:7",
-         "expected '->' after start (statements: graph, attr, param, in, out, node, block; edges: SRC.PORT -> DST.PORT), found 'a'"},
+         "expected '->' after start (statements: graph, attr, carry, param, in, out, node, block; edges: SRC.PORT -> DST.PORT), found 'a'"},
         {"UnconnectedRequiredInput", graph("node a = box()\nnode b = box()\nstart -> a\n"), "bad.pcg:4:6",
          "input 'in' of node 'b' (box) is not connected: an edge must lead to it"},
         {"NodeNeverReached", graph("node a = box()\nnode b = translate(x: 1)\nstart -> a\nb -> b\n"), "bad.pcg:4:6",
@@ -137,6 +137,13 @@ const std::vector<MalformedGraph>& graphCases() {
          "bad.pcg:3:35", "argument 'kind' of aggregate is one of min, max, avg, sum, group_index, not 'mean'"},
         {"GroupByWithoutKey", graph("node o = group_by()\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:10",
          "group_by needs at least one key: group_by(scope.size.y, scope.origin.x)"},
+        {"CarriedAttributeDeclaredInAnIncludedGraph", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:2:7",
+         "carried attribute 'level' is declared in an included graph: declare carried attributes in the main graph, which every "
+         "included graph reads and sets by name",
+         {{"sub.pcg", "graph Sub\ncarry level = 0\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
+        {"SetOfAnUndeclaredAttribute", graph("node s = set(name: level, value: 1)\nnode b = box()\nstart -> s\ns -> b\n"), "bad.pcg:3:6",
+         "'level' is not a carried attribute: declare it at the top level first (carry level = VALUE) (in its translation to the "
+         "shapevo language:   set level = 1)"},
         {"MisspeltSortDirection", graph("node o = order_by(scope.size.y dsc)\nnode b = box()\nstart -> o\no -> b\n"), "bad.pcg:3:6",
          "expected a list operation (order by, reverse, shuffle, let NAME = min|max|avg|sum(E), group by, cluster, unify, merge, "
          "ungroup) or a route (each, keep first, where) in 'gather pcg_l_o', found 'dsc' (in its translation to the shapevo language:     order by scope.size.y dsc)"},
@@ -163,7 +170,7 @@ const std::vector<MalformedGraph>& graphCases() {
          {{"sub.pcg", "graph Sub\nparam w = uniform(1, 2)\nin lot : volume\nnode b = box()\nlot -> b\n"}}},
         {"ProblemInsideAnIncludedFileIsAtItsLine", graph("node h = include \"sub.pcg\"\nstart -> h\n"), "sub.pcg:4:10",
          "unknown node operation 'bx': expected one of box, cylinder, cone, sphere, paraboloid, roof, extrude, translate, rotate, "
-         "scale, size, color, split, repeat, copy, comp, lot_rect, if, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\"",
+         "scale, size, color, split, repeat, copy, comp, lot_rect, if, set, chance, order_by, reverse, shuffle, group_by, cluster, unify, merge, ungroup, aggregate, amount_filter, filter or include \"FILE.pcg\"",
          {{"sub.pcg", "graph Sub\nin lot : volume\nlot -> b\nnode b = bx()\n"}}},
         {"UnconnectedIncludeInput", graph("node h = include \"sub.pcg\"\nnode a = box()\nstart -> a\n"), "bad.pcg:3:6",
          "input 'lot' of node 'h' (an included graph) is not connected: an edge must lead to it",

@@ -81,6 +81,13 @@ private:
             if (!prefix.empty()) rename[name] = prefix + name;
         };
         for (const AttrDecl& a : f.attrs) declareName(a.name, a.where);
+        for (const AttrDecl& a : f.carried) {
+            if (!prefix.empty())
+                failAt(a.where, "carried attribute '" + a.name + "' is declared in an included graph: declare carried attributes "
+                                "in the main graph, which every included graph reads and sets by name");
+            declareName(a.name, a.where);
+            g_.carried.push_back({a.name, expressionText(a.value, rename), a.where});
+        }
         for (const ParamDecl& p : f.params) declareName(p.name, p.where);
         for (const AttrDecl& a : f.attrs) {
             auto b = bound.find(a.name);

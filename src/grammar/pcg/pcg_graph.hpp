@@ -82,6 +82,7 @@ struct FlatGraph {
     std::vector<FlatEdge> edges;     ///< file order likewise
     std::vector<GraphValue> values;  ///< declaration order (an instance's after its includer's)
     std::vector<GraphAttr> attrs;
+    std::vector<GraphAttr> carried;  ///< the main file's `carry` declarations (graph-wide: includes read and set them)
     std::vector<std::string> files;  ///< included files, relative to the main file's folder
     std::vector<ExecutionScope> scopes;  ///< [0] the main graph's, then one per include node
     std::vector<ListChain> chains;       ///< filled by checkPcgGraph

@@ -24,6 +24,11 @@ void writeRoof(NodeWriter& w) {
     w.line("roof " + w.arg(0));
     w.flow(0);
 }
+/// `set NAME = VALUE` (PCGR's attribute mapping: a value into a carried graph attribute).
+void writeSet(NodeWriter& w) {
+    w.line("set " + w.arg(0) + " = " + w.arg(1));
+    w.flow(0);
+}
 void writeExtrude(NodeWriter& w) {
     w.line("extrude " + w.arg(0));
     w.flow(0);
@@ -182,6 +187,8 @@ const std::vector<NodeOp>& table() {
          writeLotRect},
         {"if", "route to true or false by a condition", {kAnyIn}, {{"true", PortType::Same}, {"false", PortType::Same}},
          {{"condition", ArgKind::Expr, nullptr}}, writeIf, true},
+        {"set", "the shape and all it derives carry value as attribute name (a `carry` of the main graph)", {kAnyIn},
+         {kSameOut}, {{"name", ArgKind::Expr, nullptr}, {"value", ArgKind::Expr, nullptr}}, writeSet},
         {"chance", "go on with probability p (a constant), in a gene of its own", {kAnyIn}, {{"yes", PortType::Same}},
          {{"p", ArgKind::Expr, nullptr}}, writeChance, true, Collect::None, true},
         {"order_by", "sort the list by keys (EXPR or EXPR desc), stable", {kListIn}, {kListOut},

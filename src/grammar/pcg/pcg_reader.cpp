@@ -27,9 +27,10 @@ public:
             if (++statements > kMaxStatements) in_.fail(in_.peek().where, "too many statements (at most 100000)");
             const Token t = in_.peek();  // a copy: peekSecond() may move the tokens
             if (t.kind != TokenKind::Identifier)
-                in_.expected("a statement (graph, attr, param, in, out, node, block or an edge SRC.PORT -> DST.PORT)");
+                in_.expected("a statement (graph, attr, carry, param, in, out, node, block or an edge SRC.PORT -> DST.PORT)");
             if (t.isWord("graph") && in_.peekSecond().kind == TokenKind::Identifier) readGraph(f);
-            else if (t.isWord("attr") && in_.peekSecond().kind == TokenKind::Identifier) readAttr(f);
+            else if (t.isWord("attr") && in_.peekSecond().kind == TokenKind::Identifier) readAttr(f, f.attrs);
+            else if (t.isWord("carry") && in_.peekSecond().kind == TokenKind::Identifier) readAttr(f, f.carried);
             else if (t.isWord("param") && in_.peekSecond().kind == TokenKind::Identifier) readParam(f);
             else if ((t.isWord("in") || t.isWord("out")) && in_.peekSecond().kind == TokenKind::Identifier) readGate(f);
             else if (t.isWord("node") && in_.peekSecond().kind == TokenKind::Identifier) readNode(f);
@@ -94,14 +95,16 @@ private:
         last_ = f.nameAt.line;
     }
 
-    void readAttr(PcgFile& f) {
+    /// `attr NAME = VALUE` or `carry NAME = VALUE` into `into`.
+    void readAttr(PcgFile& f, std::vector<AttrDecl>& into) {
+        (void)f;
         take();
         AttrDecl a;
         a.name = name("an attr name", a.where);
         last_ = a.where.line;
         expectSameLine('=', "after the attr name");
         a.value = lineExpression("a value after '='");
-        f.attrs.push_back(std::move(a));
+        into.push_back(std::move(a));
     }
 
     void readParam(PcgFile& f) {
@@ -191,7 +194,7 @@ private:
         const Token dash = in_.peek();  // a copy: peekSecond() may move the tokens
         if (!(dash.is('-') && in_.peekSecond().is('>') && dash.where.line == last_))
             in_.expected("'->' after " + from.node + (from.port.empty() ? "" : "." + from.port) +
-                         " (statements: graph, attr, param, in, out, node, block; edges: SRC.PORT -> DST.PORT)");
+                         " (statements: graph, attr, carry, param, in, out, node, block; edges: SRC.PORT -> DST.PORT)");
         take();
         take();
         bool first = true;

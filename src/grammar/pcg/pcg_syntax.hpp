@@ -68,6 +68,7 @@ struct PcgFile {
     std::string name;  ///< `graph NAME`
     Location nameAt;
     std::vector<AttrDecl> attrs;
+    std::vector<AttrDecl> carried;  ///< `carry NAME = VALUE`: graph attribute declarations with defaults
     std::vector<ParamDecl> params;
     std::vector<GateDecl> gates;
     std::vector<NodeDecl> nodes;

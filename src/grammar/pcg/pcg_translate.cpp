@@ -50,6 +50,7 @@ public:
         cur_ = &header;
         line("start " + g_.name, g_.nameAt);
         for (const GraphAttr& a : g_.attrs) line("attr " + a.name + " = " + a.value, a.where);
+        for (const GraphAttr& a : g_.carried) line("carry " + a.name + " = " + a.value, a.where);
         cur_ = &buffers_.emplace_back();
         line("rule " + g_.name + " {", g_.nameAt);
         declareValues();
