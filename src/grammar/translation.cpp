@@ -2,6 +2,7 @@
 // user's file) and listing one for `shapevo translate`.
 #include "grammar/translation.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -22,11 +23,16 @@ Grammar compileTranslation(const Translation& t, const std::string& source, cons
         const std::size_t colon = where.find(':');
         if (e.file() != path || colon == std::string::npos) throw;
         const long line = std::strtol(where.c_str(), nullptr, 10);
-        if (line < 1 || std::size_t(line) > t.origin.size()) throw;
+        if (line < 1 || t.origin.empty()) throw;
+        // past the translation's last line (its end of file, e.g. a brace an argument left open):
+        // the place its last line came from, never the translation's own line number
+        const bool pastEnd = std::size_t(line) > t.origin.size();
         std::istringstream lines(t.text);
         std::string generated;
-        for (long k = 0; k < line; ++k) std::getline(lines, generated);
-        const Location& from = t.origin[std::size_t(line - 1)];
+        for (long k = 0; k < line && std::getline(lines, generated); ++k) {
+        }
+        if (pastEnd) generated = "its end";
+        const Location& from = t.origin[std::min(std::size_t(line), t.origin.size()) - 1];
         throw InputError(from.file, std::to_string(from.line) + ":" + std::to_string(from.column),
                          e.message() + " (in its translation to the shapevo language: " + shortened(generated, 160) + ")");
     }
