@@ -145,6 +145,21 @@ TEST(NoAllocation, ImageScoringOfTreesAllocatesNothingOnceWarm) {
     }
 }
 
+/// Derives every chromosome of `pop` twice to warm one scratch, then `rounds` more times on it:
+/// the allocations those rounds made (a test failure too if they derived nothing).
+long allocationsDerivingWarm(const Grammar& g, const std::vector<Chromosome>& pop, int rounds, Geometry& out) {
+    DeriveScratch scratch;
+    std::size_t sink = 0;
+    for (int warm = 0; warm < 2; ++warm)
+        for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+    const long before = gAllocations.load();
+    for (int r = 0; r < rounds; ++r)
+        for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
+    const long allocations = gAllocations.load() - before;
+    EXPECT_GT(sink, 0u);
+    return allocations;
+}
+
 TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
     // Splits, repeats, comp, lots, inline calls, lets and colours reuse derive's work space.
     for (const char* name : {"castle", "building"}) {
@@ -156,15 +171,7 @@ TEST(NoAllocation, DerivingBuildingsAndCastlesAllocatesNothingOnceWarm) {
             while (c.genes < 40 && grow(g, c, rng, limits)) {
             }
         Geometry out;
-        DeriveScratch scratch;
-        std::size_t sink = 0;
-        for (int warm = 0; warm < 2; ++warm)
-            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
-        const long before = gAllocations.load();
-        for (int r = 0; r < 10; ++r)
-            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
-        EXPECT_EQ(gAllocations.load() - before, 0) << name;
-        EXPECT_GT(sink, 0u);
+        EXPECT_EQ(allocationsDerivingWarm(g, pop, 10, out), 0) << name;
         EXPECT_EQ(out.appearance.size(), out.primitives.size()) << name;
     }
 }
@@ -180,15 +187,7 @@ TEST(NoAllocation, DerivingGrammarsWithListsAllocatesNothingOnceWarm) {
             ASSERT_TRUE(growUncontrolled(g, pop[k], rng, 40)) << name;
         }
         Geometry out;
-        DeriveScratch scratch;
-        std::size_t sink = 0;
-        for (int warm = 0; warm < 2; ++warm)
-            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
-        const long before = gAllocations.load();
-        for (int r = 0; r < 5; ++r)
-            for (const auto& c : pop) sink += std::size_t(derive(g, c, out, scratch)) + out.primitives.size();
-        EXPECT_EQ(gAllocations.load() - before, 0) << name;
-        EXPECT_GT(sink, 0u);
+        EXPECT_EQ(allocationsDerivingWarm(g, pop, 5, out), 0) << name;
     }
 }
 
